@@ -1,0 +1,225 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.glfw.GLFW.*;
+import static org.lwjgl.opengl.GL11C.*;
+import static org.lwjgl.system.MemoryUtil.NULL;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.lwjgl.glfw.GLFWErrorCallback;
+import org.lwjgl.opengl.GL;
+import org.lwjgl.opengl.GLCapabilities;
+import org.lwjgl.system.MemoryStack;
+
+/**
+ * One OpenGL context, windowed or headless, and the one place that creates it: tests, {@code shot}, {@code bench},
+ * {@code figures} and the interactive window all come through here.
+ *
+ * <p>Headless is tried in this order (DESIGN.md, "Headless rendering"):
+ * <ol>
+ *   <li>{@code headless-egl}: GLFW's null platform with an EGL context, no display needed (Mesa llvmpipe works);</li>
+ *   <li>{@code headless-x11}: a hidden GLFW window on the X display in {@code DISPLAY} (Xvfb on NVIDIA machines,
+ *       where the null-platform EGL path has been seen to fail).</li>
+ * </ol>
+ * A headless context renders into framebuffer objects, never into its (invisible) default framebuffer.
+ *
+ * <p>We ask for OpenGL 4.5 core and accept 3.3 core, the floor every technique here is written for.
+ */
+public final class GlContext implements AutoCloseable {
+
+    /** How the context was made; {@code openworld info} prints it. */
+    public enum Mode {
+        WINDOW("window"), HEADLESS_EGL("headless-egl"), HEADLESS_X11("headless-x11");
+
+        private final String label;
+
+        Mode(String label) {
+            this.label = label;
+        }
+
+        @Override
+        public String toString() {
+            return label;
+        }
+    }
+
+    /** Versions we ask for, best first. */
+    private static final int[][] VERSIONS = {{4, 5}, {3, 3}};
+
+    private static final String INSTALL_HINT = """
+            OpenGL 3.3 core or newer is needed. On Debian or Ubuntu without a GPU, install Mesa's software renderer:
+                sudo apt-get install -y libegl1 libegl-mesa0 libgl1-mesa-dri
+            On a machine with a GPU, install its vendor driver. For a hidden window instead of EGL, run under
+            an X server, for example: xvfb-run -a ./openworld ...""";
+
+    private final long window;
+    private final Mode mode;
+    private final GLCapabilities capabilities;
+    private final GlObjects objects = new GlObjects();
+    private final GLFWErrorCallback errorCallback;
+
+    private GlContext(long window, Mode mode, GLFWErrorCallback errorCallback) {
+        this.window = window;
+        this.mode = mode;
+        this.errorCallback = errorCallback;
+        glfwMakeContextCurrent(window);
+        this.capabilities = GL.createCapabilities();
+    }
+
+    /** A headless context: EGL on GLFW's null platform first, then a hidden window on an X display. */
+    public static GlContext headless() {
+        List<String> tried = new ArrayList<>();
+        Attempt egl = tryCreate(Mode.HEADLESS_EGL, GLFW_PLATFORM_NULL, 64, 64, false, null);
+        if (egl.context != null) {
+            return egl.context;
+        }
+        tried.add("headless-egl (GLFW null platform + EGL): " + egl.failure);
+        if (System.getenv("DISPLAY") != null) {
+            Attempt x11 = tryCreate(Mode.HEADLESS_X11, GLFW_PLATFORM_X11, 64, 64, false, null);
+            if (x11.context != null) {
+                return x11.context;
+            }
+            tried.add("headless-x11 (hidden window on DISPLAY=" + System.getenv("DISPLAY") + "): " + x11.failure);
+        } else {
+            tried.add("headless-x11: skipped, DISPLAY is not set");
+        }
+        throw unavailable(tried);
+    }
+
+    /** A visible, resizable window with an OpenGL context. */
+    public static GlContext window(String title, int width, int height, boolean vsync) {
+        Attempt attempt = tryCreate(Mode.WINDOW, GLFW_ANY_PLATFORM, width, height, true, title);
+        if (attempt.context == null) {
+            throw unavailable(List.of("window: " + attempt.failure));
+        }
+        glfwSwapInterval(vsync ? 1 : 0);
+        return attempt.context;
+    }
+
+    private record Attempt(GlContext context, String failure) {
+    }
+
+    private static Attempt tryCreate(Mode mode, int platform, int width, int height, boolean visible, String title) {
+        List<String> errors = new ArrayList<>();
+        GLFWErrorCallback callback = GLFWErrorCallback.create((code, description) ->
+                errors.add(GLFWErrorCallback.getDescription(description)));
+        GLFWErrorCallback previous = glfwSetErrorCallback(callback);
+        if (previous != null) {
+            previous.free();
+        }
+        if (platform != GLFW_ANY_PLATFORM && !glfwPlatformSupported(platform)) {
+            return fail(callback, "this GLFW build does not support the platform");
+        }
+        glfwInitHint(GLFW_PLATFORM, platform);
+        if (!glfwInit()) {
+            return fail(callback, "glfwInit failed" + describe(errors));
+        }
+        for (int[] version : VERSIONS) {
+            glfwDefaultWindowHints();
+            glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
+            glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, version[0]);
+            glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, version[1]);
+            glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+            glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+            glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+            glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+            glfwWindowHint(GLFW_DEPTH_BITS, 24);
+            glfwWindowHint(GLFW_STENCIL_BITS, 8);
+            if (mode == Mode.HEADLESS_EGL) {
+                glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
+            }
+            long window = glfwCreateWindow(width, height, title == null ? "OpenWorld" : title, NULL, NULL);
+            if (window != NULL) {
+                GlContext context = new GlContext(window, mode, callback);
+                if (context.versionAtLeast(3, 3)) {
+                    return new Attempt(context, null);
+                }
+                String got = context.version();
+                context.close();
+                return fail(callback, "got OpenGL " + got + ", older than 3.3 core");
+            }
+        }
+        glfwTerminate();
+        return fail(callback, "no OpenGL 4.5 or 3.3 core context" + describe(errors));
+    }
+
+    private static Attempt fail(GLFWErrorCallback callback, String why) {
+        glfwSetErrorCallback(null);
+        callback.free();
+        return new Attempt(null, why);
+    }
+
+    private static String describe(List<String> errors) {
+        return errors.isEmpty() ? "" : " (" + String.join("; ", errors) + ")";
+    }
+
+    private static GlUnavailableException unavailable(List<String> tried) {
+        StringBuilder message = new StringBuilder("No usable OpenGL. Tried:\n");
+        tried.forEach(t -> message.append("  - ").append(t).append('\n'));
+        return new GlUnavailableException(message.append(INSTALL_HINT).toString());
+    }
+
+    public Mode mode() {
+        return mode;
+    }
+
+    /** The native GLFW window handle (invisible for headless contexts). */
+    public long window() {
+        return window;
+    }
+
+    public GLCapabilities capabilities() {
+        return capabilities;
+    }
+
+    public GlObjects objects() {
+        return objects;
+    }
+
+    public String renderer() {
+        return glGetString(GL_RENDERER);
+    }
+
+    public String vendor() {
+        return glGetString(GL_VENDOR);
+    }
+
+    public String version() {
+        return glGetString(GL_VERSION);
+    }
+
+    public boolean versionAtLeast(int major, int minor) {
+        int[] v = new int[2];
+        v[0] = glGetInteger(0x821B); // GL_MAJOR_VERSION
+        v[1] = glGetInteger(0x821C); // GL_MINOR_VERSION
+        return v[0] > major || (v[0] == major && v[1] >= minor);
+    }
+
+    /** The window's framebuffer size in pixels; 0×0 while minimised. */
+    public int[] framebufferSize() {
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            var w = stack.mallocInt(1);
+            var h = stack.mallocInt(1);
+            glfwGetFramebufferSize(window, w, h);
+            return new int[] {w.get(0), h.get(0)};
+        }
+    }
+
+    public boolean shouldClose() {
+        return glfwWindowShouldClose(window);
+    }
+
+    public void swapBuffers() {
+        glfwSwapBuffers(window);
+    }
+
+    /** Destroys the window and ends GLFW; GL objects must have been closed before. */
+    @Override
+    public void close() {
+        GL.setCapabilities(null);
+        glfwDestroyWindow(window);
+        glfwTerminate();
+        glfwSetErrorCallback(null);
+        errorCallback.free();
+    }
+}
