@@ -1,0 +1,310 @@
+package org.openworld.engine;
+
+import static org.lwjgl.opengl.GL11C.*;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.function.Consumer;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassCameras;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemOrder;
+import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.Fog;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.FrameUniforms;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GpuTimers;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.gl.ShaderSources;
+import org.openworld.engine.settings.Settings;
+
+/**
+ * Owns the world and the systems and runs the frame (DESIGN.md, "Core"):
+ * <ol>
+ *   <li>fixed-step {@code update}: every enabled system, in resolved order, advances by exactly one step;</li>
+ *   <li>render passes SHADOW → REFLECTION → MAIN → OVERLAY: for each pass that some system draws in, the frame
+ *       uniform block is written with that pass's camera and the systems draw in resolved order;</li>
+ *   <li>the picture is in the scene target, to be read back (headless) or shown (window).</li>
+ * </ol>
+ * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as
+ * {@link FrameRecord}s once the GPU has finished them.
+ */
+public final class Engine implements AutoCloseable {
+
+    private final GlContext gl;
+    private final World world = new World();
+    private final Settings settings;
+    private final ShaderSources shaders;
+    private final SystemOrder order;
+    private final Set<String> disabled = new HashSet<>();
+    private final DrawStats stats = new DrawStats();
+    private final Counters counters = new Counters();
+    private final PassCameras passCameras = new PassCameras();
+    private final List<EngineSystem> initialised = new ArrayList<>();
+    private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
+    private final Map<String, Double> systemNanos = new LinkedHashMap<>();
+    private Framebuffer scene;
+    private FrameUniforms frameUniforms;
+    private GpuTimers timers;
+    private double simTime;
+    private double unsimulated;
+    private long frame;
+
+    /**
+     * Resolves the system order and initialises every system (on this, the GL thread).
+     *
+     * @param gl       the current GL context
+     * @param shaders  where shader files come from
+     * @param settings every setting, already with the user's {@code --set} values
+     * @param systems  the systems, in any order: the engine orders them from their declarations
+     * @param width    scene target width, pixels
+     * @param height   scene target height, pixels
+     */
+    public Engine(GlContext gl, ShaderSources shaders, Settings settings, List<EngineSystem> systems,
+                  int width, int height) {
+        this.gl = gl;
+        this.shaders = shaders;
+        this.settings = settings;
+        this.order = SystemOrder.resolve(systems);
+        world.setResource(settings);
+        world.setResource(counters);
+        world.setResource(passCameras);
+        world.setResource(new TimeOfDay(10.0, 0.0));
+        world.setResource(new Camera());
+        try {
+            scene = Framebuffer.scene(gl, width, height);
+            frameUniforms = new FrameUniforms(gl);
+            timers = new GpuTimers(gl);
+            EngineContext context = new EngineContext(gl, world, shaders, settings);
+            for (EngineSystem system : order.systems()) {
+                system.init(context);
+                initialised.add(system);
+            }
+        } catch (RuntimeException e) {
+            close();
+            throw e;
+        }
+    }
+
+    public World world() {
+        return world;
+    }
+
+    public Settings settings() {
+        return settings;
+    }
+
+    public SystemOrder order() {
+        return order;
+    }
+
+    public GlContext gl() {
+        return gl;
+    }
+
+    public ShaderSources shaders() {
+        return shaders;
+    }
+
+    /** Simulation time, seconds: the number of updates times the step. */
+    public double simTime() {
+        return simTime;
+    }
+
+    /** Frames rendered so far. */
+    public long frame() {
+        return frame;
+    }
+
+    public int width() {
+        return scene.width();
+    }
+
+    public int height() {
+        return scene.height();
+    }
+
+    /** Switches a system's update and render off or on; its GPU resources stay (STYLE.md 6). */
+    public void setEnabled(String system, boolean enabled) {
+        if (order.systems().stream().noneMatch(s -> s.spec().name().equals(system))) {
+            throw new IllegalArgumentException("no system named '" + system + "'");
+        }
+        if (enabled) {
+            disabled.remove(system);
+        } else {
+            disabled.add(system);
+        }
+    }
+
+    public boolean isEnabled(String system) {
+        return !disabled.contains(system);
+    }
+
+    /** Advances the simulation by exactly one fixed step. */
+    public void update() {
+        double step = settings.get(EngineSettings.class).step();
+        for (EngineSystem system : order.systems()) {
+            if (isEnabled(system.spec().name())) {
+                long t0 = System.nanoTime();
+                system.update(world, step);
+                systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
+            }
+        }
+        world.setResource(world.resource(TimeOfDay.class).advance(step));
+        simTime += step;
+    }
+
+    /**
+     * Runs as many fixed steps as fit in {@code realSeconds} of wall-clock time plus what was left over, at most
+     * {@link EngineSettings#maxSteps()} (the window's loop; benchmarks call {@link #update()} once per frame).
+     */
+    public void advance(double realSeconds) {
+        EngineSettings s = settings.get(EngineSettings.class);
+        unsimulated += realSeconds;
+        int steps = 0;
+        while (unsimulated >= s.step() && steps < s.maxSteps()) {
+            update();
+            unsimulated -= s.step();
+            steps++;
+        }
+        if (steps == s.maxSteps()) {
+            unsimulated = 0;
+        }
+    }
+
+    /** Renders every pass into the scene target and records the frame's statistics. */
+    public void render() {
+        long frameStart = System.nanoTime();
+        stats.reset();
+        float aspect = (float) scene.width() / scene.height();
+        ViewCamera main = world.resource(Camera.class).view(aspect);
+        passCameras.set(Pass.MAIN, main);
+        passCameras.set(Pass.OVERLAY, main);
+        for (Pass pass : Pass.values()) {
+            List<EngineSystem> drawing = order.systems().stream()
+                    .filter(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name())).toList();
+            if (drawing.isEmpty()) {
+                continue;
+            }
+            ViewCamera camera = passCameras.get(pass);
+            // 1. the pass's camera and the world's light and fog into the frame block
+            frameUniforms.write(frameValues(camera));
+            // 2. the target: MAIN and OVERLAY draw into the scene; SHADOW and REFLECTION owners bind their own
+            if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
+                scene.bind();
+            }
+            if (pass == Pass.MAIN) {
+                glClearColor(0, 0, 0, 1);
+                glClearStencil(0);
+                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+            }
+            // 3. the systems draw, timed on the GPU as one span per pass
+            timers.begin(pass.label());
+            RenderContext context = new RenderContext(world, camera, stats, scene.width(), scene.height());
+            for (EngineSystem system : drawing) {
+                long t0 = System.nanoTime();
+                system.render(pass, context);
+                systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
+            }
+            timers.end();
+        }
+        timers.endFrame(frame);
+        awaitingGpu.add(cpuRecord((System.nanoTime() - frameStart) / 1e6));
+        systemNanos.clear();
+        counters.clear();
+        frame++;
+    }
+
+    private FrameUniforms.Values frameValues(ViewCamera camera) {
+        Sun sun = world.findResource(Sun.class).orElse(NOON);
+        Fog fog = world.findResource(Fog.class).orElse(NO_FOG);
+        return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
+                camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
+                fog.color(), fog.density(), fog.heightFalloff(), camera.clipPlane(), simTime,
+                world.resource(TimeOfDay.class).hours(), frame, scene.width(), scene.height());
+    }
+
+    /** Light for a world with no system that models the sky: a high white sun. */
+    private static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1), new Vector3f(0.3f));
+    private static final Fog NO_FOG = new Fog(new Vector3f(0.7f, 0.8f, 0.9f), 0, 0);
+
+    private FrameRecord cpuRecord(double cpuMs) {
+        Map<String, Double> systemMs = new LinkedHashMap<>();
+        for (EngineSystem s : order.systems()) {
+            Double nanos = systemNanos.get(s.spec().name());
+            if (nanos != null) {
+                systemMs.put(s.spec().name(), nanos / 1e6);
+            }
+        }
+        return new FrameRecord((int) frame, simTime, cpuMs, systemMs, Map.of(), stats.triangles(), stats.drawCalls(),
+                counters.snapshot());
+    }
+
+    /**
+     * Hands over the records of frames whose GPU timings have arrived, oldest first.
+     *
+     * @param wait true to wait for the GPU to finish every frame rendered so far
+     */
+    public void collectFrames(boolean wait, Consumer<FrameRecord> sink) {
+        timers.collect(wait, (frameIndex, gpuMs) -> {
+            FrameRecord cpu = awaitingGpu.pop();
+            sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
+                    cpu.triangles(), cpu.drawCalls(), cpu.counters()));
+        });
+    }
+
+    /** Reads the scene target back (waits for the GPU). */
+    public Image readImage() {
+        return scene.read();
+    }
+
+    /** Shows the scene target in the window, scaled to its framebuffer. */
+    public void present(int screenWidth, int screenHeight) {
+        scene.blitToScreen(screenWidth, screenHeight);
+    }
+
+    /** Re-creates the scene target at a new size (a resized window); 0×0 (minimised) is ignored. */
+    public void resize(int width, int height) {
+        if (width <= 0 || height <= 0 || (width == scene.width() && height == scene.height())) {
+            return;
+        }
+        scene.close();
+        scene = Framebuffer.scene(gl, width, height);
+    }
+
+    /** Closes every system in reverse order, then the engine's own GL objects. */
+    @Override
+    public void close() {
+        for (int i = initialised.size() - 1; i >= 0; i--) {
+            initialised.get(i).close();
+        }
+        initialised.clear();
+        if (timers != null) {
+            timers.close();
+        }
+        if (frameUniforms != null) {
+            frameUniforms.close();
+        }
+        if (scene != null) {
+            scene.close();
+        }
+    }
+}

@@ -1,0 +1,21 @@
+package org.openworld.engine;
+
+import org.openworld.engine.settings.Setting;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * Settings of the frame loop itself.
+ *
+ * @param step        the fixed simulation step: the world advances by exactly this much per update, whatever the
+ *                    frame rate, so a camera path replays identically
+ * @param maxSteps    updates allowed per rendered frame before the simulation lets real time slip (a slow frame
+ *                    must not start a spiral of ever more catch-up updates)
+ */
+public record EngineSettings(
+        @Setting(doc = "fixed simulation step", unit = "s", min = 0.001, max = 0.1) double step,
+        @Setting(doc = "most simulation steps per rendered frame", min = 1, max = 60) int maxSteps) {
+
+    public static final EngineSettings DEFAULTS = new EngineSettings(1.0 / 60.0, 8);
+
+    public static final SettingsGroup<EngineSettings> GROUP = SettingsGroup.of("engine", EngineSettings.class, DEFAULTS);
+}

@@ -1,0 +1,191 @@
+package org.openworld.engine.core;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.Set;
+import java.util.stream.Collectors;
+
+/**
+ * Resolves the frame order of systems from their declarations (STYLE.md 7), never from the order they were added.
+ *
+ * <p>Edges, each "runs before":
+ * <ul>
+ *   <li>{@code after("x")}: x before the declaring system;</li>
+ *   <li>data: a system that writes a type runs before every system that only reads it.</li>
+ * </ul>
+ * Two systems that write the same type must be ordered by {@code after} (directly or through other
+ * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
+ * systems free to go in any order, the alphabetically first goes first, so the order is stable and printable.
+ */
+public final class SystemOrder {
+
+    private final List<EngineSystem> ordered;
+    private final Map<String, List<String>> reasons;
+
+    private SystemOrder(List<EngineSystem> ordered, Map<String, List<String>> reasons) {
+        this.ordered = List.copyOf(ordered);
+        this.reasons = reasons;
+    }
+
+    /** Resolves the order or throws {@link SystemOrderException} saying what is wrong. */
+    public static SystemOrder resolve(List<? extends EngineSystem> systems) {
+        Map<String, EngineSystem> byName = new LinkedHashMap<>();
+        for (EngineSystem system : systems) {
+            if (byName.put(system.spec().name(), system) != null) {
+                throw new SystemOrderException("two systems are named '" + system.spec().name() + "'");
+            }
+        }
+        Graph graph = new Graph(byName.keySet());
+        for (EngineSystem system : systems) {
+            SystemSpec spec = system.spec();
+            for (String before : spec.after()) {
+                if (!byName.containsKey(before)) {
+                    throw new SystemOrderException("system '" + spec.name() + "' runs after '" + before
+                            + "', but no system of that name is added (added: " + String.join(", ", byName.keySet()) + ")");
+                }
+                graph.edge(before, spec.name(), spec.name() + " declares after(" + before + ")");
+            }
+        }
+        requireOrderedWriters(systems, graph);
+        for (EngineSystem writer : systems) {
+            for (Class<?> type : writer.spec().writes()) {
+                for (EngineSystem reader : systems) {
+                    SystemSpec r = reader.spec();
+                    if (reader != writer && r.reads().contains(type) && !r.writes().contains(type)) {
+                        graph.edge(writer.spec().name(), r.name(), r.name() + " reads " + type.getSimpleName()
+                                + ", which " + writer.spec().name() + " writes");
+                    }
+                }
+            }
+        }
+        List<String> names = graph.sort();
+        return new SystemOrder(names.stream().map(byName::get).toList(), graph.reasons());
+    }
+
+    private static void requireOrderedWriters(List<? extends EngineSystem> systems, Graph explicit) {
+        for (int i = 0; i < systems.size(); i++) {
+            for (int j = i + 1; j < systems.size(); j++) {
+                SystemSpec a = systems.get(i).spec();
+                SystemSpec b = systems.get(j).spec();
+                Set<Class<?>> both = new LinkedHashSet<>(a.writes());
+                both.retainAll(b.writes());
+                if (!both.isEmpty() && !explicit.reaches(a.name(), b.name()) && !explicit.reaches(b.name(), a.name())) {
+                    throw new SystemOrderException("systems '" + a.name() + "' and '" + b.name() + "' both write "
+                            + both.stream().map(Class::getSimpleName).collect(Collectors.joining(", "))
+                            + ": declare which runs first with after(...)");
+                }
+            }
+        }
+    }
+
+    /** The systems in frame order. */
+    public List<EngineSystem> systems() {
+        return ordered;
+    }
+
+    /** The order as text, one system a line with what it declares and why it stands where it does. */
+    public String describe() {
+        StringBuilder s = new StringBuilder();
+        int i = 1;
+        for (EngineSystem system : ordered) {
+            SystemSpec spec = system.spec();
+            s.append(String.format("%2d. %-12s", i++, spec.name()));
+            s.append(" draws ").append(spec.passes().isEmpty() ? "-"
+                    : spec.passes().stream().map(Pass::label).collect(Collectors.joining(",")));
+            s.append("; writes ").append(simpleNames(spec.writes()));
+            s.append("; reads ").append(simpleNames(spec.reads()));
+            s.append('\n');
+            for (String reason : reasons.getOrDefault(spec.name(), List.of())) {
+                s.append("      after: ").append(reason).append('\n');
+            }
+        }
+        return s.toString();
+    }
+
+    private static String simpleNames(Set<Class<?>> types) {
+        return types.isEmpty() ? "-" : types.stream().map(Class::getSimpleName).collect(Collectors.joining(","));
+    }
+
+    /** A directed graph over system names with a reason per edge. */
+    private static final class Graph {
+        private final Map<String, Map<String, String>> out = new LinkedHashMap<>();
+
+        Graph(Set<String> nodes) {
+            nodes.forEach(n -> out.put(n, new LinkedHashMap<>()));
+        }
+
+        void edge(String from, String to, String reason) {
+            out.get(from).putIfAbsent(to, reason);
+        }
+
+        boolean reaches(String from, String to) {
+            Set<String> seen = new HashSet<>();
+            List<String> stack = new ArrayList<>(List.of(from));
+            while (!stack.isEmpty()) {
+                String n = stack.remove(stack.size() - 1);
+                if (n.equals(to)) {
+                    return true;
+                }
+                if (seen.add(n)) {
+                    stack.addAll(out.get(n).keySet());
+                }
+            }
+            return false;
+        }
+
+        /** Kahn's algorithm, alphabetical among the ready nodes. */
+        List<String> sort() {
+            Map<String, Integer> incoming = new LinkedHashMap<>();
+            out.keySet().forEach(n -> incoming.put(n, 0));
+            out.values().forEach(targets -> targets.keySet().forEach(t -> incoming.merge(t, 1, Integer::sum)));
+            PriorityQueue<String> ready = new PriorityQueue<>(Comparator.naturalOrder());
+            incoming.forEach((n, k) -> { if (k == 0) ready.add(n); });
+            List<String> order = new ArrayList<>();
+            while (!ready.isEmpty()) {
+                String n = ready.poll();
+                order.add(n);
+                for (String t : out.get(n).keySet()) {
+                    if (incoming.merge(t, -1, Integer::sum) == 0) {
+                        ready.add(t);
+                    }
+                }
+            }
+            if (order.size() < out.size()) {
+                throw new SystemOrderException("the systems' declarations form a cycle: " + findCycle(order));
+            }
+            return order;
+        }
+
+        private String findCycle(List<String> sorted) {
+            Set<String> left = new LinkedHashSet<>(out.keySet());
+            sorted.forEach(left::remove);
+            // Walk forward inside the unsorted rest until a node repeats: that loop is a cycle.
+            List<String> walk = new ArrayList<>();
+            String n = left.iterator().next();
+            while (!walk.contains(n)) {
+                walk.add(n);
+                n = out.get(n).keySet().stream().filter(left::contains).findFirst().orElseThrow();
+            }
+            List<String> cycle = new ArrayList<>(walk.subList(walk.indexOf(n), walk.size()));
+            cycle.add(n);
+            StringBuilder s = new StringBuilder(String.join(" -> ", cycle)).append(" (");
+            for (int i = 0; i + 1 < cycle.size(); i++) {
+                s.append(i == 0 ? "" : "; ").append(out.get(cycle.get(i)).get(cycle.get(i + 1)));
+            }
+            return s.append(')').toString();
+        }
+
+        Map<String, List<String>> reasons() {
+            Map<String, List<String>> byTarget = new LinkedHashMap<>();
+            out.forEach((from, targets) -> targets.forEach((to, why) ->
+                    byTarget.computeIfAbsent(to, k -> new ArrayList<>()).add(from + " (" + why + ")")));
+            return byTarget;
+        }
+    }
+}

@@ -1,0 +1,78 @@
+package org.openworld.engine.core;
+
+import java.util.EnumSet;
+import java.util.LinkedHashSet;
+import java.util.Set;
+
+/**
+ * What a system declares about itself, from which the engine derives the frame order: the resource and component
+ * classes it reads and writes, the systems it must follow, and the passes it draws in.
+ *
+ * <p>Written as a small builder so a declaration reads like a sentence:
+ * <pre>{@code
+ * SystemSpec.named("camera").reads(InputState.class, HeightField.class).writes(Camera.class)
+ * }</pre>
+ */
+public final class SystemSpec {
+
+    private final String name;
+    private final Set<Class<?>> reads = new LinkedHashSet<>();
+    private final Set<Class<?>> writes = new LinkedHashSet<>();
+    private final Set<String> after = new LinkedHashSet<>();
+    private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
+
+    private SystemSpec(String name) {
+        if (!name.matches("[a-z][a-z0-9-]*")) {
+            throw new IllegalArgumentException("system name '" + name + "': use lower case letters, digits and '-'");
+        }
+        this.name = name;
+    }
+
+    public static SystemSpec named(String name) {
+        return new SystemSpec(name);
+    }
+
+    /** Resources or components this system reads; it runs after every system that writes them. */
+    public SystemSpec reads(Class<?>... types) {
+        reads.addAll(Set.of(types));
+        return this;
+    }
+
+    /** Resources or components this system writes; two writers of one type must be ordered with {@link #after}. */
+    public SystemSpec writes(Class<?>... types) {
+        writes.addAll(Set.of(types));
+        return this;
+    }
+
+    /** Systems, by name, that must run before this one (in update and in every pass). */
+    public SystemSpec after(String... systems) {
+        after.addAll(Set.of(systems));
+        return this;
+    }
+
+    /** Passes this system draws in. */
+    public SystemSpec draws(Pass... drawn) {
+        passes.addAll(Set.of(drawn));
+        return this;
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public Set<Class<?>> reads() {
+        return reads;
+    }
+
+    public Set<Class<?>> writes() {
+        return writes;
+    }
+
+    public Set<String> after() {
+        return after;
+    }
+
+    public Set<Pass> passes() {
+        return passes;
+    }
+}

@@ -1,0 +1,27 @@
+package org.openworld.engine.environment;
+
+import org.joml.Vector3f;
+import org.joml.Vector3fc;
+
+/**
+ * The sun as the world sees it: the unit direction towards it and the light it gives at the ground, linear RGB
+ * (1 = the white of noon on a clear day). The ambient term is the light from the whole sky on a surface facing up.
+ * Written by the system that models the sky; read by everything that is lit.
+ *
+ * @param direction unit vector from the ground towards the sun, world space
+ * @param color     direct sunlight at the ground, linear RGB
+ * @param ambient   sky light on an upward surface, linear RGB
+ */
+public record Sun(Vector3fc direction, Vector3fc color, Vector3fc ambient) {
+
+    public Sun {
+        direction = new Vector3f(direction).normalize();
+        color = new Vector3f(color);
+        ambient = new Vector3f(ambient);
+    }
+
+    /** Elevation above the horizon, degrees. */
+    public double elevationDegrees() {
+        return Math.toDegrees(Math.asin(direction.y()));
+    }
+}

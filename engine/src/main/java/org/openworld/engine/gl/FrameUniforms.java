@@ -1,0 +1,78 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL31C.GL_UNIFORM_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_DYNAMIC_DRAW;
+
+import java.nio.ByteBuffer;
+import org.joml.Matrix4f;
+import org.joml.Vector3fc;
+import org.joml.Vector4fc;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * The per-pass uniform block every shader includes from {@code shaders/common/frame.glsl}: one std140 buffer,
+ * bound once at {@link #BINDING}, rewritten before each pass. The Java field order here and the GLSL block must
+ * match; std140 makes that simple because every member is a vec4 or a mat4 (16-byte aligned, no padding rules to
+ * remember).
+ */
+public final class FrameUniforms implements AutoCloseable {
+
+    /** The block's name in GLSL. */
+    public static final String BLOCK_NAME = "FrameBlock";
+    /** The uniform buffer binding point of the block. */
+    public static final int BINDING = 0;
+
+    private static final int MAT4 = 64;
+    private static final int VEC4 = 16;
+    /** 4 matrices and 8 vectors, bytes. */
+    static final int SIZE = 4 * MAT4 + 8 * VEC4;
+
+    /** Everything the block holds, gathered by the engine for one pass. */
+    public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
+                         Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient,
+                         Vector3fc fogColor, float fogDensity, float fogHeightFalloff,
+                         Vector4fc clipPlane, double simTime, double timeOfDayHours, long frame,
+                         int width, int height) {
+    }
+
+    private final GpuBuffer buffer;
+    private final ByteBuffer data = MemoryUtil.memCalloc(SIZE);
+
+    public FrameUniforms(GlContext gl) {
+        buffer = new GpuBuffer(gl, GL_UNIFORM_BUFFER);
+        buffer.allocate(SIZE, GL_DYNAMIC_DRAW);
+        buffer.bindBase(BINDING);
+    }
+
+    /** Writes the block for one pass (std140: each mat4 is 64 bytes column-major, each vec4 16 bytes). */
+    public void write(Values v) {
+        Matrix4f viewProj = new Matrix4f(v.projection()).mul(v.view());
+        Matrix4f invViewProj = new Matrix4f(viewProj).invert();
+        v.view().get(0, data);
+        v.projection().get(MAT4, data);
+        viewProj.get(2 * MAT4, data);
+        invViewProj.get(3 * MAT4, data);
+        int o = 4 * MAT4;
+        o = vec4(o, v.cameraPos().x(), v.cameraPos().y(), v.cameraPos().z(), v.near());
+        o = vec4(o, v.sunDir().x(), v.sunDir().y(), v.sunDir().z(), v.far());
+        o = vec4(o, v.sunColor().x(), v.sunColor().y(), v.sunColor().z(), 0);
+        o = vec4(o, v.ambient().x(), v.ambient().y(), v.ambient().z(), 0);
+        o = vec4(o, v.fogColor().x(), v.fogColor().y(), v.fogColor().z(), v.fogDensity());
+        o = vec4(o, v.clipPlane().x(), v.clipPlane().y(), v.clipPlane().z(), v.clipPlane().w());
+        o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), v.fogHeightFalloff());
+        vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
+        buffer.update(data);
+        buffer.bindBase(BINDING);
+    }
+
+    private int vec4(int offset, float x, float y, float z, float w) {
+        data.putFloat(offset, x).putFloat(offset + 4, y).putFloat(offset + 8, z).putFloat(offset + 12, w);
+        return offset + VEC4;
+    }
+
+    @Override
+    public void close() {
+        buffer.close();
+        MemoryUtil.memFree(data);
+    }
+}

@@ -1,0 +1,121 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL30C.*;
+
+import java.nio.ByteBuffer;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil). The engine's
+ * scene target is RGBA8 + depth24/stencil8; the shadow map is depth only; the water's reflection is colour + depth.
+ */
+public final class Framebuffer implements AutoCloseable {
+
+    private final GlContext gl;
+    private final Texture2D color;
+    private final Texture2D depth;
+    private int id;
+
+    /**
+     * @param colorFormat the colour attachment's format, or null for a depth-only target
+     * @param depthFormat the depth attachment's format ({@code DEPTH24_STENCIL8} also gives a stencil), or null
+     */
+    public Framebuffer(GlContext gl, int width, int height, Texture2D.Format colorFormat, Texture2D.Format depthFormat,
+                       Texture2D.Sampling sampling) {
+        this.gl = gl;
+        this.id = glGenFramebuffers();
+        gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        color = colorFormat == null ? null : Texture2D.empty(gl, width, height, colorFormat, sampling);
+        depth = depthFormat == null ? null : Texture2D.empty(gl, width, height, depthFormat, sampling);
+        if (color != null) {
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+        } else {
+            glDrawBuffer(GL_NONE);
+            glReadBuffer(GL_NONE);
+        }
+        if (depth != null) {
+            int attachment = depthFormat == Texture2D.Format.DEPTH24_STENCIL8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+            glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, depth.id(), 0);
+        }
+        int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            close();
+            throw new IllegalStateException("framebuffer " + width + "x" + height + " incomplete: status 0x"
+                    + Integer.toHexString(status));
+        }
+    }
+
+    /** The usual scene target: RGBA8 colour and depth24 + stencil8, nearest sampling. */
+    public static Framebuffer scene(GlContext gl, int width, int height) {
+        return new Framebuffer(gl, width, height, Texture2D.Format.RGBA8, Texture2D.Format.DEPTH24_STENCIL8,
+                Texture2D.Sampling.NEAREST_CLAMP);
+    }
+
+    /** Binds for drawing and sets the viewport to the whole target. */
+    public void bind() {
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        glViewport(0, 0, width(), height());
+    }
+
+    public int id() {
+        return id;
+    }
+
+    public int width() {
+        return color != null ? color.width() : depth.width();
+    }
+
+    public int height() {
+        return color != null ? color.height() : depth.height();
+    }
+
+    public Texture2D color() {
+        return color;
+    }
+
+    public Texture2D depth() {
+        return depth;
+    }
+
+    /** Reads the colour attachment back into an image, top row first. Waits for the GPU. */
+    public Image read() {
+        int w = width();
+        int h = height();
+        ByteBuffer pixels = MemoryUtil.memAlloc(w * h * 4);
+        try {
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, id);
+            glReadBuffer(GL_COLOR_ATTACHMENT0);
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+            return Image.fromBottomUp(w, h, pixels);
+        } finally {
+            MemoryUtil.memFree(pixels);
+        }
+    }
+
+    /** Copies the colour into the window's default framebuffer, scaled to fill it. */
+    public void blitToScreen(int screenWidth, int screenHeight) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, id);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, width(), height(), 0, 0, screenWidth, screenHeight, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+
+    @Override
+    public void close() {
+        if (color != null) {
+            color.close();
+        }
+        if (depth != null) {
+            depth.close();
+        }
+        if (id != 0) {
+            glDeleteFramebuffers(id);
+            gl.objects().deleted(GlObjects.Kind.FRAMEBUFFER);
+            id = 0;
+        }
+    }
+}

@@ -1,0 +1,85 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL15C.*;
+import static org.lwjgl.opengl.GL30C.glBindBufferBase;
+
+import java.nio.ByteBuffer;
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+
+/** One GL buffer object: vertices, indices, uniforms or transform-feedback storage. */
+public final class GpuBuffer implements AutoCloseable {
+
+    private final GlContext gl;
+    private final int target;
+    private int id;
+    private long sizeBytes;
+
+    /**
+     * @param target e.g. {@code GL_ARRAY_BUFFER}, {@code GL_ELEMENT_ARRAY_BUFFER}, {@code GL_UNIFORM_BUFFER}
+     */
+    public GpuBuffer(GlContext gl, int target) {
+        this.gl = gl;
+        this.target = target;
+        this.id = glGenBuffers();
+        gl.objects().created(GlObjects.Kind.BUFFER);
+    }
+
+    public int id() {
+        return id;
+    }
+
+    public long sizeBytes() {
+        return sizeBytes;
+    }
+
+    public void bind() {
+        glBindBuffer(target, id);
+    }
+
+    /** Binds to an indexed binding point (uniform blocks, transform feedback). */
+    public void bindBase(int index) {
+        glBindBufferBase(target, index, id);
+    }
+
+    /** Allocates and fills; {@code usage} e.g. {@code GL_STATIC_DRAW}. */
+    public void upload(FloatBuffer data, int usage) {
+        bind();
+        glBufferData(target, data, usage);
+        sizeBytes = (long) data.remaining() * Float.BYTES;
+    }
+
+    public void upload(IntBuffer data, int usage) {
+        bind();
+        glBufferData(target, data, usage);
+        sizeBytes = (long) data.remaining() * Integer.BYTES;
+    }
+
+    public void upload(ByteBuffer data, int usage) {
+        bind();
+        glBufferData(target, data, usage);
+        sizeBytes = data.remaining();
+    }
+
+    /** Allocates without data. */
+    public void allocate(long bytes, int usage) {
+        bind();
+        glBufferData(target, bytes, usage);
+        sizeBytes = bytes;
+    }
+
+    /** Overwrites from the start; the buffer must be large enough. */
+    public void update(ByteBuffer data) {
+        bind();
+        glBufferSubData(target, 0, data);
+    }
+
+    @Override
+    public void close() {
+        if (id != 0) {
+            glDeleteBuffers(id);
+            gl.objects().deleted(GlObjects.Kind.BUFFER);
+            id = 0;
+        }
+    }
+}

@@ -1,0 +1,91 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL30C.*;
+import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
+
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * Indexed triangles in one vertex array: interleaved float attributes in one buffer, 32-bit indices in another.
+ * Every draw goes through here so the frame's triangle and draw-call counts are exact.
+ */
+public final class Mesh implements AutoCloseable {
+
+    /** One vertex attribute: its shader location and its number of floats. */
+    public record Attribute(int location, int components) {
+    }
+
+    private final GlContext gl;
+    private final GpuBuffer vertices;
+    private final GpuBuffer indices;
+    private final int indexCount;
+    private int vao;
+
+    /**
+     * @param interleaved vertex data, attributes in {@code layout} order for each vertex
+     * @param triangles   three indices per triangle
+     */
+    public Mesh(GlContext gl, float[] interleaved, int[] triangles, Attribute... layout) {
+        if (triangles.length % 3 != 0) {
+            throw new IllegalArgumentException("index count " + triangles.length + " is not a multiple of 3");
+        }
+        this.gl = gl;
+        this.indexCount = triangles.length;
+        this.vao = glGenVertexArrays();
+        gl.objects().created(GlObjects.Kind.VERTEX_ARRAY);
+        glBindVertexArray(vao);
+        vertices = new GpuBuffer(gl, GL_ARRAY_BUFFER);
+        indices = new GpuBuffer(gl, GL_ELEMENT_ARRAY_BUFFER);
+        FloatBuffer vertexData = MemoryUtil.memAllocFloat(interleaved.length).put(interleaved).flip();
+        IntBuffer indexData = MemoryUtil.memAllocInt(triangles.length).put(triangles).flip();
+        try {
+            vertices.upload(vertexData, GL_STATIC_DRAW);
+            indices.upload(indexData, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(vertexData);
+            MemoryUtil.memFree(indexData);
+        }
+        int stride = 0;
+        for (Attribute a : layout) {
+            stride += a.components() * Float.BYTES;
+        }
+        long offset = 0;
+        for (Attribute a : layout) {
+            glEnableVertexAttribArray(a.location());
+            glVertexAttribPointer(a.location(), a.components(), GL_FLOAT, false, stride, offset);
+            offset += (long) a.components() * Float.BYTES;
+        }
+        glBindVertexArray(0);
+    }
+
+    public int triangleCount() {
+        return indexCount / 3;
+    }
+
+    /** Draws every triangle once. */
+    public void draw(DrawStats stats) {
+        glBindVertexArray(vao);
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0);
+        stats.add(1, triangleCount());
+    }
+
+    /** Draws {@code instances} copies in one call; the shader tells them apart by {@code gl_InstanceID}. */
+    public void drawInstanced(int instances, DrawStats stats) {
+        glBindVertexArray(vao);
+        glDrawElementsInstanced(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0, instances);
+        stats.add(1, (long) triangleCount() * instances);
+    }
+
+    @Override
+    public void close() {
+        vertices.close();
+        indices.close();
+        if (vao != 0) {
+            glDeleteVertexArrays(vao);
+            gl.objects().deleted(GlObjects.Kind.VERTEX_ARRAY);
+            vao = 0;
+        }
+    }
+}

@@ -1,0 +1,191 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL20C.*;
+import static org.lwjgl.opengl.GL31C.GL_INVALID_INDEX;
+import static org.lwjgl.opengl.GL31C.glGetUniformBlockIndex;
+import static org.lwjgl.opengl.GL31C.glUniformBlockBinding;
+import static org.lwjgl.opengl.GL32C.GL_GEOMETRY_SHADER;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A linked GLSL program built from stage files in {@code shaders/} (the stage comes from the extension:
+ * {@code .vert}, {@code .frag}, {@code .geom}). Includes are expanded by {@link ShaderPreprocessor}; compile and
+ * link errors name the file and line.
+ *
+ * <p>Uniforms are typed handles resolved at link time: {@code Uniform.Mat4 model = program.mat4("uModel")} fails
+ * at once, naming the program, when the uniform does not exist (or the compiler removed it as unused). If the
+ * program declares the {@code FrameBlock} uniform block of {@code common/frame.glsl}, it is bound to
+ * {@link FrameUniforms#BINDING}.
+ *
+ * <p>{@link #reload()} rebuilds from the current sources (dev mode, F5): on failure the old program stays in use and
+ * the error is thrown for the caller to print.
+ */
+public final class ShaderProgram implements AutoCloseable {
+
+    private final GlContext gl;
+    private final ShaderSources sources;
+    private final List<String> stages;
+    private final List<Uniform> uniforms = new ArrayList<>();
+    private int id;
+
+    private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages) {
+        this.gl = gl;
+        this.sources = sources;
+        this.stages = List.copyOf(stages);
+        this.id = link();
+    }
+
+    /** Compiles and links the given stage files, e.g. {@code build(gl, sources, "sky/sky.vert", "sky/sky.frag")}. */
+    public static ShaderProgram build(GlContext gl, ShaderSources sources, String... stageFiles) {
+        return new ShaderProgram(gl, sources, List.of(stageFiles));
+    }
+
+    public void use() {
+        glUseProgram(id);
+    }
+
+    public int id() {
+        return id;
+    }
+
+    public Uniform.Mat4 mat4(String name) {
+        return resolve(new Uniform.Mat4(name));
+    }
+
+    public Uniform.Vec2 vec2(String name) {
+        return resolve(new Uniform.Vec2(name));
+    }
+
+    public Uniform.Vec3 vec3(String name) {
+        return resolve(new Uniform.Vec3(name));
+    }
+
+    public Uniform.Vec4 vec4(String name) {
+        return resolve(new Uniform.Vec4(name));
+    }
+
+    public Uniform.Float float1(String name) {
+        return resolve(new Uniform.Float(name));
+    }
+
+    public Uniform.Int int1(String name) {
+        return resolve(new Uniform.Int(name));
+    }
+
+    /** A sampler uniform set once to its texture unit. */
+    public Uniform.Int sampler(String name, int unit) {
+        Uniform.Int sampler = int1(name);
+        use();
+        sampler.set(unit);
+        return sampler;
+    }
+
+    private <U extends Uniform> U resolve(U uniform) {
+        uniform.location = location(id, uniform.name);
+        uniforms.add(uniform);
+        return uniform;
+    }
+
+    private int location(int program, String name) {
+        int location = glGetUniformLocation(program, name);
+        if (location < 0) {
+            throw new ShaderException(this + ": no active uniform '" + name
+                    + "' (misspelt, or removed by the compiler because it does not affect the output)");
+        }
+        return location;
+    }
+
+    /**
+     * Rebuilds the program from the current sources and re-resolves every uniform handle. If anything fails, the
+     * old program stays and the error is thrown.
+     */
+    public void reload() {
+        int fresh = link();
+        try {
+            int[] locations = new int[uniforms.size()];
+            for (int i = 0; i < locations.length; i++) {
+                locations[i] = location(fresh, uniforms.get(i).name);
+            }
+            for (int i = 0; i < locations.length; i++) {
+                uniforms.get(i).location = locations[i];
+            }
+        } catch (ShaderException e) {
+            deleteProgram(fresh);
+            throw e;
+        }
+        deleteProgram(id);
+        id = fresh;
+    }
+
+    private int link() {
+        List<Integer> shaders = new ArrayList<>();
+        try {
+            for (String stage : stages) {
+                shaders.add(compile(stage));
+            }
+            int program = glCreateProgram();
+            gl.objects().created(GlObjects.Kind.PROGRAM);
+            shaders.forEach(s -> glAttachShader(program, s));
+            glLinkProgram(program);
+            if (glGetProgrami(program, GL_LINK_STATUS) != GL_TRUE) {
+                String log = glGetProgramInfoLog(program);
+                deleteProgram(program);
+                throw new ShaderException(this + ": link failed:\n" + log.strip());
+            }
+            int frameBlock = glGetUniformBlockIndex(program, FrameUniforms.BLOCK_NAME);
+            if (frameBlock != GL_INVALID_INDEX) {
+                glUniformBlockBinding(program, frameBlock, FrameUniforms.BINDING);
+            }
+            return program;
+        } finally {
+            shaders.forEach(s -> {
+                glDeleteShader(s);
+                gl.objects().deleted(GlObjects.Kind.SHADER);
+            });
+        }
+    }
+
+    private int compile(String stage) {
+        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(sources).expand(stage);
+        int shader = glCreateShader(stageType(stage));
+        gl.objects().created(GlObjects.Kind.SHADER);
+        glShaderSource(shader, expanded.source());
+        glCompileShader(shader);
+        if (glGetShaderi(shader, GL_COMPILE_STATUS) != GL_TRUE) {
+            String log = expanded.mapLog(sources, glGetShaderInfoLog(shader));
+            glDeleteShader(shader);
+            gl.objects().deleted(GlObjects.Kind.SHADER);
+            throw new ShaderException(sources.displayName(stage) + ": compile failed:\n" + log);
+        }
+        return shader;
+    }
+
+    private static int stageType(String stage) {
+        return switch (stage.substring(stage.lastIndexOf('.') + 1)) {
+            case "vert" -> GL_VERTEX_SHADER;
+            case "frag" -> GL_FRAGMENT_SHADER;
+            case "geom" -> GL_GEOMETRY_SHADER;
+            default -> throw new ShaderException("shaders/" + stage + ": unknown stage; use .vert, .frag or .geom");
+        };
+    }
+
+    private void deleteProgram(int program) {
+        glDeleteProgram(program);
+        gl.objects().deleted(GlObjects.Kind.PROGRAM);
+    }
+
+    @Override
+    public void close() {
+        if (id != 0) {
+            deleteProgram(id);
+            id = 0;
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "program " + String.join("+", stages);
+    }
+}

@@ -1,0 +1,97 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL20C.*;
+
+import org.joml.Matrix4fc;
+import org.joml.Vector3fc;
+import org.joml.Vector4fc;
+import org.lwjgl.system.MemoryStack;
+
+/**
+ * A typed uniform handle, resolved once when its program links (STYLE.md 9) and again on a reload. Setting a value
+ * needs the program bound ({@link ShaderProgram#use()}). Get one from {@link ShaderProgram#mat4} and its siblings.
+ */
+public abstract sealed class Uniform permits Uniform.Mat4, Uniform.Vec2, Uniform.Vec3, Uniform.Vec4, Uniform.Float, Uniform.Int {
+
+    final String name;
+    int location;
+
+    Uniform(String name) {
+        this.name = name;
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public static final class Mat4 extends Uniform {
+        Mat4(String name) {
+            super(name);
+        }
+
+        public void set(Matrix4fc value) {
+            try (MemoryStack stack = MemoryStack.stackPush()) {
+                glUniformMatrix4fv(location, false, value.get(stack.mallocFloat(16)));
+            }
+        }
+    }
+
+    public static final class Vec2 extends Uniform {
+        Vec2(String name) {
+            super(name);
+        }
+
+        public void set(float x, float y) {
+            glUniform2f(location, x, y);
+        }
+    }
+
+    public static final class Vec3 extends Uniform {
+        Vec3(String name) {
+            super(name);
+        }
+
+        public void set(float x, float y, float z) {
+            glUniform3f(location, x, y, z);
+        }
+
+        public void set(Vector3fc v) {
+            glUniform3f(location, v.x(), v.y(), v.z());
+        }
+    }
+
+    public static final class Vec4 extends Uniform {
+        Vec4(String name) {
+            super(name);
+        }
+
+        public void set(float x, float y, float z, float w) {
+            glUniform4f(location, x, y, z, w);
+        }
+
+        public void set(Vector4fc v) {
+            glUniform4f(location, v.x(), v.y(), v.z(), v.w());
+        }
+    }
+
+    public static final class Float extends Uniform {
+        Float(String name) {
+            super(name);
+        }
+
+        public void set(float value) {
+            glUniform1f(location, value);
+        }
+    }
+
+    /** Integers, booleans (0/1) and samplers (the texture unit). */
+    public static final class Int extends Uniform {
+        Int(String name) {
+            super(name);
+        }
+
+        public void set(int value) {
+            glUniform1i(location, value);
+        }
+    }
+}

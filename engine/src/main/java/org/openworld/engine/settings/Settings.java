@@ -1,0 +1,200 @@
+package org.openworld.engine.settings;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * The current value of every setting, as a world resource: one immutable record per group, replaced whole when a
+ * key changes. The command line's {@code --set key=value}, {@code openworld settings} and the settings panel all
+ * work through this one class, so a key cannot exist in one place and not the others.
+ */
+public final class Settings {
+
+    private final Map<Class<?>, SettingsGroup<?>> groups = new LinkedHashMap<>();
+    private final Map<Class<?>, Record> current = new LinkedHashMap<>();
+
+    public Settings(List<SettingsGroup<?>> groups) {
+        for (SettingsGroup<?> group : groups) {
+            if (this.groups.put(group.type(), group) != null) {
+                throw new IllegalArgumentException("settings group " + group.prefix() + " registered twice");
+            }
+            current.put(group.type(), group.defaults());
+        }
+    }
+
+    /** The current record of a group. */
+    public <R extends Record> R get(Class<R> type) {
+        Record r = current.get(type);
+        if (r == null) {
+            throw new IllegalArgumentException("no settings group " + type.getSimpleName());
+        }
+        return type.cast(r);
+    }
+
+    public List<SettingsGroup<?>> groups() {
+        return List.copyOf(groups.values());
+    }
+
+    /** Every key, in group order then component order. */
+    public List<String> keys() {
+        List<String> keys = new ArrayList<>();
+        groups.values().forEach(g -> g.keys().forEach(k -> keys.add(k.key())));
+        return keys;
+    }
+
+    /** Applies {@code key=value}; the error names the key and what is valid. */
+    public void apply(String assignment) {
+        int eq = assignment.indexOf('=');
+        if (eq <= 0) {
+            throw new SettingsException("'" + assignment + "': expected key=value, e.g. camera.fov=70");
+        }
+        set(assignment.substring(0, eq).trim(), assignment.substring(eq + 1).trim());
+    }
+
+    /** Sets one key from text. */
+    public void set(String key, String text) {
+        for (SettingsGroup<?> group : groups.values()) {
+            for (SettingsGroup.Key k : group.keys()) {
+                if (k.key().equals(key)) {
+                    setIn(group, k, parse(k, text));
+                    return;
+                }
+            }
+        }
+        throw new SettingsException("unknown setting '" + key + "'" + suggestion(key)
+                + "; 'openworld settings' lists every key");
+    }
+
+    private <R extends Record> void setIn(SettingsGroup<R> group, SettingsGroup.Key key, Object value) {
+        current.put(group.type(), group.with(group.type().cast(current.get(group.type())), key, value));
+    }
+
+    /** The current value of a key as text, as {@code --set} would take it. */
+    public String text(String key) {
+        for (SettingsGroup<?> group : groups.values()) {
+            for (SettingsGroup.Key k : group.keys()) {
+                if (k.key().equals(key)) {
+                    return format(valueOf(group, k));
+                }
+            }
+        }
+        throw new SettingsException("unknown setting '" + key + "'");
+    }
+
+    /** Every key with its current value as text. */
+    public Map<String, String> asText() {
+        Map<String, String> all = new LinkedHashMap<>();
+        keys().forEach(k -> all.put(k, text(k)));
+        return all;
+    }
+
+    private <R extends Record> Object valueOf(SettingsGroup<R> group, SettingsGroup.Key key) {
+        return group.value(group.type().cast(current.get(group.type())), key);
+    }
+
+    /** A table of every key: default, unit, valid values and meaning (for {@code openworld settings}). */
+    public String describe() {
+        StringBuilder s = new StringBuilder();
+        for (SettingsGroup<?> group : groups.values()) {
+            for (SettingsGroup.Key k : group.keys()) {
+                Object def = defaultOf(group, k);
+                s.append(String.format(Locale.ROOT, "%-28s %-10s %-6s %-22s %s%n", k.key(), format(def),
+                        k.doc().unit(), validValues(k), k.doc().doc()));
+            }
+        }
+        return s.toString();
+    }
+
+    private static <R extends Record> Object defaultOf(SettingsGroup<R> group, SettingsGroup.Key key) {
+        return group.value(group.defaults(), key);
+    }
+
+    /** The valid values of a key in words, e.g. {@code 20 .. 120} or {@code on|off}. */
+    public static String validValues(SettingsGroup.Key key) {
+        Class<?> t = key.type();
+        if (t == boolean.class) {
+            return "on|off";
+        }
+        if (t.isEnum()) {
+            return java.util.Arrays.stream(t.getEnumConstants()).map(e -> enumText((Enum<?>) e))
+                    .collect(Collectors.joining("|"));
+        }
+        double min = key.doc().min();
+        double max = key.doc().max();
+        String lo = Double.isInfinite(min) ? "" : format(t == int.class ? (Object) (int) min : min);
+        String hi = Double.isInfinite(max) ? "" : format(t == int.class ? (Object) (int) max : max);
+        return lo.isEmpty() && hi.isEmpty() ? "any " + t.getSimpleName() : lo + " .. " + hi;
+    }
+
+    private static Object parse(SettingsGroup.Key key, String text) {
+        Class<?> t = key.type();
+        String valid = validValues(key);
+        try {
+            if (t == boolean.class) {
+                return switch (text.toLowerCase(Locale.ROOT)) {
+                    case "on", "true", "yes", "1" -> true;
+                    case "off", "false", "no", "0" -> false;
+                    default -> throw new NumberFormatException();
+                };
+            }
+            if (t.isEnum()) {
+                for (Object e : t.getEnumConstants()) {
+                    if (enumText((Enum<?>) e).equals(text.toLowerCase(Locale.ROOT))) {
+                        return e;
+                    }
+                }
+                throw new NumberFormatException();
+            }
+            double v;
+            Object value;
+            if (t == int.class) {
+                int i = Integer.parseInt(text);
+                v = i;
+                value = i;
+            } else if (t == double.class || t == float.class) {
+                v = Double.parseDouble(text);
+                if (!Double.isFinite(v)) {
+                    throw new NumberFormatException();
+                }
+                value = t == float.class ? (Object) (float) v : (Object) v;
+            } else {
+                throw new IllegalStateException("settings of type " + t + " are not supported");
+            }
+            if (v < key.doc().min() || v > key.doc().max()) {
+                throw new SettingsException(key.key() + "=" + text + " is out of range: valid is " + valid
+                        + (key.doc().unit().isEmpty() ? "" : " " + key.doc().unit()));
+            }
+            return value;
+        } catch (NumberFormatException e) {
+            throw new SettingsException(key.key() + "=" + text + " is not valid: expected "
+                    + (t.isEnum() || t == boolean.class ? "one of " : "a " + t.getSimpleName() + " in ") + valid);
+        }
+    }
+
+    private static String enumText(Enum<?> e) {
+        return e.name().toLowerCase(Locale.ROOT).replace('_', '-');
+    }
+
+    private static String format(Object value) {
+        if (value instanceof Boolean b) {
+            return b ? "on" : "off";
+        }
+        if (value instanceof Enum<?> e) {
+            return enumText(e);
+        }
+        if (value instanceof Double || value instanceof Float) {
+            double d = ((Number) value).doubleValue();
+            return d == Math.rint(d) && Math.abs(d) < 1e15 ? String.valueOf((long) d) : String.valueOf(value);
+        }
+        return String.valueOf(value);
+    }
+
+    private String suggestion(String key) {
+        return keys().stream().filter(k -> k.endsWith("." + key) || k.startsWith(key))
+                .findFirst().map(k -> " (did you mean '" + k + "'?)").orElse("");
+    }
+}

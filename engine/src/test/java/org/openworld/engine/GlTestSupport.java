@@ -1,0 +1,28 @@
+package org.openworld.engine;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.ShaderSources;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+
+/** Builds engines for headless GL tests: small images, classpath shaders, default settings. */
+public final class GlTestSupport {
+
+    private GlTestSupport() {
+    }
+
+    /** Settings with the engine's group and every group the systems declare. */
+    public static Settings settingsFor(List<EngineSystem> systems) {
+        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
+        systems.forEach(s -> groups.addAll(s.settings()));
+        return new Settings(groups);
+    }
+
+    public static Engine engine(GlContext gl, int width, int height, EngineSystem... systems) {
+        List<EngineSystem> list = List.of(systems);
+        return new Engine(gl, ShaderSources.classpath(), settingsFor(list), list, width, height);
+    }
+}

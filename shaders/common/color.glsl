@@ -1,0 +1,17 @@
+// Linear light to the display: a filmic tone curve (ACES fit by Narkowicz 2015), then the sRGB transfer.
+
+vec3 toneMapAces(vec3 x) {
+    const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
+    return clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
+}
+
+vec3 linearToSrgb(vec3 c) {
+    vec3 lo = c * 12.92;
+    vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    return mix(lo, hi, step(vec3(0.0031308), c));
+}
+
+// Tone-mapped and sRGB-encoded: the last step of every shader that writes the scene colour.
+vec3 displayColor(vec3 linear) {
+    return linearToSrgb(toneMapAces(linear));
+}

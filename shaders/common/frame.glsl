@@ -1,0 +1,21 @@
+// The per-pass frame block (engine: org.openworld.engine.gl.FrameUniforms). Every member is a vec4 or mat4, so
+// the std140 layout is simply their order. Conventions: shaders/common/conventions.glsl.
+#include "common/conventions.glsl"
+
+layout(std140) uniform FrameBlock {
+    mat4 view;            // world -> view
+    mat4 projection;      // view -> clip
+    mat4 viewProjection;  // world -> clip
+    mat4 invViewProjection;
+    vec4 cameraPosNear;   // xyz: eye, world space (m); w: near plane (m)
+    vec4 sunDirFar;       // xyz: unit vector towards the sun, world space; w: far plane (m)
+    vec4 sunColor;        // rgb: direct sunlight at the ground, linear
+    vec4 ambientColor;    // rgb: sky light on an upward surface, linear
+    vec4 fogColorDensity; // rgb: fog colour, linear; w: extinction at sea level (1/m)
+    vec4 clipPlane;       // world-space plane; dot(vec4(wsPos, 1), clipPlane) < 0 is cut
+    vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: fog height falloff (1/m)
+    vec4 viewport;        // xy: size (px); zw: 1 / size
+} frame;
+
+vec3 cameraPos() { return frame.cameraPosNear.xyz; }
+vec3 sunDir() { return frame.sunDirFar.xyz; }
