@@ -33,6 +33,7 @@ import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuTimers;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
 
@@ -52,7 +53,7 @@ public final class Engine implements AutoCloseable {
     private final GlContext gl;
     private final World world = new World();
     private final Settings settings;
-    private final ShaderSources shaders;
+    private final ShaderLibrary shaders;
     private final SystemOrder order;
     private final Set<String> disabled = new HashSet<>();
     private final DrawStats stats = new DrawStats();
@@ -81,7 +82,7 @@ public final class Engine implements AutoCloseable {
     public Engine(GlContext gl, ShaderSources shaders, Settings settings, List<EngineSystem> systems,
                   int width, int height) {
         this.gl = gl;
-        this.shaders = shaders;
+        this.shaders = new ShaderLibrary(gl, shaders);
         this.settings = settings;
         this.order = SystemOrder.resolve(systems);
         world.setResource(settings);
@@ -93,7 +94,7 @@ public final class Engine implements AutoCloseable {
             scene = Framebuffer.scene(gl, width, height);
             frameUniforms = new FrameUniforms(gl);
             timers = new GpuTimers(gl);
-            EngineContext context = new EngineContext(gl, world, shaders, settings);
+            EngineContext context = new EngineContext(gl, world, this.shaders, settings);
             for (EngineSystem system : order.systems()) {
                 system.init(context);
                 initialised.add(system);
@@ -120,7 +121,7 @@ public final class Engine implements AutoCloseable {
         return gl;
     }
 
-    public ShaderSources shaders() {
+    public ShaderLibrary shaders() {
         return shaders;
     }
 

@@ -8,6 +8,7 @@ import static org.lwjgl.opengl.GL32C.GL_GEOMETRY_SHADER;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Consumer;
 
 /**
  * A linked GLSL program built from stage files in {@code shaders/} (the stage comes from the extension:
@@ -28,18 +29,20 @@ public final class ShaderProgram implements AutoCloseable {
     private final ShaderSources sources;
     private final List<String> stages;
     private final List<Uniform> uniforms = new ArrayList<>();
+    private final Consumer<ShaderProgram> onClose;
     private int id;
 
-    private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages) {
+    private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages, Consumer<ShaderProgram> onClose) {
         this.gl = gl;
         this.sources = sources;
         this.stages = List.copyOf(stages);
+        this.onClose = onClose;
         this.id = link();
     }
 
-    /** Compiles and links the given stage files, e.g. {@code build(gl, sources, "sky/sky.vert", "sky/sky.frag")}. */
-    public static ShaderProgram build(GlContext gl, ShaderSources sources, String... stageFiles) {
-        return new ShaderProgram(gl, sources, List.of(stageFiles));
+    /** Compiles and links stage files; systems get programs from {@link ShaderLibrary#program}. */
+    static ShaderProgram build(GlContext gl, ShaderSources sources, String[] stageFiles, Consumer<ShaderProgram> onClose) {
+        return new ShaderProgram(gl, sources, List.of(stageFiles), onClose);
     }
 
     public void use() {
@@ -181,6 +184,7 @@ public final class ShaderProgram implements AutoCloseable {
         if (id != 0) {
             deleteProgram(id);
             id = 0;
+            onClose.accept(this);
         }
     }
 

@@ -45,8 +45,8 @@ public final class TestSceneSystem implements EngineSystem {
     @Override
     public void init(EngineContext context) {
         context.world().setResource(HeightField.class, HeightField.FLAT);
-        background = ShaderProgram.build(context.gl(), context.shaders(), "testscene/background.vert", "testscene/background.frag");
-        lit = ShaderProgram.build(context.gl(), context.shaders(), "testscene/lit.vert", "testscene/lit.frag");
+        background = context.shaders().program("testscene/background.vert", "testscene/background.frag");
+        lit = context.shaders().program("testscene/lit.vert", "testscene/lit.frag");
         fullScreen = new Mesh(context.gl(), new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2},
                 new Mesh.Attribute(0, 2));
         float h = GROUND_HALF_SIZE;
