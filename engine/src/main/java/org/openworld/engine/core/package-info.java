@@ -1,0 +1,19 @@
+/**
+ * The entity/system core: a {@link org.openworld.engine.core.World} of entities, components and resources, and
+ * {@link org.openworld.engine.core.EngineSystem}s that only talk through it.
+ *
+ * <p><b>Frame order.</b> Each system declares in a {@link org.openworld.engine.core.SystemSpec} what it reads and
+ * writes, which systems it follows and which {@link org.openworld.engine.core.Pass}es it draws in.
+ * {@link org.openworld.engine.core.SystemOrder} turns that into a graph (writer → reader, after → system) and sorts
+ * it topologically with Kahn's algorithm, alphabetical among equals: O(S² · T) for S systems and T declared types,
+ * microseconds for the dozen systems of the demo, done once at start-up. A cycle, or two writers of one type that
+ * nobody ordered, is an error that names the systems. {@code openworld info --frame} prints the resolved order
+ * with the reason for every edge.
+ *
+ * <p><b>Passes.</b> SHADOW → REFLECTION → MAIN → OVERLAY, each with its own {@link org.openworld.engine.core.ViewCamera}
+ * kept in {@link org.openworld.engine.core.PassCameras}.
+ *
+ * <p><b>Limits.</b> The world is a hash map per component class: fine for thousands of entities, not for millions
+ * (particles live on the GPU, not in the world).
+ */
+package org.openworld.engine.core;
