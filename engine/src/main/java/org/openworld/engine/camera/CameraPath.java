@@ -13,8 +13,9 @@ import org.openworld.engine.core.HeightField;
  *
  * <p>Position follows a centripetal Catmull–Rom curve through the keyframe positions ({@link CatmullRom}). The
  * segment is chosen by time, and the local parameter u = (t - t_i) / (t_{i+1} - t_i) is mapped onto the segment's
- * centripetal knot interval, so the camera reaches every key exactly at its time. At either end a phantom point
- * P_-1 = 2 P_0 - P_1 (and P_n = 2 P_{n-1} - P_{n-2}) continues the path straight on.
+ * centripetal knot interval, so the camera reaches every key exactly at its time. The position is continuous; its
+ * speed may step at a key where the neighbouring segments map different knot intervals onto their durations. At
+ * either end a phantom point P_-1 = 2 P_0 - P_1 (and P_n = 2 P_{n-1} - P_{n-2}) continues the path straight on.
  *
  * <p>Yaw is first unwrapped so that each key differs from the previous one by at most 180°: 350° then 10° becomes
  * 350° then 370°, and the camera turns 20° through north instead of 340° back through south. Yaw, pitch and field

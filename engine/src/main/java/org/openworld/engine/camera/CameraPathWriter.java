@@ -26,6 +26,7 @@ public final class CameraPathWriter {
             #   pitch  degrees, positive looking up, within [-89, 89]
             #   fov    vertical field of view, degrees, within (1, 179); optional, default 60
             # The camera follows a centripetal Catmull-Rom curve through the keys and takes the shorter turn in yaw.
+
             """;
 
     private CameraPathWriter() {

@@ -34,8 +34,8 @@ import org.joml.Vector3dc;
  * a sudden swerve between two keys.
  *
  * <p>Two coincident points would give a zero knot interval and a division by zero, so each interval is at least
- * {@link #MIN_KNOT_INTERVAL}; the weights it then multiplies only ever scale a difference smaller than its square,
- * so the result stays finite and within that distance of the points.
+ * {@link #MIN_KNOT_INTERVAL}. A raised interval only ever lies between points closer than its square, so the large
+ * weight it produces multiplies a tiny difference and the result stays finite, next to the coincident points.
  */
 public final class CatmullRom {
 
