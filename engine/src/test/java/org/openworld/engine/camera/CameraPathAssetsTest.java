@@ -1,0 +1,68 @@
+package org.openworld.engine.camera;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.openworld.engine.core.HeightField;
+
+/** The paths shipped in assets/paths/ parse from the classpath and do what their headers promise. */
+class CameraPathAssetsTest {
+
+    /** Half the world's width, metres. */
+    private static final double WORLD_HALF_WIDTH = 2048;
+
+    @Test
+    void valleyIsALowFlightNearTheCentre() throws CameraPathFormatException {
+        CameraPath valley = CameraPathParser.parseResource("assets/paths/valley.path");
+        assertEquals(HeightReference.SEA, valley.heights());
+        assertEquals(30, valley.duration(), 1e-9);
+        for (double t = 0; t <= valley.duration(); t += 0.1) {
+            CameraPose pose = valley.sample(t, HeightField.FLAT);
+            assertTrue(pose.y() >= 60 && pose.y() <= 200, "y " + pose.y() + " at t=" + t);
+            assertTrue(Math.abs(pose.x()) <= 1500 && Math.abs(pose.z()) <= 1500, pose + " at t=" + t);
+        }
+    }
+
+    @Test
+    void walkStaysAtEyeHeightAtWalkingPace() throws CameraPathFormatException {
+        CameraPath walk = CameraPathParser.parseResource("assets/paths/walk.path");
+        assertEquals(HeightReference.GROUND, walk.heights());
+        HeightField hills = (x, z) -> 300 + 20 * Math.sin(x / 10) * Math.cos(z / 15);
+        double length = 0;
+        CameraPose previous = walk.sample(0, hills);
+        for (double t = 0.01; t <= walk.duration(); t += 0.01) {
+            CameraPose pose = walk.sample(t, hills);
+            assertEquals(hills.heightAt(pose.x(), pose.z()) + 1.7, pose.y(), 1e-9);
+            length += Math.hypot(pose.x() - previous.x(), pose.z() - previous.z());
+            previous = pose;
+        }
+        assertEquals(45, length, 1);
+        assertEquals(1.5, length / walk.duration(), 0.05);
+    }
+
+    @Test
+    void orbitCirclesTheOriginLookingAtIt() throws CameraPathFormatException {
+        CameraPath orbit = CameraPathParser.parseResource("assets/paths/orbit.path");
+        assertEquals(40, orbit.duration(), 1e-9);
+        double turned = 0;
+        double previousBearing = 0;
+        for (int step = 0; step <= 4000; step++) {
+            double t = step * 0.01;
+            CameraPose pose = orbit.sample(t, HeightField.FLAT);
+            double radius = Math.hypot(pose.x(), pose.z());
+            // the first and last segments bend inside the circle (about 17 m): a path's ends continue straight
+            boolean endSegment = t < 2.5 || t > 37.5;
+            assertEquals(1500, radius, endSegment ? 20 : 1.5, "radius at t=" + t);
+            assertTrue(radius < WORLD_HALF_WIDTH);
+            assertEquals(1500, pose.y(), 1e-9);
+            assertEquals(-25, pose.pitch(), 1e-9);
+            double towardCentre = Math.toDegrees(Math.atan2(-pose.x(), pose.z()));
+            assertEquals(0, CameraPathTest.angleBetween(towardCentre, pose.yaw()), 2, "yaw at t=" + t);
+            double bearing = Math.toDegrees(Math.atan2(pose.x(), -pose.z()));
+            turned += CameraPathTest.signedTurn(previousBearing, bearing);
+            previousBearing = bearing;
+        }
+        assertEquals(360, turned, 1e-6);
+    }
+}
