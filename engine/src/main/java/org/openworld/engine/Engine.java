@@ -28,6 +28,7 @@ import org.openworld.engine.environment.Fog;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.FrameThrottle;
 import org.openworld.engine.gl.FrameUniforms;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
@@ -65,7 +66,9 @@ public final class Engine implements AutoCloseable {
     private Framebuffer scene;
     private FrameUniforms frameUniforms;
     private GpuTimers timers;
+    private FrameThrottle throttle;
     private double simTime;
+    private long lastFrameEnd;
     private double unsimulated;
     private long frame;
 
@@ -94,6 +97,7 @@ public final class Engine implements AutoCloseable {
             scene = Framebuffer.scene(gl, width, height);
             frameUniforms = new FrameUniforms(gl);
             timers = new GpuTimers(gl);
+            throttle = new FrameThrottle(gl);
             EngineContext context = new EngineContext(gl, world, this.shaders, settings);
             for (EngineSystem system : order.systems()) {
                 system.init(context);
@@ -228,7 +232,13 @@ public final class Engine implements AutoCloseable {
             timers.end();
         }
         timers.endFrame(frame);
-        awaitingGpu.add(cpuRecord((System.nanoTime() - frameStart) / 1e6));
+        double cpuMs = (System.nanoTime() - frameStart) / 1e6;
+        // 4. at most two frames in flight, as with a swap chain, so timings measure frames and not a queue
+        throttle.endFrame();
+        long frameEnd = System.nanoTime();
+        double wallMs = (frameEnd - (lastFrameEnd != 0 ? lastFrameEnd : frameStart)) / 1e6;
+        lastFrameEnd = frameEnd;
+        awaitingGpu.add(cpuRecord(wallMs, cpuMs));
         systemNanos.clear();
         counters.clear();
         frame++;
@@ -247,7 +257,7 @@ public final class Engine implements AutoCloseable {
     private static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1), new Vector3f(0.3f));
     private static final Fog NO_FOG = new Fog(new Vector3f(0.7f, 0.8f, 0.9f), 0, 0);
 
-    private FrameRecord cpuRecord(double cpuMs) {
+    private FrameRecord cpuRecord(double wallMs, double cpuMs) {
         Map<String, Double> systemMs = new LinkedHashMap<>();
         for (EngineSystem s : order.systems()) {
             Double nanos = systemNanos.get(s.spec().name());
@@ -255,7 +265,7 @@ public final class Engine implements AutoCloseable {
                 systemMs.put(s.spec().name(), nanos / 1e6);
             }
         }
-        return new FrameRecord((int) frame, simTime, cpuMs, systemMs, Map.of(), stats.triangles(), stats.drawCalls(),
+        return new FrameRecord((int) frame, simTime, wallMs, cpuMs, systemMs, Map.of(), stats.triangles(), stats.drawCalls(),
                 counters.snapshot());
     }
 
@@ -267,7 +277,7 @@ public final class Engine implements AutoCloseable {
     public void collectFrames(boolean wait, Consumer<FrameRecord> sink) {
         timers.collect(wait, (frameIndex, gpuMs) -> {
             FrameRecord cpu = awaitingGpu.pop();
-            sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
+            sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.wallMs(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
                     cpu.triangles(), cpu.drawCalls(), cpu.counters()));
         });
     }
@@ -298,6 +308,9 @@ public final class Engine implements AutoCloseable {
             initialised.get(i).close();
         }
         initialised.clear();
+        if (throttle != null) {
+            throttle.close();
+        }
         if (timers != null) {
             timers.close();
         }

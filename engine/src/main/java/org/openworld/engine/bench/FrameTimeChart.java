@@ -81,7 +81,7 @@ public final class FrameTimeChart {
             area.setLineColor(colour);
         }
 
-        // 3. frame time (max of CPU and summed GPU) and CPU time as lines over the areas
+        // 3. frame time (wall-clock interval) and CPU time as lines over the areas
         line(chart, "frame time", x, frames.stream().mapToDouble(FrameRecord::frameMs).toArray(), Color.BLACK,
                 new BasicStroke(LINE_WIDTH_PX));
         line(chart, "CPU", x, frames.stream().mapToDouble(FrameRecord::cpuMs).toArray(), Color.DARK_GRAY,

@@ -4,6 +4,7 @@
  * {@code frametime.png} (per-pass GPU time stacked under the frame time), and two summaries compare side by side
  * with their ratio ({@link org.openworld.engine.bench.BenchComparison}). See {@code docs/benchmarks.md}.
  *
- * <p>A frame's time is the larger of its CPU time and the sum of its passes' GPU time, since either can bound it.
+ * <p>A frame's time is its wall-clock interval with at most two frames in flight; CPU time per system and GPU time
+ * per pass explain it.
  */
 package org.openworld.engine.bench;

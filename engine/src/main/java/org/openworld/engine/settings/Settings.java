@@ -187,8 +187,9 @@ public final class Settings {
             return enumText(e);
         }
         if (value instanceof Double || value instanceof Float) {
-            double d = ((Number) value).doubleValue();
-            return d == Math.rint(d) && Math.abs(d) < 1e15 ? String.valueOf((long) d) : String.valueOf(value);
+            // Six significant digits, no exponent: 0.0166667, 0.00012, 46.
+            return new java.math.BigDecimal(((Number) value).doubleValue())
+                    .round(new java.math.MathContext(6)).stripTrailingZeros().toPlainString();
         }
         return String.valueOf(value);
     }

@@ -47,7 +47,7 @@ class BenchFramesCsvTest {
     @Test
     void namesWithCommasAreQuoted() throws IOException {
         Path csv = dir.resolve("frames.csv");
-        FramesCsv.write(List.of(new FrameRecord(0, 0, 1, BenchFrames.ordered(), BenchFrames.ordered(), 0, 0,
+        FramesCsv.write(List.of(new FrameRecord(0, 0, 1, 1, BenchFrames.ordered(), BenchFrames.ordered(), 0, 0,
                 BenchFrames.ordered("a,b", 1.0))), csv);
         assertEquals("frame,sim_time_s,cpu_ms,frame_ms,triangles,draw_calls,\"a,b\"", Files.readAllLines(csv).get(0));
     }

@@ -1,0 +1,108 @@
+package org.openworld.demo;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.bench.BenchComparison;
+import org.openworld.engine.bench.BenchReport;
+import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.bench.RunInfo;
+import org.openworld.engine.bench.Summary;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPath;
+import org.openworld.engine.camera.CameraPathParser;
+import org.openworld.engine.core.HeightField;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code openworld bench}: replays a camera path at the fixed step, one step per frame, and writes
+ * {@code frames.csv}, {@code summary.json} and {@code frametime.png} (docs/benchmarks.md). With {@code --compare}
+ * it prints two earlier runs side by side instead.
+ */
+@Command(name = "bench", description = "Replay a camera path and record per-frame timings, or compare two runs.")
+final class BenchCommand implements Callable<Integer> {
+
+    @Mixin
+    RenderOptions render;
+
+    @Option(names = "--path", paramLabel = "FILE", description = "The camera path to replay.")
+    Path path;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: ${DEFAULT-VALUE}).",
+            defaultValue = "bench-out")
+    Path out;
+
+    @Option(names = "--frames", paramLabel = "N",
+            description = "Frames to record (default: the whole path at the fixed step).")
+    Integer frames;
+
+    @Option(names = "--warmup", paramLabel = "N", description = "Frames rendered first and not recorded (default: ${DEFAULT-VALUE}).",
+            defaultValue = "30")
+    int warmup;
+
+    @Option(names = "--compare", arity = "2", paramLabel = "SUMMARY.json",
+            description = "Compare two summary.json files: each metric side by side with the ratio B/A.")
+    List<Path> compare;
+
+    /** The fixed simulation step of this run, seconds. */
+    private double step;
+
+    @Override
+    public Integer call() throws Exception {
+        if (compare != null) {
+            System.out.print(BenchComparison.read(compare.get(0), compare.get(1)).table());
+            return 0;
+        }
+        if (path == null) {
+            throw new UserError("bench needs --path FILE (e.g. assets/paths/valley.path), or --compare A B");
+        }
+        if (warmup < 0 || (frames != null && frames < 1)) {
+            throw new UserError("--frames must be at least 1 and --warmup at least 0");
+        }
+        CameraPath cameraPath = CameraPathParser.parse(path);
+        try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld bench")) {
+            var engine = launch.engine;
+            step = engine.settings().get(EngineSettings.class).step();
+            int recorded = frames != null ? frames : (int) Math.floor(cameraPath.duration() / step) + 1;
+            Camera camera = engine.world().resource(Camera.class);
+            HeightField ground = engine.world().findResource(HeightField.class).orElse(HeightField.FLAT);
+            List<FrameRecord> records = new ArrayList<>();
+            int total = warmup + recorded;
+            int reportEvery = Math.max(1, total / 10);
+            System.err.printf("bench: %s, %d warm-up + %d frames at %dx%d on %s%n", path, warmup, recorded,
+                    engine.width(), engine.height(), launch.gl.renderer());
+            for (int i = 0; i < total; i++) {
+                // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
+                double pathTime = Math.max(0, i - warmup) * step;
+                engine.update();
+                camera.setPose(cameraPath.sample(pathTime, ground));
+                engine.render();
+                engine.collectFrames(false, r -> keep(r, records));
+                if ((i + 1) % reportEvery == 0) {
+                    System.err.printf("bench: %d/%d frames%n", i + 1, total);
+                }
+            }
+            engine.collectFrames(true, r -> keep(r, records));
+            RunInfo info = new RunInfo(launch.gl.renderer(), launch.gl.version(), launch.gl.mode().toString(),
+                    engine.width(), engine.height(), render.seed, engine.settings().asText(), path.toString(), warmup);
+            Summary summary = BenchReport.write(info, records, out);
+            System.out.println(summary.describe());
+            System.out.println("wrote " + out.resolve(BenchReport.FRAMES_CSV) + ", " + out.resolve(BenchReport.SUMMARY_JSON)
+                    + ", " + out.resolve(BenchReport.FRAMETIME_PNG));
+        }
+        return 0;
+    }
+
+    /** Keeps recorded frames, renumbered from 0 with the path time, and drops warm-up frames. */
+    private void keep(FrameRecord r, List<FrameRecord> records) {
+        int index = r.frame() - warmup;
+        if (index >= 0) {
+            records.add(new FrameRecord(index, index * step, r.wallMs(), r.cpuMs(), r.systemCpuMs(), r.passGpuMs(),
+                    r.triangles(), r.drawCalls(), r.counters()));
+        }
+    }
+}

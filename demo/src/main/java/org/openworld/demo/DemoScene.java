@@ -1,0 +1,39 @@
+package org.openworld.demo;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.environment.DaylightSystem;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.testscene.TestSceneSystem;
+
+/**
+ * The demo's world: which systems it runs. Adding a system to the demo is one line in {@link #systems()}; the
+ * engine orders them from their declarations, and their settings appear in {@code --set} and
+ * {@code openworld settings} by themselves.
+ */
+final class DemoScene {
+
+    /** Where the camera starts when no pose is given: above the ground, looking north over the scene. */
+    static final CameraPose DEFAULT_POSE = new CameraPose(0, 60, 450, 0, -6, CameraPose.DEFAULT_FOV);
+
+    private DemoScene() {
+    }
+
+    /** A fresh set of the demo's systems (nothing is allocated until the engine initialises them). */
+    static List<EngineSystem> systems() {
+        return List.of(
+                new DaylightSystem(),
+                new TestSceneSystem());
+    }
+
+    /** Settings with every group of these systems at its defaults. */
+    static Settings settings(List<EngineSystem> systems) {
+        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
+        systems.forEach(s -> groups.addAll(s.settings()));
+        return new Settings(groups);
+    }
+}

@@ -1,0 +1,69 @@
+package org.openworld.demo;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.openworld.engine.Engine;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.ShaderSources;
+import org.openworld.engine.settings.Settings;
+
+/**
+ * One place that turns the common options into a running engine: settings with the user's {@code --set} values,
+ * the GL context (window or headless), the shader sources (packaged, or {@code ./shaders} in dev mode), the engine
+ * with the demo's systems, the time of day and the starting pose.
+ */
+final class Launch implements AutoCloseable {
+
+    final GlContext gl;
+    final Engine engine;
+
+    private Launch(GlContext gl, Engine engine) {
+        this.gl = gl;
+        this.engine = engine;
+    }
+
+    /** Settings of the demo's systems with every {@code --set} applied (checked before any window opens). */
+    static Settings settings(RenderOptions options) {
+        Settings settings = DemoScene.settings(DemoScene.systems());
+        options.set.forEach(settings::apply);
+        return settings;
+    }
+
+    static Launch start(RenderOptions options, boolean window, String title) {
+        Settings settings = settings(options);
+        double hours = TimeOfDay.parseHours(options.time);
+        ShaderSources shaders = options.dev ? devShaders() : ShaderSources.classpath();
+        List<EngineSystem> systems = DemoScene.systems();
+        GlContext gl = window
+                ? GlContext.window(title, options.size.width(), options.size.height(), true)
+                : GlContext.headless();
+        try {
+            Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
+            engine.world().setResource(new TimeOfDay(hours, 0));
+            engine.world().resource(Camera.class).setPose(DemoScene.DEFAULT_POSE);
+            return new Launch(gl, engine);
+        } catch (RuntimeException e) {
+            gl.close();
+            throw e;
+        }
+    }
+
+    private static ShaderSources devShaders() {
+        Path dir = Path.of("shaders");
+        if (!Files.isDirectory(dir.resolve("common"))) {
+            throw new UserError("--dev reads shaders from ./shaders, but " + dir.toAbsolutePath()
+                    + " is not the repository's shaders folder: run from the repository root");
+        }
+        return ShaderSources.directory(dir);
+    }
+
+    @Override
+    public void close() {
+        engine.close();
+        gl.close();
+    }
+}

@@ -1,0 +1,42 @@
+package org.openworld.demo;
+
+import java.util.ArrayList;
+import java.util.List;
+import picocli.CommandLine.Option;
+
+/** The options every rendering command takes (DESIGN.md, "Command line"). */
+final class RenderOptions {
+
+    @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class,
+            description = "Render size in pixels (default: ${DEFAULT-VALUE}).", defaultValue = "1280x720")
+    Size size;
+
+    @Option(names = "--seed", paramLabel = "N", description = "World seed (default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    long seed;
+
+    @Option(names = "--time", paramLabel = "HH:MM", description = "Time of day, local solar time (default: ${DEFAULT-VALUE}).",
+            defaultValue = "10:00")
+    String time;
+
+    @Option(names = "--set", paramLabel = "KEY=VALUE",
+            description = "Change a setting; repeatable. 'openworld settings' lists every key.")
+    List<String> set = new ArrayList<>();
+
+    @Option(names = "--window", description = "Render in a visible window.")
+    boolean window;
+
+    @Option(names = "--headless", description = "Render without a window (EGL, or a hidden X11 window).")
+    boolean headless;
+
+    /** Whether to open a window: what the user said, else the command's own default. */
+    boolean windowed(boolean commandDefault) {
+        if (window && headless) {
+            throw new picocli.CommandLine.ParameterException(new picocli.CommandLine(this),
+                    "--window and --headless exclude each other");
+        }
+        return window || (!headless && commandDefault);
+    }
+
+    @Option(names = "--dev", description = "Read shaders from ./shaders on disk; F5 reloads them in the window.")
+    boolean dev;
+}
