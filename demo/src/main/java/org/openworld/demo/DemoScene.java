@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.environment.DaylightSystem;
 import org.openworld.engine.settings.Settings;
@@ -26,6 +27,7 @@ final class DemoScene {
     /** A fresh set of the demo's systems (nothing is allocated until the engine initialises them). */
     static List<EngineSystem> systems() {
         return List.of(
+                new CameraSystem(),
                 new DaylightSystem(),
                 new TestSceneSystem());
     }
