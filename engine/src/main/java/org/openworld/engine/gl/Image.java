@@ -51,7 +51,7 @@ public final class Image {
                 throw new IOException(file + ": not a readable image: " + STBImage.stbi_failure_reason());
             }
             byte[] rgba = new byte[w.get(0) * h.get(0) * 4];
-            decoded.get(rgba);
+            decoded.get(0, rgba); // absolute: stbi_image_free needs the buffer's position at 0
             STBImage.stbi_image_free(decoded);
             return new Image(w.get(0), h.get(0), rgba);
         } finally {

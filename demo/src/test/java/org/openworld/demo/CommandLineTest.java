@@ -1,0 +1,151 @@
+package org.openworld.demo;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.bench.SummaryJson;
+import org.openworld.engine.gl.Image;
+
+/** The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. */
+class CommandLineTest {
+
+    @TempDir
+    Path dir;
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+    private PrintStream savedOut;
+    private PrintStream savedErr;
+
+    @BeforeEach
+    void capture() {
+        savedOut = System.out;
+        savedErr = System.err;
+        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    @AfterEach
+    void restore() {
+        System.setOut(savedOut);
+        System.setErr(savedErr);
+    }
+
+    private String stdout() {
+        return out.toString(StandardCharsets.UTF_8);
+    }
+
+    private String stderr() {
+        return err.toString(StandardCharsets.UTF_8);
+    }
+
+    @Test
+    void shotWritesAnImageOfTheAskedSize() throws Exception {
+        Path png = dir.resolve("shot.png");
+        assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90"), stderr());
+        Image image = Image.read(png);
+        assertEquals(160, image.width());
+        assertEquals(90, image.height());
+        // The default view shows blue sky above and green-grey ground below.
+        assertTrue(blueness(image, 0, 20) > 15, "sky at the top should be blue");
+        assertTrue(blueness(image, 70, 90) < 5, "ground at the bottom should not be blue");
+        assertTrue(stdout().contains("llvmpipe") || stdout().contains("wrote"), stdout());
+    }
+
+    @Test
+    void cameraOptionMovesTheView() throws Exception {
+        Path up = dir.resolve("up.png");
+        Path down = dir.resolve("down.png");
+        assertEquals(0, Main.execute("shot", "--out", up.toString(), "--size", "96x54", "--camera", "0,50,400,0,60"));
+        assertEquals(0, Main.execute("shot", "--out", down.toString(), "--size", "96x54", "--camera", "0,50,400,0,-60"));
+        // Looking up sees only sky; looking down sees only ground.
+        assertTrue(blueness(Image.read(up), 0, 54) > 15, "looking up should see blue sky");
+        assertTrue(blueness(Image.read(down), 0, 54) < 5, "looking down should see the ground");
+    }
+
+    /** Mean of blue minus red over the full-width rows y0 to y1: high for sky, low for ground. */
+    private static double blueness(Image image, int y0, int y1) {
+        double sum = 0;
+        for (int y = y0; y < y1; y++) {
+            for (int x = 0; x < image.width(); x++) {
+                sum += image.channel(x, y, 2) - image.channel(x, y, 0);
+            }
+        }
+        return sum / ((y1 - y0) * image.width());
+    }
+
+    @Test
+    void invalidSetValueNamesTheKeyAndRange() {
+        int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--set", "engine.step=5");
+        assertEquals(Main.EXIT_USER_ERROR, code);
+        assertTrue(stderr().contains("engine.step") && stderr().contains("0.001 .. 0.1"), stderr());
+        assertFalse(stderr().contains("Exception"), "no stack trace for a user's mistake: " + stderr());
+        assertFalse(Files.exists(dir.resolve("x.png")));
+    }
+
+    @Test
+    void unknownSetKeyIsAnError() {
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("settings", "--set", "camera.fovv=70"));
+        assertTrue(stderr().contains("unknown setting 'camera.fovv'"), stderr());
+    }
+
+    @Test
+    void brokenCameraPathNamesFileLineAndColumn() throws Exception {
+        Path path = dir.resolve("broken.path");
+        Files.writeString(path, "# a path\n0 0 100 0 0 0\n1 0 100 abc 0 0\n");
+        int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--path", path.toString());
+        assertEquals(Main.EXIT_USER_ERROR, code);
+        assertTrue(stderr().contains(path + ":3:9:"), stderr());
+        assertFalse(stderr().contains("Exception"), stderr());
+    }
+
+    @Test
+    void settingsListsEveryKeyWithItsDefault() {
+        assertEquals(0, Main.execute("settings"));
+        for (String key : DemoScene.settings(DemoScene.systems()).keys()) {
+            assertTrue(stdout().contains(key), "missing " + key);
+        }
+        assertTrue(stdout().contains("camera.fov") && stdout().contains("deg"));
+    }
+
+    @Test
+    void infoPrintsRendererAndFrameOrder() {
+        assertEquals(0, Main.execute("info"));
+        assertTrue(stdout().contains("context:   headless-"), stdout());
+        assertTrue(stdout().indexOf("daylight") < stdout().indexOf("test-scene"), stdout());
+    }
+
+    @Test
+    void benchWritesTheThreeFilesAndCompares() throws Exception {
+        Path a = dir.resolve("a");
+        assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", a.toString(),
+                "--size", "96x54", "--frames", "12", "--warmup", "2"), stderr());
+        assertTrue(Files.exists(a.resolve("frames.csv")));
+        assertTrue(Files.exists(a.resolve("frametime.png")));
+        var summary = SummaryJson.read(a.resolve("summary.json"));
+        assertEquals(12, summary.frames());
+        assertEquals("96x54", summary.size());
+        assertTrue(summary.frameMs().median() > 0);
+        assertTrue(summary.trianglesMedian() > 0);
+        assertTrue(summary.passGpuMsMedian().containsKey("main"));
+        assertEquals(13, Files.readAllLines(a.resolve("frames.csv")).size(), "header plus one line per frame");
+
+        assertEquals(0, Main.execute("bench", "--compare", a.resolve("summary.json").toString(),
+                a.resolve("summary.json").toString()));
+        assertTrue(stdout().contains("frame ms median"), stdout());
+    }
+
+    @Test
+    void benchWithoutPathSaysWhatItNeeds() {
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("bench", "--out", dir.toString()));
+        assertTrue(stderr().contains("--path"), stderr());
+    }
+}
