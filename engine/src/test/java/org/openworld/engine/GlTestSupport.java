@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
@@ -24,5 +25,16 @@ public final class GlTestSupport {
     public static Engine engine(GlContext gl, int width, int height, EngineSystem... systems) {
         List<EngineSystem> list = List.of(systems);
         return new Engine(gl, ShaderSources.classpath(), settingsFor(list), list, width, height);
+    }
+
+    /** One triangle that covers the whole viewport, corners in clip space at attribute 0 (vec2). */
+    public static Mesh fullScreenTriangle(GlContext gl) {
+        return new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
+    }
+
+    /** A quad of two triangles over the lower-left quarter of the viewport, attribute 0 (vec2). */
+    public static Mesh quarterQuad(GlContext gl) {
+        return new Mesh(gl, new float[] {-1, -1, 0, -1, 0, 0, -1, 0}, new int[] {0, 1, 2, 0, 2, 3},
+                new Mesh.Attribute(0, 2));
     }
 }

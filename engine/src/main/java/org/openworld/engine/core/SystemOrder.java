@@ -1,6 +1,7 @@
 package org.openworld.engine.core;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Comparator;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -165,15 +166,19 @@ public final class SystemOrder {
         private String findCycle(List<String> sorted) {
             Set<String> left = new LinkedHashSet<>(out.keySet());
             sorted.forEach(left::remove);
-            // Walk forward inside the unsorted rest until a node repeats: that loop is a cycle.
+            // Every unsorted node still has an edge coming in from an unsorted node (else Kahn's algorithm would
+            // have taken it), so walking backwards along such edges must repeat a node: that loop is a cycle.
+            // Walking forwards could end at a node that merely follows a cycle.
             List<String> walk = new ArrayList<>();
             String n = left.iterator().next();
             while (!walk.contains(n)) {
                 walk.add(n);
-                n = out.get(n).keySet().stream().filter(left::contains).findFirst().orElseThrow();
+                String reached = n;
+                n = left.stream().filter(p -> out.get(p).containsKey(reached)).findFirst().orElseThrow();
             }
             List<String> cycle = new ArrayList<>(walk.subList(walk.indexOf(n), walk.size()));
-            cycle.add(n);
+            Collections.reverse(cycle);
+            cycle.add(cycle.get(0));
             StringBuilder s = new StringBuilder(String.join(" -> ", cycle)).append(" (");
             for (int i = 0; i + 1 < cycle.size(); i++) {
                 s.append(i == 0 ? "" : "; ").append(out.get(cycle.get(i)).get(cycle.get(i + 1)));

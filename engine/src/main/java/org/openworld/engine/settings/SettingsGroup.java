@@ -2,6 +2,7 @@ package org.openworld.engine.settings;
 
 import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Modifier;
 import java.lang.reflect.RecordComponent;
 import java.util.ArrayList;
 import java.util.List;
@@ -31,6 +32,11 @@ public final class SettingsGroup<R extends Record> {
         this.prefix = prefix;
         this.type = type;
         this.defaults = defaults;
+        if (!Modifier.isPublic(type.getModifiers())) {
+            // Reading and rebuilding records reflectively needs public accessors and constructor; say so now,
+            // not as an IllegalAccessException the first time a key is read.
+            throw new IllegalStateException("settings record " + type.getName() + " must be public");
+        }
         for (RecordComponent c : type.getRecordComponents()) {
             Setting doc = c.getAnnotation(Setting.class);
             if (doc == null) {

@@ -1,0 +1,399 @@
+package org.openworld.engine;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassCameras;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.core.World;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Uniform;
+
+/** The frame loop on real GL: pass order, pass cameras, frame records, switching systems off, fixed steps, cleanup. */
+class EngineTest {
+
+    static final int SIZE = 64;
+
+    private static GlContext gl;
+
+    @BeforeAll
+    static void context() {
+        gl = GlContext.headless();
+    }
+
+    @AfterAll
+    static void closeContext() {
+        gl.close();
+    }
+
+    @AfterEach
+    void nothingLeaks() {
+        assertEquals(0, gl.objects().live(), "live GL objects after the test: " + gl.objects());
+    }
+
+    /** One render call as a system saw it. */
+    record Call(String system, Pass pass, ViewCamera camera) {
+    }
+
+    /**
+     * A system that draws one mesh in one flat colour in each of its passes and logs every lifecycle call. Systems
+     * drawing in SHADOW or REFLECTION bind a small target of their own, as the real owners of those passes do.
+     */
+    static class Drawing implements EngineSystem {
+        final SystemSpec spec;
+        final List<String> log;
+        final List<Call> calls;
+        final Function<GlContext, Mesh> meshFactory;
+        final float[] color;
+        int inits;
+        int updates;
+        boolean closed;
+        private ShaderProgram program;
+        private Uniform.Vec4 colorUniform;
+        private Mesh mesh;
+        private Framebuffer ownTarget;
+
+        Drawing(SystemSpec spec, List<String> log, List<Call> calls, Function<GlContext, Mesh> meshFactory,
+                float... color) {
+            this.spec = spec;
+            this.log = log;
+            this.calls = calls;
+            this.meshFactory = meshFactory;
+            this.color = color;
+        }
+
+        @Override
+        public SystemSpec spec() {
+            return spec;
+        }
+
+        @Override
+        public void init(EngineContext context) {
+            inits++;
+            program = context.shaders().program("test/fullscreen.vert", "test/solid.frag");
+            colorUniform = program.vec4("uColor");
+            mesh = meshFactory.apply(context.gl());
+            if (spec.passes().contains(Pass.SHADOW) || spec.passes().contains(Pass.REFLECTION)) {
+                ownTarget = new Framebuffer(context.gl(), 16, 16, Texture2D.Format.RGBA8, Texture2D.Format.DEPTH32F,
+                        Texture2D.Sampling.NEAREST_CLAMP);
+            }
+        }
+
+        @Override
+        public void update(World world, double step) {
+            updates++;
+            log.add("update " + spec.name());
+        }
+
+        @Override
+        public void render(Pass pass, RenderContext context) {
+            log.add(pass.label() + " " + spec.name());
+            calls.add(new Call(spec.name(), pass, context.camera()));
+            if (ownTarget != null) {
+                ownTarget.bind();
+            }
+            glDisable(GL_DEPTH_TEST);
+            program.use();
+            colorUniform.set(color[0], color[1], color[2], 1);
+            mesh.draw(context.stats());
+        }
+
+        @Override
+        public void close() {
+            closed = true;
+            log.add("close " + spec.name());
+            if (ownTarget != null) {
+                ownTarget.close();
+            }
+            mesh.close();
+            program.close();
+        }
+    }
+
+    /** The sun's camera: an orthographic box looking down, as a shadow system would set it. */
+    static final ViewCamera SUN_CAMERA = new ViewCamera(
+            new Matrix4f().lookAt(0, 500, 0, 0, 0, 0, 0, 0, -1), new Matrix4f().ortho(-100, 100, -100, 100, 1, 1000),
+            new Vector3f(0, 500, 0), 1, 1000, ViewCamera.NO_CLIP);
+
+    final List<String> log = new ArrayList<>();
+    final List<Call> calls = new ArrayList<>();
+
+    /** Sets the SHADOW pass's camera in its update and reports a counter. */
+    final Drawing shadow = new Drawing(SystemSpec.named("shadow").writes(PassCameras.class).draws(Pass.SHADOW),
+            log, calls, GlTestSupport::quarterQuad, 0, 0, 0) {
+        @Override
+        public void update(World world, double step) {
+            super.update(world, step);
+            world.resource(PassCameras.class).set(Pass.SHADOW, SUN_CAMERA);
+            world.resource(Counters.class).put("shadow.casters", 3);
+        }
+    };
+    final Drawing mirror = new Drawing(SystemSpec.named("mirror").draws(Pass.REFLECTION),
+            log, calls, GlTestSupport::fullScreenTriangle, 1, 1, 1);
+    final Drawing terrain = new Drawing(SystemSpec.named("terrain").draws(Pass.MAIN),
+            log, calls, GlTestSupport::fullScreenTriangle, 0, 1, 0);
+    /** Alphabetically before terrain, but declared after it: draws blue over terrain's lower-left quarter. */
+    final Drawing decals = new Drawing(SystemSpec.named("decals").after("terrain").draws(Pass.MAIN),
+            log, calls, GlTestSupport::quarterQuad, 0, 0, 1) {
+        @Override
+        public void render(Pass pass, RenderContext context) {
+            super.render(pass, context);
+            context.world().resource(Counters.class).add("decals.drawn", 1);
+        }
+    };
+    /** Draws red over the lower-left quarter after everything else. */
+    final Drawing hud = new Drawing(SystemSpec.named("hud").draws(Pass.OVERLAY),
+            log, calls, GlTestSupport::quarterQuad, 1, 0, 0);
+
+    private Engine engineWithAllPasses() {
+        Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, hud, decals, terrain, mirror, shadow);
+        engine.world().resource(Camera.class).setPose(new CameraPose(10, 20, 30, 45, -5, 60));
+        return engine;
+    }
+
+    private static String rgb(Image image, int x, int y) {
+        return image.channel(x, y, 0) + "," + image.channel(x, y, 1) + "," + image.channel(x, y, 2);
+    }
+
+    @Test
+    void passesRunInOrderWithSystemsInResolvedOrder() {
+        try (Engine engine = engineWithAllPasses()) {
+            engine.update();
+            log.clear();
+            engine.update();
+            engine.render();
+
+            assertEquals(List.of(
+                    "update hud", "update mirror", "update shadow", "update terrain", "update decals",
+                    "shadow shadow", "reflection mirror", "main terrain", "main decals", "overlay hud"), log);
+            Image image = engine.readImage();
+            // lower left: hud (overlay) over decals over terrain; upper right: terrain alone
+            assertEquals("255,0,0", rgb(image, SIZE / 4, SIZE * 3 / 4));
+            assertEquals("0,255,0", rgb(image, SIZE * 3 / 4, SIZE / 4));
+        }
+        assertEquals(List.of("close decals", "close terrain", "close shadow", "close mirror", "close hud"),
+                log.subList(log.size() - 5, log.size()));
+    }
+
+    @Test
+    void eachPassGetsItsCamera() {
+        try (Engine engine = engineWithAllPasses()) {
+            engine.update();
+            engine.render();
+
+            Map<Pass, ViewCamera> byPass = new java.util.EnumMap<>(Pass.class);
+            calls.forEach(c -> byPass.merge(c.pass(), c.camera(), (a, b) -> {
+                assertSame(a, b, "two systems in " + c.pass() + " got different cameras");
+                return a;
+            }));
+            assertSame(SUN_CAMERA, byPass.get(Pass.SHADOW));
+            ViewCamera main = byPass.get(Pass.MAIN);
+            assertNotSame(SUN_CAMERA, main);
+            assertEquals(new Vector3f(10, 20, 30), main.position());
+            assertSame(main, byPass.get(Pass.REFLECTION), "nobody owns REFLECTION's camera: it is the main one");
+            assertSame(main, byPass.get(Pass.OVERLAY));
+        }
+    }
+
+    @Test
+    void frameRecordsCarryGpuTimesCountsCountersAndSystemTimes() {
+        List<FrameRecord> records = new ArrayList<>();
+        try (Engine engine = engineWithAllPasses()) {
+            for (int i = 0; i < 3; i++) {
+                engine.update();
+                engine.render();
+            }
+            engine.collectFrames(true, records::add);
+            engine.collectFrames(true, r -> records.add(null));
+        }
+
+        assertEquals(3, records.size(), "one record per frame, each handed over once");
+        long triangles = 2 + 1 + 1 + 2 + 2; // shadow quad, mirror and terrain triangles, decals and hud quads
+        for (int i = 0; i < records.size(); i++) {
+            FrameRecord r = records.get(i);
+            assertEquals(i, r.frame());
+            assertEquals(List.of("shadow", "reflection", "main", "overlay"), List.copyOf(r.passGpuMs().keySet()));
+            r.passGpuMs().forEach((pass, ms) -> assertTrue(ms >= 0 && Double.isFinite(ms), pass + ": " + ms));
+            assertEquals(triangles, r.triangles());
+            assertEquals(5, r.drawCalls());
+            assertEquals(Map.of("shadow.casters", 3.0, "decals.drawn", 1.0), r.counters());
+            assertEquals(List.of("hud", "mirror", "shadow", "terrain", "decals"), List.copyOf(r.systemCpuMs().keySet()));
+            r.systemCpuMs().forEach((system, ms) -> assertTrue(ms >= 0, system + ": " + ms));
+            assertTrue(r.cpuMs() > 0);
+        }
+        assertTrue(records.get(2).simTime() > records.get(0).simTime());
+    }
+
+    @Test
+    void disabledSystemIsSkippedButNotClosed() {
+        List<FrameRecord> records = new ArrayList<>();
+        try (Engine engine = engineWithAllPasses()) {
+            engine.setEnabled("hud", false);
+            engine.setEnabled("mirror", false);
+            engine.update();
+            engine.render();
+
+            assertFalse(log.stream().anyMatch(l -> l.endsWith(" hud") || l.endsWith(" mirror")), log.toString());
+            assertFalse(hud.closed || mirror.closed);
+            assertFalse(engine.isEnabled("hud"));
+            Image image = engine.readImage();
+            assertEquals("0,0,255", rgb(image, SIZE / 4, SIZE * 3 / 4), "decals show without the hud");
+            engine.collectFrames(true, records::add);
+            FrameRecord r = records.get(0);
+            assertEquals(List.of("shadow", "main"), List.copyOf(r.passGpuMs().keySet()));
+            assertEquals(2 + 1 + 2, r.triangles());
+            assertEquals(3, r.drawCalls());
+            assertFalse(r.systemCpuMs().containsKey("hud"));
+
+            // on again: drawn again, with the resources it kept
+            engine.setEnabled("hud", true);
+            log.clear();
+            engine.update();
+            engine.render();
+            assertTrue(log.contains("overlay hud"), log.toString());
+            assertEquals(1, hud.inits);
+            assertEquals("255,0,0", rgb(engine.readImage(), SIZE / 4, SIZE * 3 / 4));
+            assertThrows(IllegalArgumentException.class, () -> engine.setEnabled("huud", false));
+        }
+        assertTrue(hud.closed && mirror.closed, "disabled systems are closed with the engine");
+    }
+
+    /** Counts updates; draws nothing. */
+    static final class Counting implements EngineSystem {
+        int updates;
+
+        @Override
+        public SystemSpec spec() {
+            return SystemSpec.named("counting");
+        }
+
+        @Override
+        public void update(World world, double step) {
+            updates++;
+        }
+    }
+
+    /** Updates run by one advance call. */
+    private static int stepsOf(Engine engine, Counting counting, double realSeconds) {
+        int before = counting.updates;
+        engine.advance(realSeconds);
+        return counting.updates - before;
+    }
+
+    @Test
+    void advanceRunsWholeFixedStepsAndCarriesTheRest() {
+        Counting counting = new Counting();
+        try (Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, counting)) {
+            engine.settings().set("engine.step", "0.01");
+            engine.settings().set("engine.max-steps", "8");
+
+            assertEquals(3, stepsOf(engine, counting, 0.03));
+            assertEquals(6, stepsOf(engine, counting, 0.06));
+            assertEquals(0, stepsOf(engine, counting, 0.005));
+            assertEquals(1, stepsOf(engine, counting, 0.005), "two halves make a step");
+            assertEquals(0, stepsOf(engine, counting, 0.0049));
+            assertEquals(2, stepsOf(engine, counting, 0.0151), "0.0049 s carried + 0.0151 s = 2 steps");
+            assertEquals(12 * 0.01, engine.simTime(), 1e-9, "simulation time is whole steps");
+        }
+    }
+
+    @Test
+    void advanceAtTheDefaultStepRunsWholeSteps() {
+        Counting counting = new Counting();
+        try (Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, counting)) {
+            double step = engine.settings().get(EngineSettings.class).step();
+            for (int n = 1; n <= engine.settings().get(EngineSettings.class).maxSteps(); n++) {
+                assertEquals(n, stepsOf(engine, counting, n * step), "advance(" + n + " steps)");
+            }
+        }
+    }
+
+    @Test
+    void advanceIsCappedByMaxStepsAndDropsTheBacklog() {
+        Counting counting = new Counting();
+        try (Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, counting)) {
+            engine.settings().set("engine.step", "0.01");
+            engine.settings().set("engine.max-steps", "4");
+
+            assertEquals(4, stepsOf(engine, counting, 1.0));
+            assertEquals(0, stepsOf(engine, counting, 0.005), "the 0.96 s not simulated is dropped, not carried");
+        }
+    }
+
+    @Test
+    void failingInitClosesWhatWasAlreadyCreated() {
+        List<String> events = new ArrayList<>();
+        EngineSystem first = new EngineSystem() {
+            private GpuBuffer buffer;
+
+            @Override
+            public SystemSpec spec() {
+                return SystemSpec.named("first");
+            }
+
+            @Override
+            public void init(EngineContext context) {
+                buffer = new GpuBuffer(context.gl(), GL_ARRAY_BUFFER);
+                buffer.allocate(1024, GL_STATIC_DRAW);
+                events.add("init first");
+            }
+
+            @Override
+            public void close() {
+                buffer.close();
+                events.add("close first");
+            }
+        };
+        EngineSystem second = new EngineSystem() {
+            @Override
+            public SystemSpec spec() {
+                return SystemSpec.named("second").after("first");
+            }
+
+            @Override
+            public void init(EngineContext context) {
+                throw new IllegalStateException("no terrain data in assets/");
+            }
+        };
+
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> GlTestSupport.engine(gl, SIZE, SIZE, second, first));
+
+        assertEquals("no terrain data in assets/", e.getMessage());
+        assertEquals(List.of("init first", "close first"), events);
+        assertEquals(0, gl.objects().live(), "the engine's own target and uniform buffer are closed too: " + gl.objects());
+    }
+}

@@ -1,0 +1,149 @@
+package org.openworld.engine.gl;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.glDisable;
+
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector3fc;
+import org.joml.Vector4f;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.openworld.engine.Engine;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.environment.Fog;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.TimeOfDay;
+
+/**
+ * The frame block end to end: the engine fills it from the world, a shader ({@code shaders/test/frame/probe.frag})
+ * writes each member back out as a colour, and the pixels must carry the Java-side values. A Java field order or
+ * offset that differs from the GLSL block shows up as a wrong column.
+ */
+class FrameUniformsTest {
+
+    /** 10 columns of 8 pixels, one block member (or check) per column. */
+    static final int WIDTH = 80;
+    static final int HEIGHT = 16;
+    /** RGBA8 keeps a value in 0..1 to half a step of 1/255; allow one step. */
+    static final double TOLERANCE = 1.0;
+
+    private static GlContext gl;
+
+    @BeforeAll
+    static void context() {
+        gl = GlContext.headless();
+    }
+
+    @AfterAll
+    static void closeContext() {
+        gl.close();
+    }
+
+    /** Draws the probe shader over the whole scene target. */
+    static final class ProbeSystem implements EngineSystem {
+        Vector3fc point = new Vector3f();
+        private ShaderProgram program;
+        private Uniform.Vec3 probePoint;
+        private Mesh triangle;
+
+        @Override
+        public SystemSpec spec() {
+            return SystemSpec.named("frame-probe").draws(Pass.MAIN);
+        }
+
+        @Override
+        public void init(EngineContext context) {
+            program = context.shaders().program("test/fullscreen.vert", "test/frame/probe.frag");
+            probePoint = program.vec3("uProbePoint");
+            triangle = GlTestSupport.fullScreenTriangle(context.gl());
+        }
+
+        @Override
+        public void render(Pass pass, RenderContext context) {
+            glDisable(GL_DEPTH_TEST);
+            program.use();
+            probePoint.set(point);
+            triangle.draw(context.stats());
+        }
+
+        @Override
+        public void close() {
+            triangle.close();
+            program.close();
+        }
+    }
+
+    private static void assertColumn(Image image, int column, float r, float g, float b, float a) {
+        float[] expected = {r, g, b, a};
+        for (int c = 0; c < 4; c++) {
+            assertTrue(expected[c] >= 0 && expected[c] <= 1, "test value out of 0..1: column " + column + " channel " + c);
+            int x = column * 8 + 4;
+            double got = image.channel(x, HEIGHT / 2, c);
+            assertEquals(expected[c] * 255, got, TOLERANCE, "column " + column + ", channel " + "rgba".charAt(c));
+        }
+    }
+
+    @Test
+    void everyMemberOfTheBlockArrivesAtTheShader() {
+        ProbeSystem probe = new ProbeSystem();
+        CameraPose pose = new CameraPose(120, 250, 730, 30, -10, 60);
+        Vector3f sunDir = new Vector3f(0.3f, 0.5f, -0.8f).normalize();
+        Vector3f sunColor = new Vector3f(1.2f, 0.9f, 0.6f);
+        Vector3f ambient = new Vector3f(0.25f, 0.35f, 0.45f);
+        Fog fog = new Fog(new Vector3f(0.2f, 0.4f, 0.6f), 0.0003f, 0.002f);
+        double hours = 15.25;
+        int updates = 6;
+
+        Image image;
+        Vector4f expectedNdc;
+        double simTime;
+        try (Engine engine = GlTestSupport.engine(gl, WIDTH, HEIGHT, probe)) {
+            engine.world().resource(Camera.class).setPose(pose);
+            engine.world().setResource(new Sun(sunDir, sunColor, ambient));
+            engine.world().setResource(fog);
+            engine.world().setResource(new TimeOfDay(hours, 0));
+            ViewCamera camera = engine.world().resource(Camera.class).view((float) WIDTH / HEIGHT);
+            // A point 100 m ahead of the eye, a little right and below, so it projects inside the picture.
+            probe.point = new Matrix4f(camera.view()).invert().transformPosition(new Vector3f(10, -5, -100));
+            expectedNdc = new Matrix4f(camera.viewProjection()).transform(new Vector4f(probe.point, 1));
+            expectedNdc.div(expectedNdc.w);
+            for (int i = 0; i < updates; i++) {
+                engine.update();
+            }
+            engine.render(); // frame 0
+            engine.render(); // frame 1: the one read back
+            image = engine.readImage();
+            simTime = updates * engine.settings().get(EngineSettings.class).step();
+            assertEquals(simTime, engine.simTime(), 1e-12);
+        }
+
+        assertColumn(image, 0, WIDTH / 256f, HEIGHT / 256f, 16f / WIDTH, 16f / HEIGHT);
+        assertColumn(image, 1, (float) pose.x() / 1000, (float) pose.y() / 1000, (float) pose.z() / 1000, Camera.NEAR);
+        assertColumn(image, 2, sunDir.x * 0.5f + 0.5f, sunDir.y * 0.5f + 0.5f, sunDir.z * 0.5f + 0.5f,
+                Camera.FAR / 40000);
+        assertColumn(image, 3, sunColor.x * 0.5f, sunColor.y * 0.5f, sunColor.z * 0.5f, 1);
+        assertColumn(image, 4, ambient.x, ambient.y, ambient.z, 1);
+        assertColumn(image, 5, fog.color().x(), fog.color().y(), fog.color().z(), fog.density() * 1000);
+        Vector4f noClip = new Vector4f(ViewCamera.NO_CLIP).mul(0.5f).add(0.5f, 0.5f, 0.5f, 0.5f);
+        assertColumn(image, 6, noClip.x, noClip.y, noClip.z, noClip.w);
+        assertColumn(image, 7, (float) (simTime * 5), (float) hours / 24, 1 / 8f, fog.heightFalloff() * 100);
+        float ndcX = expectedNdc.x * 0.5f + 0.5f;
+        float ndcY = expectedNdc.y * 0.5f + 0.5f;
+        assertColumn(image, 8, ndcX, ndcY, ndcX, ndcY);
+        assertColumn(image, 9, expectedNdc.z * 0.5f + 0.5f, 1, 0, 1);
+        assertEquals(0, gl.objects().live(), "live GL objects after close: " + gl.objects());
+    }
+}

@@ -1,0 +1,182 @@
+package org.openworld.engine.gl;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.lwjgl.opengl.GL11C.*;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.GlTestSupport;
+
+/**
+ * Programs built by the real driver (Mesa llvmpipe here) from files on disk, as in dev mode: error locations mapped
+ * back through includes, missing uniforms, and reloads that fail or succeed.
+ */
+class ShaderProgramTest {
+
+    private static GlContext gl;
+
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void context() {
+        gl = GlContext.headless();
+    }
+
+    @AfterAll
+    static void closeContext() {
+        gl.close();
+    }
+
+    @AfterEach
+    void nothingLeaks() {
+        assertEquals(0, gl.objects().live(), "live GL objects after the test: " + gl.objects());
+    }
+
+    private void write(String path, String text) throws IOException {
+        Path file = dir.resolve(path);
+        Files.createDirectories(file.getParent());
+        Files.writeString(file, text);
+    }
+
+    private static final String VERTEX = """
+            #version 330 core
+            layout(location = 0) in vec2 csCorner;
+            void main() { gl_Position = vec4(csCorner, 0.0, 1.0); }
+            """;
+
+    private static final String FRAGMENT = """
+            #version 330 core
+            #include "lib/tint.glsl"
+            uniform vec4 uScale;
+            out vec4 fragColor;
+            void main() { fragColor = vec4(tint(), 1.0) * uScale; }
+            """;
+
+    @Test
+    void compileErrorInAnIncludedFileNamesThatFileAndLine() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", """
+                // The colour every pixel gets.
+                vec3 tint() {
+                    return vec3(1.0, 0.0, 0.0) +;
+                }
+                """);
+        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+
+        ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
+
+        assertTrue(e.getMessage().contains(dir.resolve("lib/tint.glsl") + ":3"), e.getMessage());
+        assertTrue(e.getMessage().contains("compile failed"), e.getMessage());
+    }
+
+    @Test
+    void compileErrorInTheStageAfterAnIncludeNamesTheStageLine() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT.replace("* uScale;", "* uScale * undeclaredFactor;"));
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+
+        ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
+
+        assertTrue(e.getMessage().contains(dir.resolve("fill.frag") + ":5"), e.getMessage());
+        assertTrue(e.getMessage().contains("undeclaredFactor"), e.getMessage());
+    }
+
+    @Test
+    void missingUniformIsNamed() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+
+        try (ShaderProgram program = library.program("fill.vert", "fill.frag")) {
+            program.vec4("uScale");
+            ShaderException e = assertThrows(ShaderException.class, () -> program.vec4("uScal"));
+            assertTrue(e.getMessage().contains("'uScal'"), e.getMessage());
+            assertTrue(e.getMessage().contains("fill.frag"), e.getMessage());
+        }
+    }
+
+    /** Draws the program over a small target and returns the centre pixel's RGBA. */
+    private static int[] draw(ShaderProgram program, Uniform.Vec4 scale, float s) {
+        try (Framebuffer target = new Framebuffer(gl, 8, 8, Texture2D.Format.RGBA8, null, Texture2D.Sampling.NEAREST_CLAMP);
+             Mesh triangle = GlTestSupport.fullScreenTriangle(gl)) {
+            target.bind();
+            glClearColor(0, 0, 0, 0);
+            glClear(GL_COLOR_BUFFER_BIT);
+            program.use();
+            scale.set(s, s, s, 1);
+            triangle.draw(new DrawStats());
+            Image image = target.read();
+            return new int[] {image.channel(4, 4, 0), image.channel(4, 4, 1), image.channel(4, 4, 2), image.channel(4, 4, 3)};
+        }
+    }
+
+    @Test
+    void failedReloadKeepsTheOldProgramAndAFixedOneIsPickedUp() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0, 0.0, 0.0); }\n");
+        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+
+        try (ShaderProgram program = library.program("fill.vert", "fill.frag")) {
+            Uniform.Vec4 scale = program.vec4("uScale");
+            assertEquals(List.of(255, 0, 0, 255), List.of(boxed(draw(program, scale, 1))));
+            int before = program.id();
+
+            // 1. an edit that does not compile: reload throws, the old program stays and still draws red
+            write("lib/tint.glsl", "// edited\nvec3 tint() { return vec3(0.0, 1.0, 0.0) }\n");
+            ShaderException e = assertThrows(ShaderException.class, program::reload);
+            assertTrue(e.getMessage().contains(dir.resolve("lib/tint.glsl").toString()), e.getMessage());
+            List<String> errors = library.reloadAll();
+            assertEquals(1, errors.size(), errors.toString());
+            assertEquals(before, program.id());
+            assertEquals(List.of(255, 0, 0, 255), List.of(boxed(draw(program, scale, 1))));
+
+            // 2. an edit that removes a uniform the program uses: also refused
+            write("fill.frag", FRAGMENT.replace("uScale", "uGain"));
+            write("lib/tint.glsl", "vec3 tint() { return vec3(0.0, 1.0, 0.0); }\n");
+            ShaderException missing = assertThrows(ShaderException.class, program::reload);
+            assertTrue(missing.getMessage().contains("'uScale'"), missing.getMessage());
+            assertEquals(List.of(255, 0, 0, 255), List.of(boxed(draw(program, scale, 1))));
+
+            // 3. fixed: reload succeeds, draws green, and the uniform handle follows the new program
+            write("fill.frag", FRAGMENT);
+            assertEquals(List.of(), library.reloadAll());
+            int[] green = draw(program, scale, 0.5f);
+            assertEquals(0, green[0]);
+            assertEquals(128, green[1], 1);
+            assertEquals(0, green[2]);
+        }
+        assertEquals(0, gl.objects().live(GlObjects.Kind.PROGRAM));
+        assertEquals(0, gl.objects().live(GlObjects.Kind.SHADER));
+    }
+
+    @Test
+    void closedProgramsAreNotReloaded() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+        library.program("fill.vert", "fill.frag").close();
+
+        write("lib/tint.glsl", "broken\n");
+
+        assertEquals(List.of(), library.reloadAll());
+    }
+
+    private static Integer[] boxed(int[] values) {
+        return java.util.Arrays.stream(values).boxed().toArray(Integer[]::new);
+    }
+}
