@@ -100,8 +100,9 @@ public final class Engine implements AutoCloseable {
             throttle = new FrameThrottle(gl);
             EngineContext context = new EngineContext(gl, world, this.shaders, settings);
             for (EngineSystem system : order.systems()) {
-                system.init(context);
+                // Added first, so a system whose init fails half-way is closed with the others.
                 initialised.add(system);
+                system.init(context);
             }
         } catch (RuntimeException e) {
             close();

@@ -9,8 +9,8 @@ import org.openworld.engine.gl.DrawStats;
  * @param world  the shared world
  * @param camera this pass's camera
  * @param stats  draw calls and triangles, counted by {@code Mesh}
- * @param width  width of the pass's target, pixels
- * @param height height of the pass's target, pixels
+ * @param width  width of the scene target, pixels (a SHADOW or REFLECTION owner knows its own target's size)
+ * @param height height of the scene target, pixels
  */
 public record RenderContext(World world, ViewCamera camera, DrawStats stats, int width, int height) {
 }

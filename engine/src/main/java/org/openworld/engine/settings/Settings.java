@@ -171,7 +171,7 @@ public final class Settings {
             return value;
         } catch (NumberFormatException e) {
             throw new SettingsException(key.key() + "=" + text + " is not valid: expected "
-                    + (t.isEnum() || t == boolean.class ? "one of " : "a " + t.getSimpleName() + " in ") + valid);
+                    + (t.isEnum() || t == boolean.class ? "one of " : (t == int.class ? "an integer in " : "a number in ")) + valid);
         }
     }
 
