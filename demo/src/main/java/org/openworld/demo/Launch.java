@@ -20,10 +20,13 @@ final class Launch implements AutoCloseable {
 
     final GlContext gl;
     final Engine engine;
+    /** Whether shaders come from ./shaders on disk (--dev), so a reload picks up edits. */
+    final boolean devShaders;
 
-    private Launch(GlContext gl, Engine engine) {
+    private Launch(GlContext gl, Engine engine, boolean devShaders) {
         this.gl = gl;
         this.engine = engine;
+        this.devShaders = devShaders;
     }
 
     /** Settings of the demo's systems with every {@code --set} applied (checked before any window opens). */
@@ -33,19 +36,24 @@ final class Launch implements AutoCloseable {
         return settings;
     }
 
+    /** Headless, or a window without vsync: the commands that render a fixed number of frames. */
     static Launch start(RenderOptions options, boolean window, String title) {
+        return start(options, window, false, title);
+    }
+
+    static Launch start(RenderOptions options, boolean window, boolean vsync, String title) {
         Settings settings = settings(options);
         double hours = TimeOfDay.parseHours(options.time);
         ShaderSources shaders = options.dev ? devShaders() : ShaderSources.classpath();
         List<EngineSystem> systems = DemoScene.systems();
         GlContext gl = window
-                ? GlContext.window(title, options.size.width(), options.size.height(), true)
+                ? GlContext.window(title, options.size.width(), options.size.height(), vsync)
                 : GlContext.headless();
         try {
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
             engine.world().setResource(new TimeOfDay(hours, 0));
             engine.world().resource(Camera.class).setPose(DemoScene.DEFAULT_POSE);
-            return new Launch(gl, engine);
+            return new Launch(gl, engine, options.dev);
         } catch (RuntimeException e) {
             gl.close();
             throw e;

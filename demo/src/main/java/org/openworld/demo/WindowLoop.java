@@ -176,6 +176,10 @@ final class WindowLoop {
     }
 
     private void reloadShaders() {
+        if (!launch.devShaders) {
+            System.out.println("shaders come from the jar; start with --dev to edit ./shaders and reload them with F5");
+            return;
+        }
         List<String> errors = engine.shaders().reloadAll();
         if (errors.isEmpty()) {
             System.out.println("shaders reloaded");
