@@ -23,7 +23,7 @@ import picocli.CommandLine.Option;
  * {@code frames.csv}, {@code summary.json} and {@code frametime.png} (docs/benchmarks.md). With {@code --compare}
  * it prints two earlier runs side by side instead.
  */
-@Command(name = "bench", description = "Replay a camera path and record per-frame timings, or compare two runs.")
+@Command(name = "bench", mixinStandardHelpOptions = true, description = "Replay a camera path and record per-frame timings, or compare two runs.")
 final class BenchCommand implements Callable<Integer> {
 
     @Mixin

@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /** {@code openworld info}: the OpenGL renderer and version, how the context was made, and the frame order. */
-@Command(name = "info", description = "Print the OpenGL renderer, version and context mode, and the resolved frame order.")
+@Command(name = "info", mixinStandardHelpOptions = true, description = "Print the OpenGL renderer, version and context mode, and the resolved frame order.")
 final class InfoCommand implements Callable<Integer> {
 
     @Option(names = "--frame", description = "Print only the resolved frame order (needs no OpenGL).")

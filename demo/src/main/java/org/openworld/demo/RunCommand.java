@@ -6,7 +6,7 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code openworld run} (the default): the interactive window. */
-@Command(name = "run", description = "Open the interactive window (the default command).")
+@Command(name = "run", mixinStandardHelpOptions = true, description = "Open the interactive window (the default command).")
 final class RunCommand implements Callable<Integer> {
 
     @Mixin

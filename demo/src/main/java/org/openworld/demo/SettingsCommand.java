@@ -5,7 +5,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 
 /** {@code openworld settings}: every {@code --set} key with its default, unit, valid values and meaning. */
-@Command(name = "settings", description = "List every --set key with its default, unit, valid values and meaning.")
+@Command(name = "settings", mixinStandardHelpOptions = true, description = "List every --set key with its default, unit, valid values and meaning.")
 final class SettingsCommand implements Callable<Integer> {
 
     @Mixin

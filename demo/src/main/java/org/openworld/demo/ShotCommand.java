@@ -9,7 +9,7 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code openworld shot}: one image, headless by default. */
-@Command(name = "shot", description = "Render one image to a PNG file (headless unless --window).")
+@Command(name = "shot", mixinStandardHelpOptions = true, description = "Render one image to a PNG file (headless unless --window).")
 final class ShotCommand implements Callable<Integer> {
 
     @Mixin
