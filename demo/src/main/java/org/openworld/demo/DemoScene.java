@@ -1,14 +1,10 @@
 package org.openworld.demo;
 
-import java.util.ArrayList;
 import java.util.List;
-import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.environment.DaylightSystem;
-import org.openworld.engine.settings.Settings;
-import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.testscene.TestSceneSystem;
 
 /**
@@ -30,12 +26,5 @@ final class DemoScene {
                 new CameraSystem(),
                 new DaylightSystem(),
                 new TestSceneSystem());
-    }
-
-    /** Settings with every group of these systems at its defaults. */
-    static Settings settings(List<EngineSystem> systems) {
-        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
-        systems.forEach(s -> groups.addAll(s.settings()));
-        return new Settings(groups);
     }
 }

@@ -1,5 +1,7 @@
 package org.openworld.demo;
 
+import org.openworld.engine.Engine;
+
 import static org.junit.jupiter.api.Assertions.*;
 
 import java.io.ByteArrayOutputStream;
@@ -110,7 +112,7 @@ class CommandLineTest {
     @Test
     void settingsListsEveryKeyWithItsDefault() {
         assertEquals(0, Main.execute("settings"));
-        for (String key : DemoScene.settings(DemoScene.systems()).keys()) {
+        for (String key : Engine.settingsFor(DemoScene.systems()).keys()) {
             assertTrue(stdout().contains(key), "missing " + key);
         }
         assertTrue(stdout().contains("camera.fov") && stdout().contains("deg"));

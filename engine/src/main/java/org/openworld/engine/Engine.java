@@ -37,6 +37,7 @@ import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
 
 /**
  * Owns the world and the systems and runs the frame (DESIGN.md, "Core"):
@@ -108,6 +109,13 @@ public final class Engine implements AutoCloseable {
             close();
             throw e;
         }
+    }
+
+    /** Settings at their defaults for the engine's own group and every group these systems declare. */
+    public static Settings settingsFor(List<? extends EngineSystem> systems) {
+        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
+        systems.forEach(s -> groups.addAll(s.settings()));
+        return new Settings(groups);
     }
 
     public World world() {

@@ -1,13 +1,10 @@
 package org.openworld.engine;
 
-import java.util.ArrayList;
 import java.util.List;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderSources;
-import org.openworld.engine.settings.Settings;
-import org.openworld.engine.settings.SettingsGroup;
 
 /** Builds engines for headless GL tests: small images, classpath shaders, default settings. */
 public final class GlTestSupport {
@@ -15,16 +12,9 @@ public final class GlTestSupport {
     private GlTestSupport() {
     }
 
-    /** Settings with the engine's group and every group the systems declare. */
-    public static Settings settingsFor(List<EngineSystem> systems) {
-        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
-        systems.forEach(s -> groups.addAll(s.settings()));
-        return new Settings(groups);
-    }
-
     public static Engine engine(GlContext gl, int width, int height, EngineSystem... systems) {
         List<EngineSystem> list = List.of(systems);
-        return new Engine(gl, ShaderSources.classpath(), settingsFor(list), list, width, height);
+        return new Engine(gl, ShaderSources.classpath(), Engine.settingsFor(list), list, width, height);
     }
 
     /** One triangle that covers the whole viewport, corners in clip space at attribute 0 (vec2). */
