@@ -17,10 +17,8 @@ import java.util.Map;
 import java.util.function.Function;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
@@ -47,22 +45,8 @@ class EngineTest {
 
     static final int SIZE = 64;
 
-    private static GlContext gl;
-
-    @BeforeAll
-    static void context() {
-        gl = GlContext.headless();
-    }
-
-    @AfterAll
-    static void closeContext() {
-        gl.close();
-    }
-
-    @AfterEach
-    void nothingLeaks() {
-        assertEquals(0, gl.objects().live(), "live GL objects after the test: " + gl.objects());
-    }
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
 
     /** One render call as a system saw it. */
     record Call(String system, Pass pass, ViewCamera camera) {
@@ -179,7 +163,7 @@ class EngineTest {
             log, calls, GlTestSupport::quarterQuad, 1, 0, 0);
 
     private Engine engineWithAllPasses() {
-        Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, hud, decals, terrain, mirror, shadow);
+        Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, hud, decals, terrain, mirror, shadow);
         engine.world().resource(Camera.class).setPose(new CameraPose(10, 20, 30, 45, -5, 60));
         return engine;
     }
@@ -316,7 +300,7 @@ class EngineTest {
     @Test
     void advanceRunsWholeFixedStepsAndCarriesTheRest() {
         Counting counting = new Counting();
-        try (Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, counting)) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, counting)) {
             engine.settings().set("engine.step", "0.01");
             engine.settings().set("engine.max-steps", "8");
 
@@ -333,7 +317,7 @@ class EngineTest {
     @Test
     void advanceAtTheDefaultStepRunsWholeSteps() {
         Counting counting = new Counting();
-        try (Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, counting)) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, counting)) {
             double step = engine.settings().get(EngineSettings.class).step();
             for (int n = 1; n <= engine.settings().get(EngineSettings.class).maxSteps(); n++) {
                 assertEquals(n, stepsOf(engine, counting, n * step), "advance(" + n + " steps)");
@@ -344,7 +328,7 @@ class EngineTest {
     @Test
     void advanceIsCappedByMaxStepsAndDropsTheBacklog() {
         Counting counting = new Counting();
-        try (Engine engine = GlTestSupport.engine(gl, SIZE, SIZE, counting)) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, counting)) {
             engine.settings().set("engine.step", "0.01");
             engine.settings().set("engine.max-steps", "4");
 
@@ -390,10 +374,10 @@ class EngineTest {
         };
 
         IllegalStateException e = assertThrows(IllegalStateException.class,
-                () -> GlTestSupport.engine(gl, SIZE, SIZE, second, first));
+                () -> GlTestSupport.engine(GL.context(), SIZE, SIZE, second, first));
 
         assertEquals("no terrain data in assets/", e.getMessage());
         assertEquals(List.of("init first", "close first"), events);
-        assertEquals(0, gl.objects().live(), "the engine's own target and uniform buffer are closed too: " + gl.objects());
+        assertEquals(0, GL.context().objects().live(), "the engine's own target and uniform buffer are closed too: " + GL.context().objects());
     }
 }

@@ -9,9 +9,9 @@ import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
 import org.joml.Vector4f;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.openworld.engine.HeadlessGl;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.GlTestSupport;
@@ -40,17 +40,8 @@ class FrameUniformsTest {
     /** RGBA8 keeps a value in 0..1 to half a step of 1/255; allow one step. */
     static final double TOLERANCE = 1.0;
 
-    private static GlContext gl;
-
-    @BeforeAll
-    static void context() {
-        gl = GlContext.headless();
-    }
-
-    @AfterAll
-    static void closeContext() {
-        gl.close();
-    }
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
 
     /** Draws the probe shader over the whole scene target. */
     static final class ProbeSystem implements EngineSystem {
@@ -110,7 +101,7 @@ class FrameUniformsTest {
         Image image;
         Vector4f expectedNdc;
         double simTime;
-        try (Engine engine = GlTestSupport.engine(gl, WIDTH, HEIGHT, probe)) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, probe)) {
             engine.world().resource(Camera.class).setPose(pose);
             engine.world().setResource(new Sun(sunDir, sunColor, ambient));
             engine.world().setResource(fog);
@@ -144,6 +135,6 @@ class FrameUniformsTest {
         float ndcY = expectedNdc.y * 0.5f + 0.5f;
         assertColumn(image, 8, ndcX, ndcY, ndcX, ndcY);
         assertColumn(image, 9, expectedNdc.z * 0.5f + 0.5f, 1, 0, 1);
-        assertEquals(0, gl.objects().live(), "live GL objects after close: " + gl.objects());
+        assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
     }
 }

@@ -9,10 +9,9 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.openworld.engine.HeadlessGl;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.GlTestSupport;
 
@@ -22,25 +21,11 @@ import org.openworld.engine.GlTestSupport;
  */
 class ShaderProgramTest {
 
-    private static GlContext gl;
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
 
     @TempDir
     Path dir;
-
-    @BeforeAll
-    static void context() {
-        gl = GlContext.headless();
-    }
-
-    @AfterAll
-    static void closeContext() {
-        gl.close();
-    }
-
-    @AfterEach
-    void nothingLeaks() {
-        assertEquals(0, gl.objects().live(), "live GL objects after the test: " + gl.objects());
-    }
 
     private void write(String path, String text) throws IOException {
         Path file = dir.resolve(path);
@@ -72,7 +57,7 @@ class ShaderProgramTest {
                     return vec3(1.0, 0.0, 0.0) +;
                 }
                 """);
-        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
 
         ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
 
@@ -85,7 +70,7 @@ class ShaderProgramTest {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT.replace("* uScale;", "* uScale * undeclaredFactor;"));
         write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
-        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
 
         ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
 
@@ -98,7 +83,7 @@ class ShaderProgramTest {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
         write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
-        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
 
         try (ShaderProgram program = library.program("fill.vert", "fill.frag")) {
             program.vec4("uScale");
@@ -110,8 +95,8 @@ class ShaderProgramTest {
 
     /** Draws the program over a small target and returns the centre pixel's RGBA. */
     private static int[] draw(ShaderProgram program, Uniform.Vec4 scale, float s) {
-        try (Framebuffer target = new Framebuffer(gl, 8, 8, Texture2D.Format.RGBA8, null, Texture2D.Sampling.NEAREST_CLAMP);
-             Mesh triangle = GlTestSupport.fullScreenTriangle(gl)) {
+        try (Framebuffer target = new Framebuffer(GL.context(), 8, 8, Texture2D.Format.RGBA8, null, Texture2D.Sampling.NEAREST_CLAMP);
+             Mesh triangle = GlTestSupport.fullScreenTriangle(GL.context())) {
             target.bind();
             glClearColor(0, 0, 0, 0);
             glClear(GL_COLOR_BUFFER_BIT);
@@ -128,7 +113,7 @@ class ShaderProgramTest {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
         write("lib/tint.glsl", "vec3 tint() { return vec3(1.0, 0.0, 0.0); }\n");
-        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
 
         try (ShaderProgram program = library.program("fill.vert", "fill.frag")) {
             Uniform.Vec4 scale = program.vec4("uScale");
@@ -159,8 +144,8 @@ class ShaderProgramTest {
             assertEquals(128, green[1], 1);
             assertEquals(0, green[2]);
         }
-        assertEquals(0, gl.objects().live(GlObjects.Kind.PROGRAM));
-        assertEquals(0, gl.objects().live(GlObjects.Kind.SHADER));
+        assertEquals(0, GL.context().objects().live(GlObjects.Kind.PROGRAM));
+        assertEquals(0, GL.context().objects().live(GlObjects.Kind.SHADER));
     }
 
     @Test
@@ -168,7 +153,7 @@ class ShaderProgramTest {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
         write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
-        ShaderLibrary library = new ShaderLibrary(gl, ShaderSources.directory(dir));
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
         library.program("fill.vert", "fill.frag").close();
 
         write("lib/tint.glsl", "broken\n");
