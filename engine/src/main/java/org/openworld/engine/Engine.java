@@ -5,6 +5,7 @@ import static org.lwjgl.opengl.GL11C.*;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
+import java.util.EnumMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -57,6 +58,8 @@ public final class Engine implements AutoCloseable {
     private final Settings settings;
     private final ShaderLibrary shaders;
     private final SystemOrder order;
+    /** The systems drawing in each pass, in resolved order; fixed at start-up. */
+    private final Map<Pass, List<EngineSystem>> drawingIn = new EnumMap<>(Pass.class);
     private final Set<String> disabled = new HashSet<>();
     private final DrawStats stats = new DrawStats();
     private final Counters counters = new Counters();
@@ -89,6 +92,9 @@ public final class Engine implements AutoCloseable {
         this.shaders = new ShaderLibrary(gl, shaders);
         this.settings = settings;
         this.order = SystemOrder.resolve(systems);
+        for (Pass pass : Pass.values()) {
+            drawingIn.put(pass, order.systems().stream().filter(s -> s.spec().passes().contains(pass)).toList());
+        }
         world.setResource(settings);
         world.setResource(counters);
         world.setResource(passCameras);
@@ -220,9 +226,8 @@ public final class Engine implements AutoCloseable {
         passCameras.set(Pass.MAIN, main);
         passCameras.set(Pass.OVERLAY, main);
         for (Pass pass : Pass.values()) {
-            List<EngineSystem> drawing = order.systems().stream()
-                    .filter(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name())).toList();
-            if (drawing.isEmpty()) {
+            List<EngineSystem> drawing = drawingIn.get(pass);
+            if (drawing.stream().noneMatch(s -> isEnabled(s.spec().name()))) {
                 continue;
             }
             ViewCamera camera = passCameras.get(pass);
@@ -241,6 +246,9 @@ public final class Engine implements AutoCloseable {
             timers.begin(pass.label());
             RenderContext context = new RenderContext(world, camera, stats, scene.width(), scene.height());
             for (EngineSystem system : drawing) {
+                if (!isEnabled(system.spec().name())) {
+                    continue;
+                }
                 long t0 = System.nanoTime();
                 system.render(pass, context);
                 systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
