@@ -50,8 +50,7 @@ public final class Main {
             err.println(e.getMessage());
             return EXIT_USER_ERROR;
         }
-        if (e instanceof UserError || e instanceof SettingsException || e instanceof SummaryFileException
-                || e instanceof IllegalArgumentException) {
+        if (e instanceof UserError || e instanceof SettingsException || e instanceof SummaryFileException) {
             err.println("openworld: " + e.getMessage());
             return EXIT_USER_ERROR;
         }

@@ -15,8 +15,20 @@ final class RenderOptions {
     long seed;
 
     @Option(names = "--time", paramLabel = "HH:MM", description = "Time of day, local solar time (default: ${DEFAULT-VALUE}).",
-            defaultValue = "10:00")
-    String time;
+            defaultValue = "10:00", converter = HoursConverter.class)
+    double hours;
+
+    /** {@code HH:MM} to hours, a wrong time being a command-line error like any other. */
+    static final class HoursConverter implements picocli.CommandLine.ITypeConverter<Double> {
+        @Override
+        public Double convert(String text) {
+            try {
+                return org.openworld.engine.environment.TimeOfDay.parseHours(text);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
+    }
 
     @Option(names = "--set", paramLabel = "KEY=VALUE",
             description = "Change a setting; repeatable. 'openworld settings' lists every key.")

@@ -66,7 +66,7 @@ final class WindowLoop {
         int framesSinceTitle = 0;
         Camera camera = engine.world().resource(Camera.class);
         HeightField ground = engine.world().findResource(HeightField.class).orElse(HeightField.FLAT);
-        while (!glfwWindowShouldClose(window)) {
+        while (!launch.gl.shouldClose()) {
             glfwPollEvents();
             int[] size = launch.gl.framebufferSize();
             if (size[0] == 0 || size[1] == 0) {

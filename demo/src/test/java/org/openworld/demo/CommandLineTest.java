@@ -94,6 +94,13 @@ class CommandLineTest {
     }
 
     @Test
+    void invalidTimeIsACommandLineError() {
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
+        assertTrue(stderr().contains("--time") && stderr().contains("hours 0–23"), stderr());
+        assertFalse(Files.exists(dir.resolve("x.png")));
+    }
+
+    @Test
     void unknownSetKeyIsAnError() {
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("settings", "--set", "camera.fovv=70"));
         assertTrue(stderr().contains("unknown setting 'camera.fovv'"), stderr());

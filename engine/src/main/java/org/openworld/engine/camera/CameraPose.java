@@ -14,8 +14,4 @@ public record CameraPose(double x, double y, double z, double yaw, double pitch,
 
     /** The field of view used when a pose does not give one, degrees. */
     public static final double DEFAULT_FOV = 60;
-
-    public CameraPose withPosition(double nx, double ny, double nz) {
-        return new CameraPose(nx, ny, nz, yaw, pitch, fov);
-    }
 }

@@ -15,6 +15,7 @@ public final class Counters {
         values.put(name, value);
     }
 
+    /** Adds to a counter, e.g. patches drawn in each pass. */
     public void add(String name, double value) {
         values.merge(name, value, Double::sum);
     }

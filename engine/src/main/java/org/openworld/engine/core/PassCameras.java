@@ -2,7 +2,6 @@ package org.openworld.engine.core;
 
 import java.util.EnumMap;
 import java.util.Map;
-import java.util.Optional;
 
 /**
  * The camera of each pass this frame, as a world resource. The engine sets {@link Pass#MAIN} and
@@ -15,10 +14,6 @@ public final class PassCameras {
 
     public void set(Pass pass, ViewCamera camera) {
         cameras.put(pass, camera);
-    }
-
-    public Optional<ViewCamera> find(Pass pass) {
-        return Optional.ofNullable(cameras.get(pass));
     }
 
     /** This pass's camera, or the main camera when no system owns it. */

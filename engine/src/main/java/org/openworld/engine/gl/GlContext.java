@@ -8,7 +8,6 @@ import java.util.ArrayList;
 import java.util.List;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
-import org.lwjgl.opengl.GLCapabilities;
 import org.lwjgl.system.MemoryStack;
 
 /**
@@ -54,7 +53,6 @@ public final class GlContext implements AutoCloseable {
 
     private final long window;
     private final Mode mode;
-    private final GLCapabilities capabilities;
     private final GlObjects objects = new GlObjects();
     private final GLFWErrorCallback errorCallback;
 
@@ -63,7 +61,7 @@ public final class GlContext implements AutoCloseable {
         this.mode = mode;
         this.errorCallback = errorCallback;
         glfwMakeContextCurrent(window);
-        this.capabilities = GL.createCapabilities();
+        GL.createCapabilities();
     }
 
     /** A headless context: EGL on GLFW's null platform first, then a hidden window on an X display. */
@@ -166,10 +164,6 @@ public final class GlContext implements AutoCloseable {
     /** The native GLFW window handle (invisible for headless contexts). */
     public long window() {
         return window;
-    }
-
-    public GLCapabilities capabilities() {
-        return capabilities;
     }
 
     public GlObjects objects() {

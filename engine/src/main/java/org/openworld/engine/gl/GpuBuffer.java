@@ -13,7 +13,6 @@ public final class GpuBuffer implements AutoCloseable {
     private final GlContext gl;
     private final int target;
     private int id;
-    private long sizeBytes;
 
     /**
      * @param target e.g. {@code GL_ARRAY_BUFFER}, {@code GL_ELEMENT_ARRAY_BUFFER}, {@code GL_UNIFORM_BUFFER}
@@ -29,10 +28,6 @@ public final class GpuBuffer implements AutoCloseable {
         return id;
     }
 
-    public long sizeBytes() {
-        return sizeBytes;
-    }
-
     public void bind() {
         glBindBuffer(target, id);
     }
@@ -46,26 +41,17 @@ public final class GpuBuffer implements AutoCloseable {
     public void upload(FloatBuffer data, int usage) {
         bind();
         glBufferData(target, data, usage);
-        sizeBytes = (long) data.remaining() * Float.BYTES;
     }
 
     public void upload(IntBuffer data, int usage) {
         bind();
         glBufferData(target, data, usage);
-        sizeBytes = (long) data.remaining() * Integer.BYTES;
-    }
-
-    public void upload(ByteBuffer data, int usage) {
-        bind();
-        glBufferData(target, data, usage);
-        sizeBytes = data.remaining();
     }
 
     /** Allocates without data. */
     public void allocate(long bytes, int usage) {
         bind();
         glBufferData(target, bytes, usage);
-        sizeBytes = bytes;
     }
 
     /** Overwrites from the start; the buffer must be large enough. */

@@ -1,7 +1,6 @@
 package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL30C.*;
-import static org.lwjgl.opengl.GL31C.glDrawElementsInstanced;
 
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
@@ -69,13 +68,6 @@ public final class Mesh implements AutoCloseable {
         glBindVertexArray(vao);
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0);
         stats.add(1, triangleCount());
-    }
-
-    /** Draws {@code instances} copies in one call; the shader tells them apart by {@code gl_InstanceID}. */
-    public void drawInstanced(int instances, DrawStats stats) {
-        glBindVertexArray(vao);
-        glDrawElementsInstanced(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0, instances);
-        stats.add(1, (long) triangleCount() * instances);
     }
 
     @Override

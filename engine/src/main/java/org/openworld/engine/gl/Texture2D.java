@@ -3,26 +3,21 @@ package org.openworld.engine.gl;
 import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.ByteBuffer;
-import java.nio.FloatBuffer;
 
 /**
- * A 2D texture with its size and format. Created empty (render targets) or from data (synthesised textures, height
- * maps). Mipmaps are generated on request.
+ * A 2D texture with its size and format, created empty as a render target. Systems that upload data (height maps,
+ * synthesised textures) add the factory they need here.
  */
 public final class Texture2D implements AutoCloseable {
 
     /** Sampling and wrap, chosen per use. */
     public record Sampling(int minFilter, int magFilter, int wrap) {
-        public static final Sampling LINEAR_CLAMP = new Sampling(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
         public static final Sampling NEAREST_CLAMP = new Sampling(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
-        public static final Sampling TRILINEAR_REPEAT = new Sampling(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
     }
 
     /** The three numbers GL needs for a pixel format, e.g. RGBA8 = (GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE). */
     public record Format(int internalFormat, int format, int type) {
         public static final Format RGBA8 = new Format(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
-        public static final Format RGBA16F = new Format(GL_RGBA16F, GL_RGBA, GL_FLOAT);
-        public static final Format R32F = new Format(GL_R32F, GL_RED, GL_FLOAT);
         public static final Format DEPTH24_STENCIL8 = new Format(GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8);
         public static final Format DEPTH32F = new Format(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT);
     }
@@ -56,29 +51,6 @@ public final class Texture2D implements AutoCloseable {
         glTexImage2D(GL_TEXTURE_2D, 0, format.internalFormat(), width, height, 0, format.format(), format.type(),
                 (ByteBuffer) null);
         return t;
-    }
-
-    /** From bytes in {@code format}, rows bottom-up as GL reads them. */
-    public static Texture2D of(GlContext gl, int width, int height, Format format, Sampling sampling, ByteBuffer data) {
-        Texture2D t = new Texture2D(gl, width, height, format, sampling);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, format.internalFormat(), width, height, 0, format.format(), format.type(), data);
-        t.generateMipmapsIfSampled(sampling);
-        return t;
-    }
-
-    /** From floats in {@code format}. */
-    public static Texture2D of(GlContext gl, int width, int height, Format format, Sampling sampling, FloatBuffer data) {
-        Texture2D t = new Texture2D(gl, width, height, format, sampling);
-        glTexImage2D(GL_TEXTURE_2D, 0, format.internalFormat(), width, height, 0, format.format(), format.type(), data);
-        t.generateMipmapsIfSampled(sampling);
-        return t;
-    }
-
-    private void generateMipmapsIfSampled(Sampling sampling) {
-        if (sampling.minFilter() != GL_LINEAR && sampling.minFilter() != GL_NEAREST) {
-            glGenerateMipmap(GL_TEXTURE_2D);
-        }
     }
 
     /** Binds to texture unit {@code unit}. */
