@@ -4,7 +4,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.openworld.engine.Engine;
-import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlContext;
@@ -14,7 +13,7 @@ import org.openworld.engine.settings.Settings;
 /**
  * One place that turns the common options into a running engine: settings with the user's {@code --set} values,
  * the GL context (window or headless), the shader sources (packaged, or {@code ./shaders} in dev mode), the engine
- * with the demo's systems, the time of day and the starting pose.
+ * with the demo's systems, and the time of day. Each command then sets the camera's pose.
  */
 final class Launch implements AutoCloseable {
 
@@ -51,7 +50,6 @@ final class Launch implements AutoCloseable {
         try {
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
             engine.world().setResource(new TimeOfDay(options.hours, 0));
-            engine.world().resource(Camera.class).setPose(DemoScene.DEFAULT_POSE);
             return new Launch(gl, engine, options.dev);
         } catch (RuntimeException e) {
             gl.close();
