@@ -102,7 +102,7 @@ public final class Settings {
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 Object def = defaultOf(group, k);
-                s.append(String.format(Locale.ROOT, "%-28s %-10s %-6s %-22s %s%n", k.key(), format(def),
+                s.append(String.format(Locale.ROOT, "%-28s %-10s %-6s %-22s %s%n", k.key(), def instanceof String text && text.isEmpty() ? "(none)" : format(def),
                         k.doc().unit(), validValues(k), k.doc().doc()));
             }
         }
@@ -123,6 +123,9 @@ public final class Settings {
             return java.util.Arrays.stream(t.getEnumConstants()).map(e -> enumText((Enum<?>) e))
                     .collect(Collectors.joining("|"));
         }
+        if (t == String.class) {
+            return "text";
+        }
         double min = key.doc().min();
         double max = key.doc().max();
         String lo = Double.isInfinite(min) ? "" : format(t == int.class ? (Object) (int) min : min);
@@ -134,6 +137,9 @@ public final class Settings {
         Class<?> t = key.type();
         String valid = validValues(key);
         try {
+            if (t == String.class) {
+                return text;
+            }
             if (t == boolean.class) {
                 return switch (text.toLowerCase(Locale.ROOT)) {
                     case "on", "true", "yes", "1" -> true;
@@ -185,6 +191,9 @@ public final class Settings {
         }
         if (value instanceof Enum<?> e) {
             return enumText(e);
+        }
+        if (value instanceof String text) {
+            return text;
         }
         if (value instanceof Double || value instanceof Float) {
             // Six significant digits, no exponent: 0.0166667, 0.00012, 46.
