@@ -31,6 +31,7 @@ final class Launch implements AutoCloseable {
     /** Settings of the demo's systems with every {@code --set} applied (checked before any window opens). */
     static Settings settings(RenderOptions options) {
         Settings settings = Engine.settingsFor(DemoScene.systems());
+        settings.set("engine.seed", Integer.toString(options.seed));
         options.set.forEach(settings::apply);
         return settings;
     }

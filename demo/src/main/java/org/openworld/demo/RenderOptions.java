@@ -11,8 +11,10 @@ final class RenderOptions {
             description = "Render size in pixels (default: ${DEFAULT-VALUE}).", defaultValue = "1280x720")
     Size size;
 
-    @Option(names = "--seed", paramLabel = "N", description = "World seed (default: ${DEFAULT-VALUE}).", defaultValue = "1")
-    long seed;
+    @Option(names = "--seed", paramLabel = "N",
+            description = "World seed, 0 .. 2147483647; short for --set engine.seed=N (default: ${DEFAULT-VALUE}).",
+            defaultValue = "1")
+    int seed;
 
     @Option(names = "--time", paramLabel = "HH:MM", description = "Time of day, local solar time (default: ${DEFAULT-VALUE}).",
             defaultValue = "10:00", converter = HoursConverter.class)
