@@ -58,7 +58,7 @@ public final class Engine implements AutoCloseable {
     private final Settings settings;
     private final ShaderLibrary shaders;
     private final SystemOrder order;
-    /** The systems drawing in each pass, in resolved order; fixed at start-up. */
+    /** The systems drawing in or preparing each pass, in resolved order; fixed at start-up. */
     private final Map<Pass, List<EngineSystem>> drawingIn = new EnumMap<>(Pass.class);
     private final Set<String> disabled = new HashSet<>();
     private final DrawStats stats = new DrawStats();
@@ -93,7 +93,8 @@ public final class Engine implements AutoCloseable {
         this.settings = settings;
         this.order = SystemOrder.resolve(systems);
         for (Pass pass : Pass.values()) {
-            drawingIn.put(pass, order.systems().stream().filter(s -> s.spec().passes().contains(pass)).toList());
+            drawingIn.put(pass, order.systems().stream()
+                    .filter(s -> s.spec().passes().contains(pass) || s.spec().prepared().contains(pass)).toList());
         }
         world.setResource(settings);
         world.setResource(counters);
@@ -227,7 +228,7 @@ public final class Engine implements AutoCloseable {
         passCameras.set(Pass.OVERLAY, main);
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
-            if (drawing.stream().noneMatch(s -> isEnabled(s.spec().name()))) {
+            if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
                 continue;
             }
             ViewCamera camera = passCameras.get(pass);

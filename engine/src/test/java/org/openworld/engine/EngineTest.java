@@ -193,6 +193,32 @@ class EngineTest {
     }
 
     @Test
+    void aPreparingSystemRunsOnlyInPassesSomeoneDraws() {
+        List<String> prepared = new ArrayList<>();
+        EngineSystem preparer = new EngineSystem() {
+            @Override
+            public SystemSpec spec() {
+                return SystemSpec.named("culling").prepares(Pass.SHADOW, Pass.MAIN);
+            }
+
+            @Override
+            public void render(Pass pass, RenderContext context) {
+                prepared.add(pass.label());
+                log.add(pass.label() + " culling");
+            }
+        };
+        Drawing after = new Drawing(SystemSpec.named("ground").after("culling").draws(Pass.MAIN),
+                log, calls, GlTestSupport::fullScreenTriangle, 0, 1, 0);
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, after, preparer)) {
+            engine.update();
+            log.clear();
+            engine.render();
+        }
+        assertEquals(List.of("main"), prepared, "no system draws in SHADOW, so that pass does not run");
+        assertEquals(List.of("main culling", "main ground"), log.subList(0, 2));
+    }
+
+    @Test
     void eachPassGetsItsCamera() {
         try (Engine engine = engineWithAllPasses()) {
             engine.update();

@@ -99,6 +99,9 @@ public final class SystemOrder {
             s.append(String.format("%2d. %-12s", i++, spec.name()));
             s.append(" draws ").append(spec.passes().isEmpty() ? "-"
                     : spec.passes().stream().map(Pass::label).collect(Collectors.joining(",")));
+            if (!spec.prepared().isEmpty()) {
+                s.append("; prepares ").append(spec.prepared().stream().map(Pass::label).collect(Collectors.joining(",")));
+            }
             s.append("; writes ").append(simpleNames(spec.writes()));
             s.append("; reads ").append(simpleNames(spec.reads()));
             s.append('\n');

@@ -20,6 +20,7 @@ public final class SystemSpec {
     private final Set<Class<?>> writes = new LinkedHashSet<>();
     private final Set<String> after = new LinkedHashSet<>();
     private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
+    private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
 
     private SystemSpec(String name) {
         if (!name.matches("[a-z][a-z0-9-]*")) {
@@ -56,6 +57,15 @@ public final class SystemSpec {
         return this;
     }
 
+    /**
+     * Passes this system works in without drawing, before the systems that draw read its results (culling tests the
+     * pass camera). Such a system never makes a pass run by itself: a pass runs when a system draws in it.
+     */
+    public SystemSpec prepares(Pass... passesPrepared) {
+        prepared.addAll(Set.of(passesPrepared));
+        return this;
+    }
+
     public String name() {
         return name;
     }
@@ -72,7 +82,13 @@ public final class SystemSpec {
         return after;
     }
 
+    /** The passes this system draws in. */
     public Set<Pass> passes() {
         return passes;
+    }
+
+    /** The passes this system prepares without drawing. */
+    public Set<Pass> prepared() {
+        return prepared;
     }
 }
