@@ -1,5 +1,6 @@
 package org.openworld.engine.culling;
 
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -92,6 +93,10 @@ public final class CullingSystem implements EngineSystem {
     @Override
     public void render(Pass pass, RenderContext context) {
         boolean freeze = context.world().resource(Settings.class).get(CullingSettings.class).freeze();
+        if (!freeze) {
+            // every capture ends, also of passes not drawn now, so the next freeze captures afresh
+            Arrays.fill(frozen, false);
+        }
         if (pass == Pass.OVERLAY) {
             // the debug view: the frozen main frustum's edges, over the finished picture
             if (freeze && frozen[Pass.MAIN.ordinal()]) {
@@ -104,7 +109,7 @@ public final class CullingSystem implements EngineSystem {
         }
         // 1. this pass's frustum: the camera's, or the one captured when freezing began
         int p = pass.ordinal();
-        if (!freeze || !frozen[p]) {
+        if (!frozen[p]) {
             frustums[p].set(context.camera());
             frozen[p] = freeze;
             if (freeze && pass == Pass.MAIN) {
