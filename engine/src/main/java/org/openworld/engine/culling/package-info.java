@@ -1,0 +1,27 @@
+/**
+ * Visual surface detection by frustum culling (paper section 2.4): what lies wholly outside a pass camera's view is
+ * not sent to the GPU.
+ *
+ * <p><b>Technique.</b> A {@link org.openworld.engine.culling.Frustum} holds the camera's six planes, extracted from the
+ * view-projection matrix (Gribb and Hartmann), plus the pass's clip plane. A box is rejected only when all eight of
+ * its corners lie outside one plane: with {@code p⁺} the corner furthest along the plane normal {@code n},
+ * {@code n · p⁺ + d < 0}. That is the paper's conservative test: a box outside the frustum may pass (near its
+ * corners), a box inside never fails.
+ *
+ * <p><b>Hierarchy.</b> The {@link org.openworld.engine.culling.CullingSystem} walks each
+ * {@link org.openworld.engine.culling.Cullable}'s {@link org.openworld.engine.culling.BoundsTree} (the terrain's
+ * quadtree, with each node's box spanning its min and max heights) from the root: a node wholly outside or wholly
+ * inside settles its whole subtree, so a pass tests a few hundred boxes of a tree of tens of thousands. It runs in
+ * every pass that draws (main, light, mirror) with that pass's camera, before the drawers, and leaves a
+ * {@link org.openworld.engine.culling.Visibility} for them to read top-down.
+ *
+ * <p><b>Cost.</b> At most 14 dot products per box tested; about 26 µs per pass for a 5461-node tree in 9 copies on the
+ * 2-core reference machine. Per-pass counters {@code culling.<pass>.tested/outside/inside} appear in {@code bench}.
+ *
+ * <p><b>Debug.</b> {@code culling.freeze=on} keeps each pass's frustum where it was; the frozen main frustum is drawn as
+ * a magenta outline, so one can fly out and see what was culled.
+ *
+ * <p><b>Limits.</b> Only the frustum: nothing hidden behind a mountain is culled (no occlusion culling), and a box
+ * near a frustum corner can survive although it is outside.
+ */
+package org.openworld.engine.culling;
