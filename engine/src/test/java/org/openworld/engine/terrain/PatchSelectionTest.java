@@ -128,7 +128,7 @@ class PatchSelectionTest {
         PatchList patches = new PatchList();
         Random random = new Random(5);
         int forced = 0;
-        for (int trial = 0; trial < 60; trial++) {
+        for (int trial = 0; trial < 40; trial++) {
             double base = trial % 2 == 0 ? Math.pow(2, random.nextDouble(-5, 0)) : baseResolution(random);
             selection.select(world.camera(random), world.offsets, base, LodMode.QUADTREE, null, patches);
             forced += selection.forcedSplits();
@@ -169,7 +169,7 @@ class PatchSelectionTest {
         Random random = new Random(seed);
         int size = world.tree.size();
         int n = world.tree.cells();
-        for (int trial = 0; trial < 8; trial++) {
+        for (int trial = 0; trial < 5; trial++) {
             double base = baseResolution(random);
             selection.select(world.camera(random), world.offsets, base, mode, null, patches);
             Map<Long, Integer> levelAt = new HashMap<>();
