@@ -1,0 +1,81 @@
+package org.openworld.engine.terrain;
+
+import org.joml.Vector3fc;
+import org.openworld.engine.culling.Visibility;
+
+/**
+ * Picks the terrain patches to draw each frame with the {@link LodRule} of the chosen {@link LodMode}: the
+ * {@link QuadtreeLod quadtree cut} or the paper's {@link FlatGridLod flat grid}. GL-free; the renderer reads the
+ * result from a {@link PatchList} and draws each patch with the shared {@link PatchPatterns}.
+ */
+public final class PatchSelection {
+
+    private final TerrainQuadtree tree;
+    private final QuadtreeLod quadtree;
+    private final FlatGridLod flatGrid;
+    private LodRule last;
+    private int visible;
+
+    public PatchSelection(TerrainQuadtree tree) {
+        this.tree = tree;
+        this.quadtree = new QuadtreeLod(tree);
+        this.flatGrid = new FlatGridLod(tree);
+        this.last = quadtree;
+    }
+
+    /**
+     * Chooses the cut for every copy, computes neighbour and corner levels over the whole cut (visible or not,
+     * across copies: a point outside all copies has no neighbour, so nothing to stitch there), and appends to
+     * {@code out}, which is cleared first, the patches that {@code visibility} does not place outside.
+     *
+     * @param camera         eye position, world metres
+     * @param offsets        x, z pairs, metres: copy c is drawn at (offsets[2c], offsets[2c + 1]); copies lie on a
+     *                       lattice of the tile extent, e.g. the 3 × 3 around the camera, or one copy for a
+     *                       non-periodic map
+     * @param baseResolution B, metres
+     * @param visibility     the culling result for the quadtree's {@link TerrainQuadtree#bounds()} with these
+     *                       copies, read top-down; null draws everything
+     */
+    public void select(Vector3fc camera, float[] offsets, double baseResolution, LodMode mode, Visibility visibility,
+            PatchList out) {
+        if (!(baseResolution > 0)) {
+            throw new IllegalArgumentException("base resolution must be positive, got " + baseResolution);
+        }
+        if (visibility != null
+                && (visibility.copies() != offsets.length / 2 || visibility.nodeCount() != tree.nodeCount())) {
+            throw new IllegalArgumentException("visibility is for " + visibility.copies() + " copies of "
+                    + visibility.nodeCount() + " nodes, not " + offsets.length / 2 + " of " + tree.nodeCount());
+        }
+        last = switch (mode) {
+            case QUADTREE -> quadtree;
+            case FLAT_GRID -> flatGrid;
+        };
+        last.select(camera, offsets, baseResolution, visibility, out);
+        visible = out.size();
+    }
+
+    /** Patches in the last cut, over all copies, visible or not. */
+    public int cutSize() {
+        return last.cutSize();
+    }
+
+    /** Patches the last selection output. */
+    public int visiblePatches() {
+        return visible;
+    }
+
+    /** Patches of the last cut left out as outside the frustum. */
+    public int culledPatches() {
+        return last.culledPatches();
+    }
+
+    /** Quadtree nodes the last selection looked at. */
+    public int visitedNodes() {
+        return last.visitedNodes();
+    }
+
+    /** Nodes the last selection split only to keep neighbour levels within log2 N. */
+    public int forcedSplits() {
+        return last.forcedSplits();
+    }
+}

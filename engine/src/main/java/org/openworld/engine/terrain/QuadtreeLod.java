@@ -1,0 +1,257 @@
+package org.openworld.engine.terrain;
+
+import java.util.Arrays;
+
+import org.joml.Vector3fc;
+import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.culling.Visibility.Containment;
+
+/**
+ * The paper's rule L_B(D) = ⌊log2(D / B)⌋ ({@link LodRule#level}) applied to a {@link TerrainQuadtree}: starting at
+ * the root, a node of level L is split while L > L_B(D), i.e. while D < B · 2^L; the nodes not split form the cut,
+ * a partition of the tile into patches whose size grows with distance. Over a world of side S the cut holds a
+ * constant number of patches per distance octave, so it grows like log S: equation 1 with R(D) ∝ 1/D².
+ *
+ * <p>D is the distance from the camera to the nearest point of the node's 3D bounding box, not to its centroid as in
+ * the flat grid. A big node's centroid can be far from the camera while the camera stands on the node itself: by
+ * centroid distance the root of a large world would be drawn at its coarsest level under the camera's feet. The box
+ * distance is zero for a node that contains the camera, so every node around the camera is split down to full
+ * resolution, and a node's level is never coarser than the rule asks for at any of its points.
+ *
+ * <p>Stitching. A side can zip to a neighbour at most log2 N levels coarser ({@link PatchPatterns}). The rule keeps
+ * neighbour differences small when B is large against a leaf patch, but with a tiny B a coarse node can border a much
+ * finer one; the cut is then repaired by splitting the coarse node ({@link #forcedSplits()}) until no side sees a
+ * difference above log2 N. Then each patch looks up its neighbour across each side and the one across each corner:
+ * a side samples the coarser level of the two patches sharing it, a corner the coarsest of the up to four patches
+ * touching it, so both patches of a shared vertex fetch the very same height.
+ *
+ * <p>Cost. The cut is found top-down, touching only the nodes above it. Selected nodes are marked with a per-frame
+ * stamp; a neighbour lookup walks from the root towards the same-level node across the side (the node above a
+ * given one at any depth is its Morton code shifted, {@link TerrainQuadtree#node}) and stops at the first stamped
+ * node: a coarser or equal neighbour, or none above that level, meaning the neighbours there are finer. Nothing is
+ * allocated once the arrays have grown to the cut's size.
+ */
+final class QuadtreeLod implements LodRule {
+
+    private static final Side[] SIDES = Side.values();
+    private static final Corner[] CORNERS = Corner.values();
+
+    private final TerrainQuadtree tree;
+    private final float[] boxes;
+    private final int nodeCount;
+    private final CopyLattice lattice = new CopyLattice();
+
+    /** Per copy × node: the frame number when the node was in the cut. */
+    private int[] stamp = new int[0];
+    /** Per copy × node: the node's index in the cut arrays, valid while stamped. */
+    private int[] slot = new int[0];
+    private int frame;
+
+    private int cutLength;
+    private int[] cutNode = new int[0];
+    private int[] cutCopy = new int[0];
+    private boolean[] cutAlive = new boolean[0];
+    /** The node's frustum answer, or null when drawing without culling. */
+    private Containment[] cutContainment = new Containment[0];
+
+    private final int[] sideLevel = new int[4];
+    private Vector3fc camera;
+    private double baseResolution;
+    private Visibility visibility;
+    /** Copy of the node the last {@link #selectedAt} found. */
+    private int foundCopy;
+
+    private int liveCut;
+    private int culled;
+    private int visited;
+    private int forcedSplits;
+
+    QuadtreeLod(TerrainQuadtree tree) {
+        this.tree = tree;
+        this.boxes = tree.bounds().boxes();
+        this.nodeCount = tree.nodeCount();
+    }
+
+    @Override
+    public void select(Vector3fc camera, float[] offsets, double baseResolution, Visibility visibility,
+            PatchList out) {
+        HeightMap base = tree.pyramid().base();
+        lattice.update(offsets, base.extent());
+        int copies = lattice.copies();
+        if (stamp.length < copies * nodeCount) {
+            stamp = new int[copies * nodeCount];
+            slot = new int[copies * nodeCount];
+        }
+        if (++frame == 0) {
+            Arrays.fill(stamp, 0);
+            frame = 1;
+        }
+        this.camera = camera;
+        this.baseResolution = baseResolution;
+        this.visibility = visibility;
+        cutLength = 0;
+        liveCut = 0;
+        culled = 0;
+        visited = 0;
+        forcedSplits = 0;
+
+        // 1. The cut of every copy, by the paper's rule on the box distance.
+        for (int copy = 0; copy < copies; copy++) {
+            descend(copy, 0, visibility == null ? null : visibility.root(copy));
+        }
+        // 2. Split coarse nodes that border nodes more than log2 N levels finer (nodes appended here are checked
+        //    in turn, so one pass over the growing list settles the whole cut).
+        for (int i = 0; i < cutLength; i++) {
+            if (cutAlive[i]) {
+                limitNeighbourLevels(i);
+            }
+        }
+        // 3. Emit the visible patches with their side and corner levels.
+        out.clear();
+        for (int i = 0; i < cutLength; i++) {
+            if (!cutAlive[i]) {
+                continue;
+            }
+            liveCut++;
+            if (cutContainment[i] == Containment.OUTSIDE) {
+                culled++;
+            } else {
+                emit(cutNode[i], cutCopy[i], out);
+            }
+        }
+        this.camera = null;
+        this.visibility = null;
+    }
+
+    @Override
+    public int cutSize() {
+        return liveCut;
+    }
+
+    @Override
+    public int culledPatches() {
+        return culled;
+    }
+
+    @Override
+    public int visitedNodes() {
+        return visited;
+    }
+
+    @Override
+    public int forcedSplits() {
+        return forcedSplits;
+    }
+
+    private void descend(int copy, int node, Containment containment) {
+        visited++;
+        int level = tree.level(node);
+        if (level > LodRule.level(boxDistance(copy, node), baseResolution)) {
+            int first = tree.bounds().firstChild(node);
+            for (int child = first; child < first + 4; child++) {
+                descend(copy, child, containment == null ? null : visibility.of(copy, child, containment));
+            }
+        } else {
+            addToCut(copy, node, containment);
+        }
+    }
+
+    /** Distance from the camera to the nearest point of the node's box in a copy, metres. */
+    private double boxDistance(int copy, int node) {
+        float ox = lattice.offsetX(copy);
+        float oz = lattice.offsetZ(copy);
+        int b = 6 * node;
+        double dx = Math.max(0, Math.max(boxes[b] + ox - camera.x(), camera.x() - boxes[b + 3] - ox));
+        double dy = Math.max(0, Math.max(boxes[b + 1] - camera.y(), camera.y() - boxes[b + 4]));
+        double dz = Math.max(0, Math.max(boxes[b + 2] + oz - camera.z(), camera.z() - boxes[b + 5] - oz));
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    private void addToCut(int copy, int node, Containment containment) {
+        if (cutLength == cutNode.length) {
+            int capacity = Math.max(256, 2 * cutLength);
+            cutNode = Arrays.copyOf(cutNode, capacity);
+            cutCopy = Arrays.copyOf(cutCopy, capacity);
+            cutAlive = Arrays.copyOf(cutAlive, capacity);
+            cutContainment = Arrays.copyOf(cutContainment, capacity);
+        }
+        int i = cutLength++;
+        cutNode[i] = node;
+        cutCopy[i] = copy;
+        cutAlive[i] = true;
+        cutContainment[i] = containment;
+        stamp[copy * nodeCount + node] = frame;
+        slot[copy * nodeCount + node] = i;
+    }
+
+    private void limitNeighbourLevels(int i) {
+        int node = cutNode[i];
+        int copy = cutCopy[i];
+        int level = tree.level(node);
+        int column = tree.column(node);
+        int row = tree.row(node);
+        for (Side side : SIDES) {
+            int neighbour = selectedAt(copy, level, column + side.dx(), row + side.dz());
+            while (neighbour >= 0 && tree.level(neighbour) > level + tree.cellsLog2()) {
+                split(foundCopy, neighbour);
+                neighbour = selectedAt(copy, level, column + side.dx(), row + side.dz());
+            }
+        }
+    }
+
+    private void split(int copy, int node) {
+        int i = slot[copy * nodeCount + node];
+        cutAlive[i] = false;
+        stamp[copy * nodeCount + node] = 0;
+        forcedSplits++;
+        Containment containment = cutContainment[i];
+        int first = tree.bounds().firstChild(node);
+        for (int child = first; child < first + 4; child++) {
+            addToCut(copy, child, containment == null ? null : visibility.of(copy, child, containment));
+        }
+    }
+
+    /**
+     * The cut node covering the node of a level at (column, row) of that level's grid, which may lie one tile
+     * outside (then it is looked up in the adjacent copy); sets {@link #foundCopy}.
+     *
+     * @return the node, or −1 when no copy lies there or the cut is finer than that level there
+     */
+    private int selectedAt(int copy, int level, int column, int row) {
+        int perSide = tree.nodesPerSide(level);
+        int dx = column < 0 ? -1 : column >= perSide ? 1 : 0;
+        int dz = row < 0 ? -1 : row >= perSide ? 1 : 0;
+        int c = dx == 0 && dz == 0 ? copy : lattice.neighbour(copy, dx, dz);
+        if (c < 0) {
+            return -1;
+        }
+        int morton = TerrainQuadtree.interleave(column - dx * perSide, row - dz * perSide);
+        int depth = tree.rootLevel() - level;
+        for (int d = 0; d <= depth; d++) {
+            int node = TerrainQuadtree.depthOffset(d) + (morton >>> (2 * (depth - d)));
+            if (stamp[c * nodeCount + node] == frame) {
+                foundCopy = c;
+                return node;
+            }
+        }
+        return -1;
+    }
+
+    private void emit(int node, int copy, PatchList out) {
+        int level = tree.level(node);
+        int column = tree.column(node);
+        int row = tree.row(node);
+        int i = out.add(node, copy, tree.sampleX(node), tree.sampleZ(node), 1 << level, level, 0);
+        for (Side side : SIDES) {
+            int neighbour = selectedAt(copy, level, column + side.dx(), row + side.dz());
+            int shared = neighbour < 0 ? level : Math.max(level, tree.level(neighbour));
+            sideLevel[side.ordinal()] = shared;
+            out.setSide(i, side, shared, shared - level);
+        }
+        for (Corner corner : CORNERS) {
+            int diagonal = selectedAt(copy, level, column + corner.dx(), row + corner.dz());
+            int coarsest = Math.max(sideLevel[corner.northSouth().ordinal()], sideLevel[corner.eastWest().ordinal()]);
+            out.setCorner(i, corner, diagonal < 0 ? coarsest : Math.max(coarsest, tree.level(diagonal)));
+        }
+    }
+}
