@@ -51,9 +51,9 @@ public record TerrainSettings(
             4,      // m: two samples at 2 m spacing, the shortest wavelength the grid can hold
             2048,   // m: half of the default 4 km tile, so a tile holds a few ranges, not one hump
             "",     // generate
-            0.55,   // snow starts a little above the middle height...
-            0.85,   // ...and covers the top of the highest mountains completely
-            2);     // px: removes single flakes and pinholes but keeps the ragged snow line
+            0.40,   // snow may start a little below the middle height...
+            0.70,   // ...and is certain on the top 30 % of the relief
+            2);     // px: a 5×5 square; see SnowMap for why the snow line then sits near snowFull
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);
