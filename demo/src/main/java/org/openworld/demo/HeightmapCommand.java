@@ -71,7 +71,7 @@ final class HeightmapCommand implements Callable<Integer> {
     int seed;
 
     @Option(names = "--set", paramLabel = "KEY=VALUE",
-            description = "Change a setting (engine.* and terrain.* keys); repeatable. 'openworld settings' lists them.")
+            description = "Change a setting, engine.* or terrain.* keys (e.g. terrain.size=4096); repeatable.")
     List<String> set = new ArrayList<>();
 
     @Option(names = "--repeat", paramLabel = "N",
@@ -177,9 +177,10 @@ final class HeightmapCommand implements Callable<Integer> {
     }
 
     /**
-     * The heights as a 16-bit grayscale PNG, north (z = 0) at the top, lowest sample 0 and highest 65535. stb_image_write
-     * writes 8 bits per channel only, and 256 levels would terrace the relief, so this one file goes through
-     * {@code javax.imageio}, whose PNG writer takes a {@link BufferedImage#TYPE_USHORT_GRAY} image as 16-bit gray.
+     * The heights as a 16-bit grayscale PNG, north (z = 0) at the top, lowest sample 0 and highest 65535.
+     * stb_image_write writes 8 bits per channel only, and 256 levels would terrace the relief, so this one file goes
+     * through {@code javax.imageio}, whose PNG writer takes a {@link BufferedImage#TYPE_USHORT_GRAY} image as 16-bit
+     * gray.
      */
     private static void writeHeight(HeightMap map, Path file) throws IOException {
         int n = map.size();
@@ -213,7 +214,7 @@ final class HeightmapCommand implements Callable<Integer> {
     private static XYChart chart(PowerSpectrum spectrum, PowerSpectrum.Fit fit, TerrainSettings terrain) {
         XYChart chart = new XYChartBuilder().width(CHART_WIDTH_PX).height(CHART_HEIGHT_PX)
                 .title("Radially averaged power spectrum of the height map")
-                .xAxisTitle("frequency (cycles/m)").yAxisTitle("power (m² · samples², unscaled)").build();
+                .xAxisTitle("frequency (cycles/m)").yAxisTitle("mean |DFT|² per ring (m², unnormalised)").build();
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setLegendPosition(LegendPosition.InsideSW);
@@ -225,9 +226,13 @@ final class HeightmapCommand implements Callable<Integer> {
         rings.setXYSeriesRenderStyle(XYSeriesRenderStyle.Scatter).setMarker(SeriesMarkers.CIRCLE);
         rings.setMarkerColor(new Color(0x0072B2));
 
-        double lo = terrain.imports() ? bins.get(0).frequency() : Math.max(bins.get(0).frequency(), 1 / terrain.maxWavelength());
-        double hi = terrain.imports() ? bins.get(bins.size() - 1).frequency()
-                : Math.min(bins.get(bins.size() - 1).frequency(), 1 / terrain.minWavelength());
+        // the lines span the rings, or for a generated map the band between its cut-offs
+        double lo = bins.get(0).frequency();
+        double hi = bins.get(bins.size() - 1).frequency();
+        if (!terrain.imports()) {
+            lo = Math.max(lo, 1 / terrain.maxWavelength());
+            hi = Math.min(hi, 1 / terrain.minWavelength());
+        }
         line(chart, String.format(Locale.ROOT, "fit: slope %.2f", fit.slope()), lo, hi, fit, new Color(0xD55E00),
                 new BasicStroke(2.5f));
         if (!terrain.imports()) {

@@ -16,7 +16,10 @@ import org.jtransforms.fft.FloatFFT_2D;
  */
 public final class PowerSpectrum {
 
-    /** One ring: its frequency in cycles per metre and the mean power of its coefficients (m² · samples², unscaled). */
+    /**
+     * One ring: its frequency in cycles per metre and the mean |F|² of its coefficients, F the unnormalised DFT of
+     * the heights in metres (so m², scaled by the sample count; only ratios and slopes matter).
+     */
     public record Bin(double frequency, double power) {
     }
 
@@ -92,7 +95,8 @@ public final class PowerSpectrum {
         double sxy = 0;
         int m = 0;
         for (Bin b : bins) {
-            if (b.frequency() - halfRing >= lowFrequency && b.frequency() + halfRing <= highFrequency && b.power() > 0) {
+            boolean inside = b.frequency() - halfRing >= lowFrequency && b.frequency() + halfRing <= highFrequency;
+            if (inside && b.power() > 0) {
                 double x = Math.log10(b.frequency());
                 double y = Math.log10(b.power());
                 sx += x;

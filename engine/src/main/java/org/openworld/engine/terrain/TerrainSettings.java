@@ -12,7 +12,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param relief         height from the lowest to the highest sample after normalisation
  * @param seaFraction    fraction of the relief below sea level (height 0), so the lowest valleys hold water
  * @param beta           spectral exponent: the amplitude of frequency ω is proportional to 1/ω^β. β = 1 is the
- *                       paper's 1/ω, spiky; β = 2 gives rolling mountains (see {@link SpectralSynthesis})
+ *                       paper's 1/ω, spiky; the default 2.2 gives massifs and valleys (why: {@link SpectralSynthesis})
  * @param minWavelength  high-frequency cut-off: shorter wavelengths get amplitude 0
  * @param maxWavelength  low-frequency cut-off: longer wavelengths get amplitude 0, so one frequency ring does not
  *                       dominate and the tile holds several mountains instead of one
@@ -77,8 +77,8 @@ public record TerrainSettings(
                     + size * spacing + " m)");
         }
         if (!(snowBase < snowFull)) {
-            throw new IllegalArgumentException("snow must start (" + snowBase + ") below the height where it is certain ("
-                    + snowFull + ")");
+            throw new IllegalArgumentException("snow must start (" + snowBase
+                    + ") below the height where it is certain (" + snowFull + ")");
         }
         if (importFile == null) {
             throw new IllegalArgumentException("the import file must be a path or empty, not null");

@@ -121,14 +121,16 @@ class HeightImportTest {
         Path file = dir.resolve("eight.png");
         ImageIO.write(image, "png", file.toFile());
         String message = failure(file);
-        assertTrue(message.contains(file.toString()) && message.contains("8-bit") && message.contains("16-bit"), message);
+        assertTrue(message.contains(file.toString()) && message.contains("8-bit") && message.contains("16-bit"),
+                message);
     }
 
     @Test
     void notSquare() throws IOException {
         Path file = png16("wide.png", 512, 256);
         String message = failure(file);
-        assertTrue(message.contains(file.toString()) && message.contains("512×256") && message.contains("square"), message);
+        assertTrue(message.contains(file.toString()) && message.contains("512×256") && message.contains("square"),
+                message);
     }
 
     @Test
@@ -152,7 +154,8 @@ class HeightImportTest {
         Path file = dir.resolve("heights.tif");
         Files.write(file, new byte[16]);
         String message = failure(file);
-        assertTrue(message.contains(file.toString()) && message.contains("'.tif'") && message.contains(".png"), message);
+        assertTrue(message.contains(file.toString()) && message.contains("'.tif'") && message.contains(".png"),
+                message);
     }
 
     @Test

@@ -74,7 +74,8 @@ class SnowMapTest {
         assertTrue(isolated(SnowMap.generate(p, speckled, 4)) > 100, "random snow has isolated samples");
         SnowMap clean = SnowMap.generate(p, cleaned, 4);
         assertEquals(0, isolated(clean), "no sample differs from all four neighbours after opening and closing");
-        assertTrue(clean.fraction() > 0.1 && clean.fraction() < 0.9, "the snow line is still there: " + clean.fraction());
+        assertTrue(clean.fraction() > 0.1 && clean.fraction() < 0.9,
+                "the snow line is still there: " + clean.fraction());
     }
 
     /** Samples whose four neighbours all differ from them: single flakes and single pinholes. */
@@ -103,7 +104,8 @@ class SnowMapTest {
 
     @Test
     void largeMapsGetASnowMapOfAtMostMaxSize() {
-        HeightMap big = new HeightMap(2 * SnowMap.MAX_SIZE, 0.5, new float[4 * SnowMap.MAX_SIZE * SnowMap.MAX_SIZE], true);
+        int n = 2 * SnowMap.MAX_SIZE;
+        HeightMap big = new HeightMap(n, 0.5, new float[n * n], true);
         TerrainSettings s = TestTerrain.settings("terrain.snow-morphology=0");
         SnowMap snow = SnowMap.generate(HeightPyramid.build(big), s, 1);
         assertEquals(SnowMap.MAX_SIZE, snow.size());

@@ -109,7 +109,9 @@ class SpectralSynthesisTest {
     private static double boundary(HeightMap map, int b, boolean alongX) {
         double sum = 0;
         for (int i = 0; i < map.size(); i++) {
-            sum += alongX ? square(map.sample(b + 1, i) - map.sample(b, i)) : square(map.sample(i, b + 1) - map.sample(i, b));
+            sum += alongX
+                    ? square(map.sample(b + 1, i) - map.sample(b, i))
+                    : square(map.sample(i, b + 1) - map.sample(i, b));
         }
         return sum / map.size();
     }
