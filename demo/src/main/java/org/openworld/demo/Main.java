@@ -7,6 +7,7 @@ import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.gl.GlUnavailableException;
 import org.openworld.engine.gl.ShaderException;
 import org.openworld.engine.settings.SettingsException;
+import org.openworld.engine.terrain.HeightImportException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -18,8 +19,8 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "openworld", mixinStandardHelpOptions = true, version = "OpenWorld 0.1",
         description = "Renders large outdoor worlds in real time. Without a command: 'run'.",
-        subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, SettingsCommand.class,
-            InfoCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, HeightmapCommand.class,
+            SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
 public final class Main {
 
     static final int EXIT_USER_ERROR = 2;
@@ -50,7 +51,8 @@ public final class Main {
             err.println(e.getMessage());
             return EXIT_USER_ERROR;
         }
-        if (e instanceof UserError || e instanceof SettingsException || e instanceof SummaryFileException) {
+        if (e instanceof UserError || e instanceof SettingsException || e instanceof SummaryFileException
+                || e instanceof HeightImportException) {
             err.println("openworld: " + e.getMessage());
             return EXIT_USER_ERROR;
         }

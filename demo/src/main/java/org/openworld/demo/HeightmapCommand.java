@@ -1,0 +1,258 @@
+package org.openworld.demo;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferUShort;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.nio.ByteBuffer;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import javax.imageio.ImageIO;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.XYSeries.XYSeriesRenderStyle;
+import org.knowm.xchart.style.Styler.LegendPosition;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+import org.lwjgl.stb.STBImageWrite;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.terrain.HeightMap;
+import org.openworld.engine.terrain.PowerSpectrum;
+import org.openworld.engine.terrain.SnowMap;
+import org.openworld.engine.terrain.StageTimes;
+import org.openworld.engine.terrain.TerrainData;
+import org.openworld.engine.terrain.TerrainSettings;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code openworld heightmap}: makes the terrain data without OpenGL, as the terrain system would, and writes it as
+ * pictures: {@code height.png} (16-bit grayscale, lowest sample black, highest white; it can be imported again with
+ * {@code --set terrain.import-file=...}), {@code snow.png} (white where snow lies) and {@code spectrum.png} (the
+ * radially averaged power spectrum on log-log axes with its fitted line). With {@code --repeat N} it is also the
+ * generation benchmark: the median time of each stage over N runs and the peak heap.
+ */
+@Command(name = "heightmap", mixinStandardHelpOptions = true,
+        description = "Generate (or import) the height map and snow map without OpenGL; write height.png (16-bit), "
+                + "snow.png and spectrum.png, and time each stage.")
+final class HeightmapCommand implements Callable<Integer> {
+
+    static final String HEIGHT_PNG = "height.png";
+    static final String SNOW_PNG = "snow.png";
+    static final String SPECTRUM_PNG = "spectrum.png";
+
+    /** Size of the spectrum chart, pixels. */
+    private static final int CHART_WIDTH_PX = 900;
+    private static final int CHART_HEIGHT_PX = 600;
+    /** Largest 16-bit sample value: the highest height maps to it. */
+    private static final int MAX_16_BIT = 65535;
+    private static final double BYTES_PER_MIB = 1024.0 * 1024.0;
+
+    @Option(names = "--out", required = true, paramLabel = "DIR", description = "Output folder, created if missing.")
+    Path out;
+
+    @Option(names = "--seed", paramLabel = "N",
+            description = "World seed, 0 .. 2147483647; short for --set engine.seed=N (default: ${DEFAULT-VALUE}).",
+            defaultValue = "1")
+    int seed;
+
+    @Option(names = "--set", paramLabel = "KEY=VALUE",
+            description = "Change a setting, engine.* or terrain.* keys (e.g. terrain.size=4096); repeatable.")
+    List<String> set = new ArrayList<>();
+
+    @Option(names = "--repeat", paramLabel = "N",
+            description = "Make the data N times and print each stage's median time and the peak heap "
+                    + "(default: ${DEFAULT-VALUE}).", defaultValue = "1")
+    int repeat;
+
+    @Override
+    public Integer call() throws IOException {
+        // The terrain group and the world seed, read and checked the way Launch.settings reads every group.
+        Settings settings = new Settings(List.of(EngineSettings.GROUP, TerrainSettings.SETTINGS));
+        settings.set("engine.seed", Integer.toString(seed));
+        set.forEach(settings::apply);
+        TerrainSettings terrain = settings.get(TerrainSettings.class);
+        int worldSeed = settings.get(EngineSettings.class).seed();
+        if (repeat < 1) {
+            throw new UserError("--repeat must be at least 1, got " + repeat);
+        }
+        prepareFolder();
+
+        System.out.println(terrain.imports()
+                ? String.format(Locale.ROOT, "heightmap: importing %s, %s m between samples", terrain.importFile(),
+                        terrain.spacing())
+                : String.format(Locale.ROOT, "heightmap: %d² samples %s m apart (%s m across), beta %s, seed %d",
+                        terrain.size(), terrain.spacing(), terrain.extent(), terrain.beta(), worldSeed));
+
+        // 1. make the data, N times for the benchmark
+        Map<String, double[]> stageMs = new LinkedHashMap<>();
+        double[] totalMs = new double[repeat];
+        long peakHeap = 0;
+        TerrainData data = null;
+        for (int run = 0; run < repeat; run++) {
+            String prefix = repeat > 1 ? String.format(Locale.ROOT, "run %d/%d: ", run + 1, repeat) : "";
+            data = null; // let the collector take the previous run's maps before measuring this one
+            List<MemoryPoolMXBean> heapPools = resetHeapPeaks();
+            StageTimes times = new StageTimes(stage -> System.out.printf(Locale.ROOT, "%s%-10s %8.0f ms%n", prefix,
+                    stage.name(), stage.ms()));
+            data = TerrainData.create(terrain, worldSeed, times);
+            peakHeap = Math.max(peakHeap, heapPools.stream().mapToLong(p -> p.getPeakUsage().getUsed()).sum());
+            for (StageTimes.Stage stage : times.stages()) {
+                stageMs.computeIfAbsent(stage.name(), name -> new double[repeat])[run] = stage.ms();
+            }
+            totalMs[run] = times.totalMs();
+        }
+        if (repeat > 1) {
+            System.out.printf(Locale.ROOT, "median of %d runs:%n", repeat);
+            stageMs.forEach((name, ms) -> System.out.printf(Locale.ROOT, "  %-10s %8.0f ms%n", name, median(ms)));
+            System.out.printf(Locale.ROOT, "  %-10s %8.0f ms%n", "total", median(totalMs));
+        }
+        System.out.printf(Locale.ROOT, "peak heap: %.0f MiB (sum of the heap pools' peaks%s)%n",
+                peakHeap / BYTES_PER_MIB, repeat > 1 ? ", largest run" : "");
+
+        // 2. the spectrum and its slope
+        HeightMap base = data.pyramid().base();
+        PowerSpectrum spectrum = PowerSpectrum.of(base);
+        PowerSpectrum.Fit fit = terrain.imports()
+                ? spectrum.fit(0, Double.POSITIVE_INFINITY)
+                : spectrum.fit(terrain);
+        System.out.println(terrain.imports()
+                ? String.format(Locale.ROOT, "spectrum slope: %.2f (power ~ 1/f^%.2f)", fit.slope(), -fit.slope())
+                : String.format(Locale.ROOT, "spectrum slope: %.2f (expected -2 beta = %.2f)", fit.slope(),
+                        -2 * terrain.beta()));
+
+        // 3. the pictures
+        writeHeight(base, out.resolve(HEIGHT_PNG));
+        writeSnow(data.snow(), out.resolve(SNOW_PNG));
+        ImageIO.write(BitmapEncoder.getBufferedImage(chart(spectrum, fit, terrain)), "png",
+                out.resolve(SPECTRUM_PNG).toFile());
+        System.out.printf(Locale.ROOT, "snow covers %.1f %% of the map%n", 100 * data.snow().fraction());
+        System.out.println("wrote " + out.resolve(HEIGHT_PNG) + ", " + out.resolve(SNOW_PNG) + ", "
+                + out.resolve(SPECTRUM_PNG));
+        return 0;
+    }
+
+    private void prepareFolder() {
+        if (Files.exists(out) && !Files.isDirectory(out)) {
+            throw new UserError("--out " + out + " is a file; give a folder (it is created if missing)");
+        }
+        try {
+            Files.createDirectories(out);
+        } catch (IOException e) {
+            throw new UserError("--out " + out + ": cannot create the folder (" + e.getMessage() + ")");
+        }
+    }
+
+    /**
+     * Collects garbage, then resets and returns the heap pools, whose peaks then measure one run. The sum of the
+     * pools' peaks is an upper bound of the true peak: the pools need not peak at the same moment.
+     */
+    private static List<MemoryPoolMXBean> resetHeapPeaks() {
+        System.gc();
+        List<MemoryPoolMXBean> pools = ManagementFactory.getMemoryPoolMXBeans().stream()
+                .filter(p -> p.getType() == MemoryType.HEAP).toList();
+        pools.forEach(MemoryPoolMXBean::resetPeakUsage);
+        return pools;
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int m = sorted.length / 2;
+        return sorted.length % 2 == 1 ? sorted[m] : (sorted[m - 1] + sorted[m]) / 2;
+    }
+
+    /**
+     * The heights as a 16-bit grayscale PNG, north (z = 0) at the top, lowest sample 0 and highest 65535.
+     * stb_image_write writes 8 bits per channel only, and 256 levels would terrace the relief, so this one file goes
+     * through {@code javax.imageio}, whose PNG writer takes a {@link BufferedImage#TYPE_USHORT_GRAY} image as 16-bit
+     * gray.
+     */
+    private static void writeHeight(HeightMap map, Path file) throws IOException {
+        int n = map.size();
+        BufferedImage image = new BufferedImage(n, n, BufferedImage.TYPE_USHORT_GRAY);
+        short[] pixels = ((DataBufferUShort) image.getRaster().getDataBuffer()).getData();
+        float[] h = map.heights();
+        double min = map.min();
+        double scale = MAX_16_BIT / Math.max(map.max() - min, Double.MIN_NORMAL);
+        for (int i = 0; i < h.length; i++) {
+            pixels[i] = (short) Math.round((h[i] - min) * scale);
+        }
+        if (!ImageIO.write(image, "png", file.toFile())) {
+            throw new IOException(file + ": no PNG writer for 16-bit gray");
+        }
+    }
+
+    /** The snow map as an 8-bit grayscale PNG through stb_image_write: white snow, black bare ground. */
+    private static void writeSnow(SnowMap snow, Path file) throws IOException {
+        byte[] coverage = snow.coverage();
+        ByteBuffer pixels = MemoryUtil.memAlloc(coverage.length).put(coverage).flip();
+        try {
+            if (!STBImageWrite.stbi_write_png(file.toString(), snow.size(), snow.size(), 1, pixels, snow.size())) {
+                throw new IOException(file + ": could not write PNG");
+            }
+        } finally {
+            MemoryUtil.memFree(pixels);
+        }
+    }
+
+    /** Log-log chart: the rings' power, the fitted line and, for a generated map, the line of slope −2β. */
+    private static XYChart chart(PowerSpectrum spectrum, PowerSpectrum.Fit fit, TerrainSettings terrain) {
+        XYChart chart = new XYChartBuilder().width(CHART_WIDTH_PX).height(CHART_HEIGHT_PX)
+                .title("Radially averaged power spectrum of the height map")
+                .xAxisTitle("frequency (cycles/m)").yAxisTitle("mean |DFT|² per ring (m², unnormalised)").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(LegendPosition.InsideSW);
+
+        List<PowerSpectrum.Bin> bins = spectrum.bins().stream().filter(b -> b.power() > 0).toList();
+        XYSeries rings = chart.addSeries("power per ring",
+                bins.stream().mapToDouble(PowerSpectrum.Bin::frequency).toArray(),
+                bins.stream().mapToDouble(PowerSpectrum.Bin::power).toArray());
+        rings.setXYSeriesRenderStyle(XYSeriesRenderStyle.Scatter).setMarker(SeriesMarkers.CIRCLE);
+        rings.setMarkerColor(new Color(0x0072B2));
+
+        // the lines span the rings, or for a generated map the band between its cut-offs
+        double lo = bins.get(0).frequency();
+        double hi = bins.get(bins.size() - 1).frequency();
+        if (!terrain.imports()) {
+            lo = Math.max(lo, 1 / terrain.maxWavelength());
+            hi = Math.min(hi, 1 / terrain.minWavelength());
+        }
+        line(chart, String.format(Locale.ROOT, "fit: slope %.2f", fit.slope()), lo, hi, fit, new Color(0xD55E00),
+                new BasicStroke(2.5f));
+        if (!terrain.imports()) {
+            // the expected slope through the fit's value at the band's geometric middle
+            double mid = Math.sqrt(lo * hi);
+            double slope = -2 * terrain.beta();
+            PowerSpectrum.Fit expected = new PowerSpectrum.Fit(slope,
+                    Math.log10(fit.power(mid)) - slope * Math.log10(mid));
+            line(chart, String.format(Locale.ROOT, "expected: slope -2 beta = %.2f", slope), lo, hi, expected,
+                    new Color(0x009E73), new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+                            new float[] {8f, 5f}, 0));
+        }
+        return chart;
+    }
+
+    private static void line(XYChart chart, String name, double lo, double hi, PowerSpectrum.Fit fit, Color colour,
+            BasicStroke stroke) {
+        XYSeries series = chart.addSeries(name, new double[] {lo, hi}, new double[] {fit.power(lo), fit.power(hi)});
+        series.setXYSeriesRenderStyle(XYSeriesRenderStyle.Line).setMarker(SeriesMarkers.NONE);
+        series.setLineColor(colour);
+        series.setLineStyle(stroke);
+    }
+}

@@ -1,0 +1,127 @@
+package org.openworld.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.gl.Image;
+
+/** {@code openworld heightmap} as a user runs it: files, printed stages, the generation benchmark, errors. */
+class HeightmapCommandTest {
+
+    @TempDir
+    Path dir;
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+    private PrintStream savedOut;
+    private PrintStream savedErr;
+
+    @BeforeEach
+    void capture() {
+        savedOut = System.out;
+        savedErr = System.err;
+        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    @AfterEach
+    void restore() {
+        System.setOut(savedOut);
+        System.setErr(savedErr);
+    }
+
+    private String stdout() {
+        return out.toString(StandardCharsets.UTF_8);
+    }
+
+    private String stderr() {
+        return err.toString(StandardCharsets.UTF_8);
+    }
+
+    @Test
+    void writesSixteenBitHeightsSnowAndSpectrumAndPrintsEachStage() throws Exception {
+        Path folder = dir.resolve("maps");
+        assertEquals(0, Main.execute("heightmap", "--out", folder.toString(), "--seed", "3",
+                "--set", "terrain.size=256", "--set", "terrain.beta=2"), stderr());
+        BufferedImage height = ImageIO.read(folder.resolve(HeightmapCommand.HEIGHT_PNG).toFile());
+        assertEquals(256, height.getWidth());
+        assertEquals(256, height.getHeight());
+        assertEquals(16, height.getColorModel().getComponentSize(0), "16 bits per height sample");
+        Image snow = Image.read(folder.resolve(HeightmapCommand.SNOW_PNG));
+        assertEquals(256, snow.width());
+        Image spectrum = Image.read(folder.resolve(HeightmapCommand.SPECTRUM_PNG));
+        assertTrue(spectrum.width() > 400);
+        for (String line : new String[] {"synthesis", "pyramid", "snow map", "peak heap", "expected -2 beta = -4.00"}) {
+            assertTrue(stdout().contains(line), "missing '" + line + "' in\n" + stdout());
+        }
+        String slope = stdout().replaceAll("(?s).*spectrum slope: (-?[0-9.]+).*", "$1");
+        assertEquals(-4.0, Double.parseDouble(slope), 0.15, stdout());
+    }
+
+    @Test
+    void itsHeightPngImportsAgain() throws Exception {
+        Path first = dir.resolve("first");
+        assertEquals(0, Main.execute("heightmap", "--out", first.toString(), "--set", "terrain.size=256"), stderr());
+        Path again = dir.resolve("again");
+        String png = first.resolve(HeightmapCommand.HEIGHT_PNG).toString();
+        assertEquals(0, Main.execute("heightmap", "--out", again.toString(), "--set", "terrain.import-file=" + png),
+                stderr());
+        assertTrue(stdout().contains("import "), stdout());
+        // lowest sample 0 and highest 65535 both times, so the exported heights come back to within rounding
+        var a = ImageIO.read(first.resolve(HeightmapCommand.HEIGHT_PNG).toFile()).getRaster();
+        var b = ImageIO.read(again.resolve(HeightmapCommand.HEIGHT_PNG).toFile()).getRaster();
+        assertEquals(a.getWidth(), b.getWidth());
+        int worst = 0;
+        for (int z = 0; z < a.getHeight(); z++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                worst = Math.max(worst, Math.abs(a.getSample(x, z, 0) - b.getSample(x, z, 0)));
+            }
+        }
+        assertTrue(worst <= 1, "largest difference in 16-bit steps: " + worst);
+    }
+
+    @Test
+    void repeatPrintsTheMedianOfEachStage() {
+        assertEquals(0, Main.execute("heightmap", "--out", dir.toString(), "--set", "terrain.size=256",
+                "--repeat", "3"), stderr());
+        assertTrue(stdout().contains("run 3/3: snow map"), stdout());
+        assertTrue(stdout().contains("median of 3 runs:"), stdout());
+        assertTrue(stdout().matches("(?s).*median of 3 runs:\\s+synthesis\\s+\\d+ ms\\s+pyramid\\s+\\d+ ms"
+                + "\\s+snow map\\s+\\d+ ms\\s+total\\s+\\d+ ms.*"), stdout());
+    }
+
+    @Test
+    void outThatIsAFileIsAUserError() throws Exception {
+        Path file = Files.writeString(dir.resolve("taken"), "x");
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", file.toString()));
+        assertTrue(stderr().contains(file + " is a file"), stderr());
+        assertFalse(stderr().contains("Exception"), stderr());
+    }
+
+    @Test
+    void badImportFileIsAUserErrorNamingTheFile() throws Exception {
+        Path file = Files.write(dir.resolve("heights.raw"), new byte[1000]);
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", dir.resolve("o").toString(),
+                "--set", "terrain.import-file=" + file));
+        assertTrue(stderr().contains(file.toString()) && stderr().contains("250 float32 samples"), stderr());
+        assertFalse(stderr().contains("Exception"), stderr());
+    }
+
+    @Test
+    void repeatMustBePositive() {
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", dir.toString(), "--repeat", "0"));
+        assertTrue(stderr().contains("--repeat"), stderr());
+    }
+}

@@ -1,0 +1,11 @@
+package org.openworld.engine.terrain;
+
+/**
+ * A height map file cannot be imported: the message names the file and what is wrong with it (missing, 8-bit, not
+ * square, a size that is not 2^n or 2^n + 1, an unknown extension), so it can be shown to the user as it is.
+ */
+public final class HeightImportException extends RuntimeException {
+    public HeightImportException(String message) {
+        super(message);
+    }
+}

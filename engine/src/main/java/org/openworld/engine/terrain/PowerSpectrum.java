@@ -1,0 +1,121 @@
+package org.openworld.engine.terrain;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.jtransforms.fft.FloatFFT_2D;
+
+/**
+ * The radially averaged power spectrum of a height map: |F(k)|² of its 2D DFT ({@link FloatFFT_2D#realForward}),
+ * averaged over rings of equal radial frequency, and a straight-line fit of log₁₀ power against log₁₀ frequency. For
+ * heights whose amplitude falls as 1/ω^β the power falls as 1/ω^{2β}: the fitted slope is −2β. This is how the tests
+ * and {@code openworld heightmap} check {@link SpectralSynthesis}.
+ *
+ * <p>Ring k holds the frequencies whose radius |(kx, kz)| rounds to k (cycles per tile), k = 1 .. size/2 − 1; rings
+ * beyond size/2 − 1 are cut by the square grid and left out. The transform works on a copy of the heights, 4 · size²
+ * bytes.
+ */
+public final class PowerSpectrum {
+
+    /**
+     * One ring: its frequency in cycles per metre and the mean |F|² of its coefficients, F the unnormalised DFT of
+     * the heights in metres (so m², scaled by the sample count; only ratios and slopes matter).
+     */
+    public record Bin(double frequency, double power) {
+    }
+
+    /** log₁₀ power ≈ slope · log₁₀ frequency + intercept. */
+    public record Fit(double slope, double intercept) {
+
+        /** The fitted power at a frequency, cycles per metre. */
+        public double power(double frequency) {
+            return Math.pow(10, intercept + slope * Math.log10(frequency));
+        }
+    }
+
+    private final List<Bin> bins;
+    private final double extent;
+
+    private PowerSpectrum(List<Bin> bins, double extent) {
+        this.bins = bins;
+        this.extent = extent;
+    }
+
+    /** The spectrum of a map (its mean is not part of any ring, so it need not be removed). */
+    public static PowerSpectrum of(HeightMap map) {
+        int n = map.size();
+        float[] a = map.heights().clone();
+        new FloatFFT_2D(n, n).realForward(a);
+        int rings = n / 2;
+        double[] sum = new double[rings];
+        long[] count = new long[rings];
+        // The packed layout (see SpectralSynthesis.fillSpectrum): row r is kz = r or r − n, slots 2kx, 2kx + 1 hold
+        // (kx, kz) for 0 < kx < n/2, slot pair 0, 1 holds (0, r) for 0 < r < n/2. Each is one of a conjugate pair of
+        // equal power, so one half plane gives the rings' means.
+        for (int r = 0; r < n; r++) {
+            long kz = r < n / 2 ? r : r - n;
+            for (int kx = 0; kx < n / 2; kx++) {
+                if (kx == 0 && !(r > 0 && r < n / 2)) {
+                    continue;
+                }
+                int ring = (int) Math.round(Math.sqrt(kx * (double) kx + kz * kz));
+                if (ring >= 1 && ring < rings) {
+                    double re = a[r * n + 2 * kx];
+                    double im = a[r * n + 2 * kx + 1];
+                    sum[ring] += re * re + im * im;
+                    count[ring]++;
+                }
+            }
+        }
+        double extent = map.extent();
+        List<Bin> bins = new ArrayList<>();
+        for (int k = 1; k < rings; k++) {
+            if (count[k] > 0) {
+                bins.add(new Bin(k / extent, sum[k] / count[k]));
+            }
+        }
+        return new PowerSpectrum(List.copyOf(bins), extent);
+    }
+
+    /** The rings, lowest frequency first. */
+    public List<Bin> bins() {
+        return bins;
+    }
+
+    /**
+     * Least-squares line through (log₁₀ f, log₁₀ P) of the rings lying wholly inside [lowFrequency, highFrequency]
+     * (cycles per metre): a ring half inside a cut-off would bend the line.
+     *
+     * @throws IllegalArgumentException if fewer than two rings lie in the band
+     */
+    public Fit fit(double lowFrequency, double highFrequency) {
+        double halfRing = 0.5 / extent;
+        double sx = 0;
+        double sy = 0;
+        double sxx = 0;
+        double sxy = 0;
+        int m = 0;
+        for (Bin b : bins) {
+            boolean inside = b.frequency() - halfRing >= lowFrequency && b.frequency() + halfRing <= highFrequency;
+            if (inside && b.power() > 0) {
+                double x = Math.log10(b.frequency());
+                double y = Math.log10(b.power());
+                sx += x;
+                sy += y;
+                sxx += x * x;
+                sxy += x * y;
+                m++;
+            }
+        }
+        if (m < 2) {
+            throw new IllegalArgumentException("fewer than two spectrum rings lie between " + lowFrequency + " and "
+                    + highFrequency + " cycles/m");
+        }
+        double slope = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+        return new Fit(slope, (sy - slope * sx) / m);
+    }
+
+    /** The fit over the band a generated map was synthesised in: 1/maxWavelength to 1/minWavelength. */
+    public Fit fit(TerrainSettings s) {
+        return fit(1 / s.maxWavelength(), 1 / s.minWavelength());
+    }
+}

@@ -1,0 +1,34 @@
+package org.openworld.engine.terrain;
+
+import java.nio.file.Path;
+
+/**
+ * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5) and the snow
+ * map (paper 2.2). Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
+ *
+ * @param pyramid the heights at every power-of-two resolution, level 0 the full map
+ * @param snow    where snow lies
+ */
+public record TerrainData(HeightPyramid pyramid, SnowMap snow) {
+
+    /** Stage names as {@link StageTimes} records them. */
+    public static final String SYNTHESIS = "synthesis";
+    public static final String IMPORT = "import";
+    public static final String PYRAMID = "pyramid";
+    public static final String SNOW_MAP = "snow map";
+
+    /**
+     * Makes the heights (synthesised from the seed, or imported when {@link TerrainSettings#importFile()} is set),
+     * their pyramid and the snow map, timing each stage into {@code times}.
+     *
+     * @throws HeightImportException if the import file cannot be used
+     */
+    public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
+        HeightMap base = s.imports()
+                ? times.time(IMPORT, () -> HeightImport.read(Path.of(s.importFile()), s))
+                : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
+        HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
+        SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
+        return new TerrainData(pyramid, snow);
+    }
+}

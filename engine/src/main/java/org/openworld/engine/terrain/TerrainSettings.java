@@ -1,0 +1,97 @@
+package org.openworld.engine.terrain;
+
+import org.openworld.engine.settings.Setting;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * Settings of the terrain's height map and snow map, keys {@code terrain.*}: how the heights are made (spectral
+ * synthesis, paper 2.1, or an imported file), how they are scaled, and where snow lies (paper 2.2).
+ *
+ * @param size           samples per side of a generated map (an imported map brings its own size)
+ * @param spacing        distance between neighbouring samples; the tile is {@code size · spacing} metres across
+ * @param relief         height from the lowest to the highest sample after normalisation
+ * @param seaFraction    fraction of the relief below sea level (height 0), so the lowest valleys hold water
+ * @param beta           spectral exponent: the amplitude of frequency ω is proportional to 1/ω^β. β = 1 is the
+ *                       paper's 1/ω, spiky; the default 2.2 gives massifs and valleys (why: {@link SpectralSynthesis})
+ * @param minWavelength  high-frequency cut-off: shorter wavelengths get amplitude 0
+ * @param maxWavelength  low-frequency cut-off: longer wavelengths get amplitude 0, so one frequency ring does not
+ *                       dominate and the tile holds several mountains instead of one
+ * @param importFile     16-bit grayscale PNG or little-endian float32 {@code .raw/.r32/.f32} height map used instead
+ *                       of synthesis (see {@link HeightImport}); empty generates one. The spectral settings are then
+ *                       ignored
+ * @param snowBase       normalised height (0 lowest, 1 highest sample) where the snow probability starts to rise
+ *                       from 0
+ * @param snowFull       normalised height at which snow is certain; p(h) = clamp((h − base)/(full − base), 0, 1)
+ * @param snowMorphology radius of the opening and the closing that clean up the random snow map, in snow map pixels
+ */
+public record TerrainSettings(
+        @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192) int size,
+        @Setting(doc = "distance between neighbouring height samples", unit = "m", min = 0.1, max = 100)
+        double spacing,
+        @Setting(doc = "height range from lowest valley to highest peak", unit = "m", min = 10, max = 10000)
+        double relief,
+        @Setting(doc = "fraction of the relief below sea level (height 0)", min = 0, max = 0.9) double seaFraction,
+        @Setting(doc = "spectral exponent: amplitude ~ 1/frequency^beta", min = 1, max = 3) double beta,
+        @Setting(doc = "shortest wavelength kept (high-frequency cut-off)", unit = "m", min = 0.1, max = 1e6)
+        double minWavelength,
+        @Setting(doc = "longest wavelength kept (low-frequency cut-off)", unit = "m", min = 0.1, max = 1e6)
+        double maxWavelength,
+        @Setting(doc = "16-bit PNG or float32 .raw height map to load instead of generating one") String importFile,
+        @Setting(doc = "normalised height where snow starts (probability 0)", min = 0, max = 1) double snowBase,
+        @Setting(doc = "normalised height where snow is certain (probability 1)", min = 0, max = 1) double snowFull,
+        @Setting(doc = "radius of the snow map's opening and closing", unit = "px", min = 0, max = 8)
+        int snowMorphology) {
+
+    public static final TerrainSettings DEFAULTS = new TerrainSettings(
+            2048,   // samples: 4 km at 2 m, fine enough to walk on, generated in about a second
+            2,      // m: a sample every two steps of a walker
+            800,    // m: alpine foothills, sea to summit
+            0.15,   // the lowest 15 % of the relief: valley floors hold lakes, most land stays dry
+            2.2,    // amplitude ~ 1/ω^2.2: massifs and valleys, not crumpled paper (see SpectralSynthesis)
+            4,      // m: two samples at 2 m spacing, the shortest wavelength the grid can hold
+            2048,   // m: half of the default 4 km tile, so a tile holds a few ranges, not one hump
+            "",     // generate
+            0.40,   // snow may start a little below the middle height...
+            0.70,   // ...and is certain on the top 30 % of the relief
+            2);     // px: a 5×5 square; see SnowMap for why the snow line then sits near snowFull
+
+    public static final SettingsGroup<TerrainSettings> SETTINGS =
+            SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);
+
+    /**
+     * Checks what single ranges cannot: the size is a power of two, the cut-offs are ordered and overlap the
+     * wavelengths the grid can hold, and the snow heights are ordered.
+     */
+    public TerrainSettings {
+        if (Integer.bitCount(size) != 1) {
+            throw new IllegalArgumentException("the height map size must be a power of two (256, 512, ... 8192), got "
+                    + size);
+        }
+        if (!(minWavelength < maxWavelength)) {
+            throw new IllegalArgumentException("the shortest wavelength (" + minWavelength
+                    + " m) must be less than the longest (" + maxWavelength + " m)");
+        }
+        if (maxWavelength <= 2 * spacing || minWavelength >= size * spacing) {
+            throw new IllegalArgumentException("the wavelengths kept (" + minWavelength + " .. " + maxWavelength
+                    + " m) must overlap what the grid holds: two samples (" + 2 * spacing + " m) up to the tile ("
+                    + size * spacing + " m)");
+        }
+        if (!(snowBase < snowFull)) {
+            throw new IllegalArgumentException("snow must start (" + snowBase
+                    + ") below the height where it is certain (" + snowFull + ")");
+        }
+        if (importFile == null) {
+            throw new IllegalArgumentException("the import file must be a path or empty, not null");
+        }
+    }
+
+    /** Side of a generated tile, metres. */
+    public double extent() {
+        return size * spacing;
+    }
+
+    /** Whether the heights come from {@link #importFile()} rather than synthesis. */
+    public boolean imports() {
+        return !importFile.isBlank();
+    }
+}
