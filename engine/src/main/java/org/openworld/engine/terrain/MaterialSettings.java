@@ -1,0 +1,40 @@
+package org.openworld.engine.terrain;
+
+import org.openworld.engine.settings.Setting;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * Settings of the terrain materials (paper 2.2, figures 1 and 3), keys {@code materials.*}: where snow lies, and
+ * which per-texel details shade the surface. They are read every frame by {@link TerrainMaterials#bind}, so
+ * toggling one costs nothing and reallocates nothing.
+ *
+ * @param snowMode    where snow lies: from the snow map (figure 1b) or above a fixed height (figure 1a)
+ * @param normalMap   perturb the normal with the materials' tangent-space normal maps (figure 3, "normal")
+ * @param glossMap    add sun highlights and a sky reflection, scaled per texel by the gloss maps (figure 3, "gloss")
+ * @param detailScale side of the fine texture tile on the ground; the coarse tile that is blended in to hide the
+ *                    repetition is {@code shaders/terrain/material.glsl}'s {@code MAT_COARSE_FACTOR} times larger
+ */
+public record MaterialSettings(
+        @Setting(doc = "where snow lies: snow-map (probabilistic map) or altitude-bands (plain height bands)")
+        SnowMode snowMode,
+        @Setting(doc = "tangent-space normal maps on the materials") boolean normalMap,
+        @Setting(doc = "gloss maps: sun highlights and sky reflection") boolean glossMap,
+        @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale) {
+
+    /** How snow is placed on the terrain. */
+    public enum SnowMode {
+        /** Snow where the terrain's snow map has it: drawn with probability rising with height, then smoothed. */
+        SNOW_MAP,
+        /** Snow above a fixed normalised height: the flat, unrealistic band of the paper's figure 1a. */
+        ALTITUDE_BANDS
+    }
+
+    public static final MaterialSettings DEFAULTS = new MaterialSettings(
+            SnowMode.SNOW_MAP,
+            true,
+            true,
+            2.7);   // m: 512 texels over 2.7 m is 5 mm per texel, about one pixel on the ground at a walker's feet
+
+    public static final SettingsGroup<MaterialSettings> SETTINGS =
+            SettingsGroup.of("materials", MaterialSettings.class, DEFAULTS);
+}

@@ -1,0 +1,237 @@
+// Terrain materials (paper 2.2, figures 1, 3 and 4): grass low, rock in between and on steep slopes, snow high,
+// each a synthesised tileable texture with a tangent-space normal map and a gloss map; lit by the sun and the sky.
+// Engine side: org.openworld.engine.terrain.TerrainMaterials (binds everything below), TerrainTextures (synthesis).
+//
+//   vec3 shadeTerrain(TerrainSurface s)   linear RGB, lit, before fog
+//   vec3 skyReflection(vec3 wsDir, float lod)   the stand-in sky's radiance in a direction (lod 0 sharp .. 6 blurred)
+//
+// Steps of shadeTerrain:
+//   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
+//      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6)
+//   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
+//      with noise-bent edges; snow slides off steep slopes
+//   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
+//   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
+//   5. light: Lambert sun and hemisphere sky, normalised Blinn-Phong highlight and a Fresnel-weighted sky reflection,
+//      both scaled by the gloss map
+#include "common/frame.glsl"
+
+uniform sampler2DArray uMatAlbedo; // layers MAT_GRASS, MAT_ROCK, MAT_SNOW; sRGB-stored colour, sampled linear
+uniform sampler2DArray uMatDetail; // rg: tangent-space normal xy * 0.5 + 0.5; b: relief 0..1; a: gloss 0..1
+uniform samplerCube uMatSky;       // sky radiance for the reference ambient light (MAT_AMBIENT_REFERENCE)
+uniform float uMatDetailScale;     // metres per fine tile
+uniform int uMatSnowMode;          // MAT_SNOW_MAP or MAT_ALTITUDE_BANDS
+uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
+uniform int uMatGlossMap;          // 1: highlight and sky reflection, scaled by the gloss maps
+
+struct TerrainSurface {
+    vec3 wsPos;        // world position, metres
+    vec3 wsNormal;     // unit geometric normal of the terrain (from the height field)
+    vec3 wsTangent;    // unit, along +X tilted with the slope:  normalize(vec3(1, dh/dx, 0))
+    vec3 wsBitangent;  // unit, along +Z tilted with the slope: normalize(vec3(0, dh/dz, 1))
+    float height01;    // height normalised over the map's range, 0 = lowest, 1 = highest
+    float snow;        // snow-map coverage here, 0..1 (already filtered)
+};
+
+const float MAT_GRASS = 0.0;         // texture array layers (TerrainTextures.Material order)
+const float MAT_ROCK = 1.0;
+const float MAT_SNOW = 2.0;
+const int MAT_SNOW_MAP = 0;          // MaterialSettings.SnowMode
+const int MAT_ALTITUDE_BANDS = 1;
+
+// 1. scales
+const float MAT_COARSE_FACTOR = 6.3; // coarse tile / fine tile (2.7 m -> 17 m): not an integer, so the two grids
+                                     // never fall into step and their sum does not repeat at any visible distance
+const float MAT_COARSE_TURN = 0.6;   // radians (34 deg) the coarse tile is turned, so its rows cross the fine ones
+const float MAT_COARSE_NEAR = 6.0;   // metres: closer, the fine tile dominates (the coarse one's texels look blurry)
+const float MAT_COARSE_FAR = 60.0;   // metres: farther, the coarse tile dominates (the fine one would repeat visibly)
+const float MAT_MACRO_SCALE = 120.0; // metres: wavelength of the macro noise's lowest octave
+// 2. where the materials lie
+const float MAT_GRASS_LINE = 0.45;   // normalised height where grass gives way to rock
+const float MAT_ROCK_SLOPE = 0.82;   // normal.y (35 deg) from which soil no longer holds and rock shows...
+const float MAT_ROCK_CLIFF = 0.68;   // ... fully rock at normal.y 0.68 (47 deg)
+const float MAT_SNOW_HOLDS = 0.62;   // normal.y (52 deg) beyond which snow starts to slide off...
+const float MAT_SNOW_SLIDES = 0.48;  // ... and is gone at normal.y 0.48 (61 deg)
+const float MAT_SNOW_LINE = 0.62;    // ALTITUDE_BANDS: normalised height of the snow line
+const float MAT_SNOW_BAND_EDGE = 0.004; // ALTITUDE_BANDS: half width of the transition, normalised height (sharp)
+const float MAT_EDGE_NOISE = 0.12;   // normalised height / slope by which the macro noise bends the blend edges
+const float MAT_LAYER_SOFTNESS = 0.15; // relief units over which a layer's cover fades (height-based blending)
+// 5. light
+const float MAT_F0 = 0.04;           // Fresnel reflectance at normal incidence of rock, leaves and ice (IOR ~1.3-1.5)
+const float MAT_MAX_POWER = 2048.0;  // Blinn-Phong exponent at gloss 1 (power = MAX_POWER^gloss): sharp sun glints
+const float MAT_SKY_MAX_LOD = 6.0;   // the 64^2 cube map's 1^2 mip: the fully blurred sky of a matt surface
+const float MAT_AMBIENT_REFERENCE = 0.3717; // luminance of the ambient light the sky cube map was made for
+const vec3 MAT_LUMA = vec3(0.2126, 0.7152, 0.0722); // Rec. 709 luminance weights
+
+// The stand-in sky's radiance in direction wsDir, scaled with the day's ambient light.
+vec3 skyReflection(vec3 wsDir, float lod) {
+    float scale = dot(frame.ambientColor.rgb, MAT_LUMA) / MAT_AMBIENT_REFERENCE;
+    return textureLod(uMatSky, wsDir, lod).rgb * scale;
+}
+
+// Hash of a lattice point to 0..1, without sin (stable across GPUs): Dave Hoskins, "Hash without Sine".
+float matHash(vec2 p) {
+    vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+    p3 += dot(p3, p3.yzx + 33.33);
+    return fract((p3.x + p3.y) * p3.z);
+}
+
+// Value noise with quintic fade, 0..1.
+float matValueNoise(vec2 p) {
+    vec2 i = floor(p);
+    vec2 f = fract(p);
+    vec2 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+    float a = matHash(i);
+    float b = matHash(i + vec2(1.0, 0.0));
+    float c = matHash(i + vec2(0.0, 1.0));
+    float d = matHash(i + vec2(1.0, 1.0));
+    return mix(mix(a, b, u.x), mix(c, d, u.x), u.y);
+}
+
+// Four octaves of value noise from MAT_MACRO_SCALE down to 15 m, 0..1 (mean 0.5); not periodic, so it never repeats.
+float matMacro(vec2 wsXZ) {
+    const mat2 turn = mat2(0.80, 0.60, -0.60, 0.80); // each octave turned by 37 deg so the lattices do not align
+    vec2 p = wsXZ / MAT_MACRO_SCALE;
+    float sum = 0.0;
+    float amplitude = 0.5;
+    for (int i = 0; i < 4; i++) {
+        sum += amplitude * matValueNoise(p);
+        p = turn * p * 2.0 + 13.7;
+        amplitude *= 0.5;
+    }
+    return sum / 0.9375;
+}
+
+// One material's texels at both scales, mixed; slope is the tangent-space normal's xy in the world's X/Z frame.
+struct MatTexel {
+    vec3 albedo;
+    vec2 slope;
+    float height;
+    float gloss;
+};
+
+struct MatCoords {
+    vec2 fine;
+    vec2 fineDx;
+    vec2 fineDy;
+    vec2 coarse;
+    vec2 coarseDx;
+    vec2 coarseDy;
+    float coarseWeight;
+};
+
+// Explicit gradients: the layers are sampled under branches (skipped where absent), where implicit ones are undefined.
+MatTexel matSample(float layer, MatCoords c) {
+    const mat2 unturn = mat2(0.8253, -0.5646, 0.5646, 0.8253); // rotation by -MAT_COARSE_TURN: coarse slopes to world
+    vec4 albedoFine = textureGrad(uMatAlbedo, vec3(c.fine, layer), c.fineDx, c.fineDy);
+    vec4 detailFine = textureGrad(uMatDetail, vec3(c.fine, layer), c.fineDx, c.fineDy);
+    vec4 albedoCoarse = textureGrad(uMatAlbedo, vec3(c.coarse, layer), c.coarseDx, c.coarseDy);
+    vec4 detailCoarse = textureGrad(uMatDetail, vec3(c.coarse, layer), c.coarseDx, c.coarseDy);
+    MatTexel t;
+    t.albedo = mix(albedoFine.rgb, albedoCoarse.rgb, c.coarseWeight);
+    t.slope = mix(detailFine.rg * 2.0 - 1.0, unturn * (detailCoarse.rg * 2.0 - 1.0), c.coarseWeight);
+    t.height = mix(detailFine.b, detailCoarse.b, c.coarseWeight);
+    t.gloss = mix(detailFine.a, detailCoarse.a, c.coarseWeight);
+    return t;
+}
+
+// Cover of a layer of amount 0..1 over ground whose relief is 0..1: it first fills where relief is low.
+float matCover(float amount, float relief) {
+    float s = MAT_LAYER_SOFTNESS;
+    return smoothstep(relief - s, relief + s, amount * (1.0 + 2.0 * s) - s);
+}
+
+vec3 shadeTerrain(TerrainSurface s) {
+    vec3 toEye = cameraPos() - s.wsPos;
+    float eyeDistance = length(toEye);
+    vec3 v = toEye / max(eyeDistance, 1e-4);
+    vec3 l = sunDir();
+    vec3 n0 = normalize(s.wsNormal);
+
+    // 1. texture coordinates at two scales, and the macro variation
+    const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
+    MatCoords c;
+    c.fine = s.wsPos.xz / uMatDetailScale;
+    c.fineDx = dFdx(c.fine);
+    c.fineDy = dFdy(c.fine);
+    c.coarse = turn * c.fine / MAT_COARSE_FACTOR;
+    c.coarseDx = turn * c.fineDx / MAT_COARSE_FACTOR;
+    c.coarseDy = turn * c.fineDy / MAT_COARSE_FACTOR;
+    c.coarseWeight = mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance));
+    float macro = matMacro(s.wsPos.xz);
+    float tint = matMacro(s.wsPos.zx * 1.7 + 311.0);
+    float edge = (macro - 0.5) * 2.0 * MAT_EDGE_NOISE;
+
+    // 2. amounts of rock and snow
+    float rockByHeight = smoothstep(MAT_GRASS_LINE - 0.06, MAT_GRASS_LINE + 0.06, s.height01 + edge);
+    float rockBySlope = smoothstep(MAT_ROCK_SLOPE, MAT_ROCK_CLIFF, n0.y + 0.5 * edge);
+    float rockAmount = max(rockByHeight, rockBySlope);
+    float snowAmount;
+    if (uMatSnowMode == MAT_SNOW_MAP) {
+        float sticks = smoothstep(MAT_SNOW_SLIDES, MAT_SNOW_HOLDS, n0.y);
+        snowAmount = smoothstep(0.3, 0.7, s.snow + edge * 2.0) * sticks;
+    } else {
+        snowAmount = smoothstep(MAT_SNOW_LINE - MAT_SNOW_BAND_EDGE, MAT_SNOW_LINE + MAT_SNOW_BAND_EDGE, s.height01);
+    }
+
+    // 3. layers: grass, rock over grass (its highest relief first), snow over both (hollows first)
+    MatTexel surface;
+    float rockCover = 0.0;
+    MatTexel rock;
+    if (rockAmount > 0.0) {
+        rock = matSample(MAT_ROCK, c);
+        rockCover = matCover(rockAmount, 1.0 - rock.height);
+    }
+    if (rockCover < 1.0) {
+        MatTexel grass = matSample(MAT_GRASS, c);
+        // macro: greener and yellower, lighter and darker patches of meadow
+        grass.albedo *= mix(vec3(0.75, 0.85, 0.8), vec3(1.3, 1.15, 0.8), tint) * (0.8 + 0.4 * macro);
+        surface = grass;
+        if (rockCover > 0.0) {
+            surface.albedo = mix(surface.albedo, rock.albedo, rockCover);
+            surface.slope = mix(surface.slope, rock.slope, rockCover);
+            surface.height = mix(surface.height, rock.height, rockCover);
+            surface.gloss = mix(surface.gloss, rock.gloss, rockCover);
+        }
+    } else {
+        surface = rock;
+    }
+    if (rockCover > 0.0) {
+        surface.albedo *= mix(vec3(1.0), vec3(0.85 + 0.3 * tint, 0.85 + 0.25 * tint, 0.9 + 0.15 * tint), rockCover);
+    }
+    if (snowAmount > 0.0) {
+        MatTexel snow = matSample(MAT_SNOW, c);
+        float snowCover = matCover(snowAmount, surface.height);
+        surface.albedo = mix(surface.albedo, snow.albedo, snowCover);
+        surface.slope = mix(surface.slope, snow.slope, snowCover);
+        surface.gloss = mix(surface.gloss, snow.gloss, snowCover);
+    }
+
+    // 4. detail normal: tangent-space (x along +u = +X, y along +v = +Z) through the terrain's TBN
+    vec3 n = n0;
+    if (uMatNormalMap == 1) {
+        vec3 ts = vec3(surface.slope, sqrt(max(1.0 - dot(surface.slope, surface.slope), 0.0)));
+        n = normalize(s.wsTangent * ts.x + s.wsBitangent * ts.y + n0 * ts.z);
+    }
+
+    // 5. light
+    float sunFacing = smoothstep(-0.05, 0.1, dot(n0, l)); // bumps cannot be lit from behind the terrain itself
+    float nl = max(dot(n, l), 0.0) * sunFacing;
+    vec3 sky = frame.ambientColor.rgb * (0.6 + 0.4 * n.y);
+    vec3 color = surface.albedo * (frame.sunColor.rgb * nl + sky);
+    if (uMatGlossMap == 1) {
+        float gloss = surface.gloss;
+        float power = pow(MAT_MAX_POWER, gloss);
+        vec3 h = normalize(l + v);
+        float vh = max(dot(v, h), 0.0);
+        float fresnelSun = MAT_F0 + (1.0 - MAT_F0) * pow(1.0 - vh, 5.0);
+        // normalised Blinn-Phong: (p + 8) / (8 pi) keeps the highlight's energy as it sharpens
+        float specular = (power + 8.0) / (8.0 * PI) * pow(max(dot(n, h), 0.0), power) * fresnelSun * gloss;
+        color += frame.sunColor.rgb * specular * nl;
+        vec3 r = reflect(-v, n);
+        float nv = max(dot(n, v), 0.0);
+        float fresnelView = MAT_F0 + (1.0 - MAT_F0) * pow(1.0 - nv, 5.0);
+        color += skyReflection(r, (1.0 - gloss) * MAT_SKY_MAX_LOD) * fresnelView * gloss * gloss;
+    }
+    return color;
+}
