@@ -1,5 +1,6 @@
 #version 330 core
-// A full-screen triangle; the fragment shader rebuilds the view ray from the inverse view-projection.
+// A full-screen triangle at the far plane (z = w, so depth 1: drawn only where nothing nearer is); the fragment
+// shader rebuilds the view ray from the inverse view-projection.
 layout(location = 0) in vec2 csCorner;
 out vec2 ndc;
 

@@ -4,8 +4,10 @@ import java.util.List;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.DaylightSystem;
-import org.openworld.engine.testscene.TestSceneSystem;
+import org.openworld.engine.environment.GradientSkySystem;
+import org.openworld.engine.terrain.TerrainSystem;
 
 /**
  * The demo's world: which systems it runs. Adding a system to the demo is one line in {@link #systems()}; the
@@ -14,8 +16,8 @@ import org.openworld.engine.testscene.TestSceneSystem;
  */
 final class DemoScene {
 
-    /** Where the camera starts when no pose is given: above the ground, looking north over the scene. */
-    static final CameraPose DEFAULT_POSE = new CameraPose(0, 60, 450, 0, -6, CameraPose.DEFAULT_FOV);
+    /** Where the camera starts when no pose is given: above a valley of the default world, looking north. */
+    static final CameraPose DEFAULT_POSE = new CameraPose(0, 400, 900, 0, -8, CameraPose.DEFAULT_FOV);
 
     private DemoScene() {
     }
@@ -25,6 +27,8 @@ final class DemoScene {
         return List.of(
                 new CameraSystem(),
                 new DaylightSystem(),
-                new TestSceneSystem());
+                new GradientSkySystem(),
+                new CullingSystem(),
+                new TerrainSystem(line -> System.err.println(line)));
     }
 }

@@ -66,8 +66,8 @@ class CommandLineTest {
     void cameraOptionMovesTheView() throws Exception {
         Path up = dir.resolve("up.png");
         Path down = dir.resolve("down.png");
-        assertEquals(0, Main.execute("shot", "--out", up.toString(), "--size", "96x54", "--camera", "0,50,400,0,60"));
-        assertEquals(0, Main.execute("shot", "--out", down.toString(), "--size", "96x54", "--camera", "0,50,400,0,-60"));
+        assertEquals(0, Main.execute("shot", "--out", up.toString(), "--size", "96x54", "--camera", "0,1500,400,0,60"));
+        assertEquals(0, Main.execute("shot", "--out", down.toString(), "--size", "96x54", "--camera", "0,1500,400,0,-60"));
         // Looking up sees only sky; looking down sees only ground.
         assertTrue(blueness(Image.read(up), 0, 54) > 15, "looking up should see blue sky");
         assertTrue(blueness(Image.read(down), 0, 54) < 5, "looking down should see the ground");
@@ -129,7 +129,7 @@ class CommandLineTest {
     void infoPrintsRendererAndFrameOrder() {
         assertEquals(0, Main.execute("info"));
         assertTrue(stdout().contains("context:   headless-"), stdout());
-        assertTrue(stdout().indexOf("daylight") < stdout().indexOf("test-scene"), stdout());
+        assertTrue(stdout().indexOf("culling") < stdout().indexOf("terrain"), stdout());
     }
 
     @Test

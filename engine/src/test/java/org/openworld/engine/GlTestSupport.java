@@ -5,6 +5,7 @@ import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderSources;
+import org.openworld.engine.settings.Settings;
 
 /** Builds engines for headless GL tests: small images, classpath shaders, default settings. */
 public final class GlTestSupport {
@@ -13,8 +14,15 @@ public final class GlTestSupport {
     }
 
     public static Engine engine(GlContext gl, int width, int height, EngineSystem... systems) {
+        return engine(gl, width, height, List.of(), systems);
+    }
+
+    /** An engine whose settings have these {@code key=value} assignments applied before the systems start. */
+    public static Engine engine(GlContext gl, int width, int height, List<String> settings, EngineSystem... systems) {
         List<EngineSystem> list = List.of(systems);
-        return new Engine(gl, ShaderSources.classpath(), Engine.settingsFor(list), list, width, height);
+        Settings all = Engine.settingsFor(list);
+        settings.forEach(all::apply);
+        return new Engine(gl, ShaderSources.classpath(), all, list, width, height);
     }
 
     /** One triangle that covers the whole viewport, corners in clip space at attribute 0 (vec2). */

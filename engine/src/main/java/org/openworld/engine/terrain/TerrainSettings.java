@@ -51,9 +51,9 @@ public record TerrainSettings(
             4,      // m: two samples at 2 m spacing, the shortest wavelength the grid can hold
             2048,   // m: half of the default 4 km tile, so a tile holds a few ranges, not one hump
             "",     // generate
-            0.40,   // snow may start a little below the middle height...
-            0.70,   // ...and is certain on the top 30 % of the relief
-            2);     // px: a 5×5 square; see SnowMap for why the snow line then sits near snowFull
+            0.35,   // snow may start at a third of the relief (seed 1's median ground is at 0.35)...
+            0.60,   // ...and is certain on the top 40 %: snow on the upper slopes, as in the paper's figure 1b
+            1);     // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);

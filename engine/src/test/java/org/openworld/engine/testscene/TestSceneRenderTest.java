@@ -15,6 +15,7 @@ import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.environment.DaylightSystem;
+import org.openworld.engine.environment.GradientSkySystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Image;
@@ -42,7 +43,8 @@ class TestSceneRenderTest {
     @BeforeAll
     static void render() throws IOException {
         gl = GlContext.headless();
-        try (Engine engine = GlTestSupport.engine(gl, WIDTH, HEIGHT, new TestSceneSystem(), new DaylightSystem())) {
+        try (Engine engine = GlTestSupport.engine(gl, WIDTH, HEIGHT, new TestSceneSystem(), new GradientSkySystem(),
+                new DaylightSystem())) {
             morning = renderAt(engine, LOOKING_NORTH, 10.0);
             dusk = renderAt(engine, LOOKING_NORTH, 19.5);
             lowSun = renderAt(engine, lookingAtTheSun(18.5), 18.5);

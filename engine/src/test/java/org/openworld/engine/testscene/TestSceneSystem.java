@@ -16,10 +16,9 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderProgram;
 
 /**
- * A small lit scene that exercises the whole pipeline before the real world exists: a sky gradient behind a ground
- * grid with a ring of boxes, lit by the world's sun and fogged by the shared fog. It publishes a flat
- * {@link HeightField} so walk mode has ground to stand on. The terrain and sky systems replace it in the demo; tests
- * keep it as a fixture.
+ * A test fixture that exercises the whole pipeline with simple geometry: a ground grid with a ring of boxes, lit by
+ * the world's sun and fogged by the shared fog. It publishes a flat {@link HeightField} so walk mode has ground to
+ * stand on. Pair it with {@link org.openworld.engine.environment.GradientSkySystem} for a background.
  */
 public final class TestSceneSystem implements EngineSystem {
 
@@ -31,9 +30,7 @@ public final class TestSceneSystem implements EngineSystem {
     static final float RING_RADIUS = 200;
     static final int BOX_COUNT = 8;
 
-    private ShaderProgram background;
     private ShaderProgram lit;
-    private Mesh fullScreen;
     private Mesh ground;
     private Mesh boxes;
 
@@ -45,10 +42,7 @@ public final class TestSceneSystem implements EngineSystem {
     @Override
     public void init(EngineContext context) {
         context.world().setResource(HeightField.class, HeightField.FLAT);
-        background = context.shaders().program("testscene/background.vert", "testscene/background.frag");
         lit = context.shaders().program("testscene/lit.vert", "testscene/lit.frag");
-        fullScreen = new Mesh(context.gl(), new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2},
-                new Mesh.Attribute(0, 2));
         float h = GROUND_HALF_SIZE;
         ground = new Mesh(context.gl(), new float[] {
             -h, 0, -h, 0, 1, 0,  h, 0, -h, 0, 1, 0,  h, 0, h, 0, 1, 0,  -h, 0, h, 0, 1, 0},
@@ -104,12 +98,7 @@ public final class TestSceneSystem implements EngineSystem {
 
     @Override
     public void render(Pass pass, RenderContext context) {
-        // 1. sky gradient, behind everything: no depth test or write
-        glDisable(GL_DEPTH_TEST);
-        glDepthMask(false);
-        background.use();
-        fullScreen.draw(context.stats());
-        // 2. ground grid and boxes, lit by the sun and sky, fogged with distance
+        // ground grid and boxes, lit by the sun and sky, fogged with distance
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         glEnable(GL_CULL_FACE);
@@ -121,7 +110,7 @@ public final class TestSceneSystem implements EngineSystem {
 
     @Override
     public void close() {
-        for (AutoCloseable c : new AutoCloseable[] {boxes, ground, fullScreen, lit, background}) {
+        for (AutoCloseable c : new AutoCloseable[] {boxes, ground, lit}) {
             if (c != null) {
                 try {
                     c.close();

@@ -1,0 +1,179 @@
+package org.openworld.engine.terrain;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.nio.ByteBuffer;
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.gl.VertexArray;
+
+/**
+ * Draws a {@link PatchList} with one instanced draw call per index pattern in use, so the draw calls of a pass do not
+ * grow with the number of visible patches (at most one interior pattern per stride and one per side and edge
+ * stride: 29 for 65-vertex patches in quadtree mode, whatever the world size).
+ *
+ * <p>All patches share one vertex grid of (N+1)² (column, row) pairs and one element buffer holding every
+ * {@link PatchPatterns} pattern. What differs per patch travels as instance attributes, written once per frame
+ * into a streamed buffer, sorted by pattern (a counting sort) so each draw reads a contiguous run:
+ * <pre>
+ *   location 1  ivec4  origin sample x, origin sample z, samples per grid step, level
+ *   location 2  ivec4  side levels  (north, east, south, west)
+ *   location 3  ivec4  corner levels (north-west, north-east, south-east, south-west)
+ *   location 4  vec2   copy offset, metres
+ * </pre>
+ * GL 3.3 has no base instance, so each draw re-points the instance attributes at its run's offset.
+ */
+final class PatchRenderer implements AutoCloseable {
+
+    /** Bytes per instance: 12 ints and 2 floats. */
+    private static final int STRIDE = 14 * 4;
+    /** Each patch is drawn by five patterns: its interior and its four edge strips. */
+    private static final int PATTERNS_PER_PATCH = 5;
+
+    private final PatchPatterns patterns;
+    private final GpuBuffer grid;
+    private final GpuBuffer elements;
+    private final GpuBuffer instances;
+    private final VertexArray vao;
+    private ByteBuffer staging;
+    private final int[] runStart;
+    private final int[] runLength;
+    private final int[] cursor;
+    private int[] slotPattern = new int[0];
+
+    PatchRenderer(GlContext gl, PatchPatterns patterns) {
+        this.patterns = patterns;
+        this.runStart = new int[patterns.patternCount()];
+        this.runLength = new int[patterns.patternCount()];
+        this.cursor = new int[patterns.patternCount()];
+        vao = new VertexArray(gl);
+        vao.bind();
+        grid = new GpuBuffer(gl, GL_ARRAY_BUFFER);
+        elements = new GpuBuffer(gl, GL_ELEMENT_ARRAY_BUFFER);
+        instances = new GpuBuffer(gl, GL_ARRAY_BUFFER);
+        uploadGrid(patterns.cells());
+        IntBuffer indices = MemoryUtil.memAllocInt(patterns.indices().length).put(patterns.indices()).flip();
+        try {
+            elements.upload(indices, GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(indices);
+        }
+        staging = MemoryUtil.memAlloc(STRIDE * 256);
+        instances.allocate(staging.capacity(), GL_STREAM_DRAW);
+        for (int location = 1; location <= 4; location++) {
+            glEnableVertexAttribArray(location);
+            glVertexAttribDivisor(location, 1);
+        }
+        glBindVertexArray(0);
+    }
+
+    private void uploadGrid(int cells) {
+        FloatBuffer vertices = MemoryUtil.memAllocFloat(2 * (cells + 1) * (cells + 1));
+        try {
+            for (int row = 0; row <= cells; row++) {
+                for (int column = 0; column <= cells; column++) {
+                    vertices.put(column).put(row);
+                }
+            }
+            grid.upload(vertices.flip(), GL_STATIC_DRAW);
+        } finally {
+            MemoryUtil.memFree(vertices);
+        }
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 2, GL_FLOAT, false, 0, 0);
+    }
+
+    /**
+     * Draws every patch of the list with the bound terrain program.
+     *
+     * @param copyOffsets x, z pairs, metres, indexed by {@link PatchList#copy(int)}
+     */
+    void draw(PatchList list, float[] copyOffsets, DrawStats stats) {
+        int slots = list.size() * PATTERNS_PER_PATCH;
+        if (slots == 0) {
+            return;
+        }
+        // 1. the pattern of every (patch, part) slot, and how many slots each pattern has
+        if (slotPattern.length < slots) {
+            slotPattern = new int[slots * 2];
+        }
+        java.util.Arrays.fill(runLength, 0);
+        for (int i = 0; i < list.size(); i++) {
+            int a = list.strideLog2(i);
+            slotPattern[i * PATTERNS_PER_PATCH] = patterns.interior(a);
+            for (Side side : Side.values()) {
+                slotPattern[i * PATTERNS_PER_PATCH + 1 + side.ordinal()] =
+                        patterns.edge(side, a, list.sideStrideLog2(i, side));
+            }
+        }
+        for (int s = 0; s < slots; s++) {
+            runLength[slotPattern[s]]++;
+        }
+        int start = 0;
+        for (int p = 0; p < runStart.length; p++) {
+            runStart[p] = start;
+            start += runLength[p];
+        }
+        // 2. instance data sorted by pattern (counting sort), streamed into a fresh buffer store
+        if (staging.capacity() < slots * STRIDE) {
+            staging = MemoryUtil.memRealloc(staging, slots * STRIDE * 2);
+        }
+        System.arraycopy(runStart, 0, cursor, 0, cursor.length);
+        for (int s = 0; s < slots; s++) {
+            writeInstance(list, s / PATTERNS_PER_PATCH, cursor[slotPattern[s]]++, copyOffsets);
+        }
+        staging.position(0).limit(slots * STRIDE);
+        instances.allocate(slots * STRIDE, GL_STREAM_DRAW);
+        instances.update(staging);
+        staging.clear();
+        // 3. one instanced draw per pattern in use
+        vao.bind();
+        instances.bind();
+        for (int p = 0; p < runStart.length; p++) {
+            if (runLength[p] == 0 || patterns.count(p) == 0) {
+                continue;
+            }
+            long base = (long) runStart[p] * STRIDE;
+            glVertexAttribIPointer(1, 4, GL_INT, STRIDE, base);
+            glVertexAttribIPointer(2, 4, GL_INT, STRIDE, base + 16);
+            glVertexAttribIPointer(3, 4, GL_INT, STRIDE, base + 32);
+            glVertexAttribPointer(4, 2, GL_FLOAT, false, STRIDE, base + 48);
+            glDrawElementsInstanced(GL_TRIANGLES, patterns.count(p), GL_UNSIGNED_INT,
+                    (long) patterns.first(p) * Integer.BYTES, runLength[p]);
+            stats.add(1, (long) patterns.count(p) / 3 * runLength[p]);
+        }
+        glBindVertexArray(0);
+    }
+
+    private void writeInstance(PatchList list, int i, int slot, float[] copyOffsets) {
+        int at = slot * STRIDE;
+        staging.putInt(at, list.originSampleX(i));
+        staging.putInt(at + 4, list.originSampleZ(i));
+        staging.putInt(at + 8, list.sampleStep(i));
+        staging.putInt(at + 12, list.level(i));
+        for (Side side : Side.values()) {
+            staging.putInt(at + 16 + 4 * side.ordinal(), list.sideLevel(i, side));
+        }
+        for (Corner corner : Corner.values()) {
+            staging.putInt(at + 32 + 4 * corner.ordinal(), list.cornerLevel(i, corner));
+        }
+        staging.putFloat(at + 48, copyOffsets[2 * list.copy(i)]);
+        staging.putFloat(at + 52, copyOffsets[2 * list.copy(i) + 1]);
+    }
+
+    @Override
+    public void close() {
+        grid.close();
+        elements.close();
+        instances.close();
+        vao.close();
+        if (staging != null) {
+            MemoryUtil.memFree(staging);
+            staging = null;
+        }
+    }
+}

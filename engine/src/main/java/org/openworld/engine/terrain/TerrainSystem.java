@@ -1,0 +1,223 @@
+package org.openworld.engine.terrain;
+
+import static org.lwjgl.opengl.GL11C.*;
+
+import java.util.List;
+import java.util.function.Consumer;
+import org.joml.Vector3f;
+import org.joml.Vector3fc;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.culling.Cullable;
+import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * The mountains: generates (or imports) the height field with its pyramid and snow map, publishes it as the world's
+ * {@link HeightField}, and draws it as geomipmapped patches chosen by a {@link PatchSelection} among those the
+ * culling system left visible.
+ *
+ * <p>Frame by frame: {@link #update} keeps the copies of a periodic tile centred on the camera (so the world has no
+ * edge) and refreshes the {@link Cullable}; the culling system tests it against the pass camera; {@link #render}
+ * chooses the cut and draws it with one instanced call per index pattern.
+ *
+ * <p>Order: the {@link Cullable} and the {@link HeightField} are attached at init and the copy offsets are refreshed in
+ * update, which always precedes every pass's render, so neither needs an order edge; the terrain only declares that
+ * it reads the {@link Visibility} the culling writes in each pass, and the {@link Camera} it follows.
+ */
+public final class TerrainSystem implements EngineSystem {
+
+    /**
+     * How far from the camera's tile copies of a periodic tile are drawn, metres: beyond the distance at which the
+     * default fog has swallowed the ground, so the world shows no edge.
+     */
+    static final double COPY_DISTANCE = 12_000;
+    /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
+    static final int MAX_COPY_RADIUS = 3;
+    /** Texture units: the terrain's maps first, then the materials. */
+    private static final int UNIT_HEIGHTS = 0;
+    private static final int UNIT_GRADIENTS = 1;
+    private static final int UNIT_SNOW = 2;
+    private static final int UNIT_MATERIALS = 3;
+
+    private final Consumer<String> progress;
+    private TerrainData data;
+    private TerrainQuadtree tree;
+    private PatchSelection selection;
+    private final PatchList patches = new PatchList();
+    private PatchPatterns patterns;
+    private TerrainMaps maps;
+    private TerrainMaterials materials;
+    private PatchRenderer renderer;
+    private ShaderProgram program;
+    private Uniform.Int colouring;
+    private TerrainMaterials.Uniforms materialUniforms;
+    private int entity;
+    private float[] copyOffsets;
+    private long copyCentreX = Long.MIN_VALUE;
+    private long copyCentreZ = Long.MIN_VALUE;
+    /** Where levels are chosen from while {@code terrain-debug.freeze-lod} is on; null while it is off. */
+    private Vector3f frozenEye;
+
+    /** A terrain that reports nothing while it generates. */
+    public TerrainSystem() {
+        this(message -> { });
+    }
+
+    /** @param progress receives one line per generation stage with its time, e.g. for the console */
+    public TerrainSystem(Consumer<String> progress) {
+        this.progress = progress;
+    }
+
+    @Override
+    public SystemSpec spec() {
+        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class).draws(Pass.MAIN);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of(TerrainSettings.SETTINGS, LodSettings.SETTINGS, MaterialSettings.SETTINGS,
+                TerrainDebugSettings.SETTINGS);
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        Settings settings = context.settings();
+        int seed = settings.get(EngineSettings.class).seed();
+        // 1. the data: heights, pyramid and snow map, off the GPU
+        TerrainSettings terrain = settings.get(TerrainSettings.class);
+        progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
+                : "generating " + terrain.size() + "² samples, seed " + seed));
+        StageTimes times = new StageTimes(stage -> progress.accept(
+                String.format(java.util.Locale.ROOT, "terrain: %-10s %7.0f ms", stage.name(), stage.ms())));
+        data = TerrainData.create(terrain, seed, times);
+        HeightMap base = data.pyramid().base();
+        context.world().setResource(HeightField.class, base::heightAt);
+        // 2. the quadtree and its boxes, handed to the culling system
+        int cells = settings.get(LodSettings.class).patchVertices() - 1;
+        tree = new TerrainQuadtree(data.pyramid(), cells);
+        selection = new PatchSelection(tree);
+        patterns = new PatchPatterns(cells);
+        entity = context.world().spawn();
+        copyOffsets = new float[] {0, 0};
+        context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
+        // 3. the GPU side: maps, materials, the shared patch geometry and the program
+        maps = new TerrainMaps(context.gl(), data.pyramid(), data.snow());
+        materials = new TerrainMaterials(context.gl(), seed);
+        renderer = new PatchRenderer(context.gl(), patterns);
+        program = context.shaders().program("terrain/terrain.vert", "terrain/terrain.frag");
+        program.use();
+        program.sampler("heights", UNIT_HEIGHTS);
+        program.sampler("gradients", UNIT_GRADIENTS);
+        program.sampler("snowMap", UNIT_SNOW);
+        program.int1("mapSize").set(base.size());
+        program.float1("spacing").set((float) base.spacing());
+        program.int1("cells").set(cells);
+        program.int1("periodic").set(base.periodic() ? 1 : 0);
+        program.float1("extent").set((float) base.extent());
+        program.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
+        colouring = program.int1("colouring");
+        materialUniforms = TerrainMaterials.uniforms(program);
+    }
+
+    @Override
+    public void update(World world, double step) {
+        HeightMap base = data.pyramid().base();
+        if (!base.periodic()) {
+            return;
+        }
+        // Copies of the periodic tile on a square around the tile under the camera: a world without an edge.
+        double extent = base.extent();
+        var pose = world.resource(Camera.class).pose();
+        long cx = Math.round(pose.x() / extent);
+        long cz = Math.round(pose.z() / extent);
+        if (cx == copyCentreX && cz == copyCentreZ) {
+            return;
+        }
+        copyCentreX = cx;
+        copyCentreZ = cz;
+        int radius = (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
+        int side = 2 * radius + 1;
+        copyOffsets = new float[2 * side * side];
+        int c = 0;
+        for (int dz = -radius; dz <= radius; dz++) {
+            for (int dx = -radius; dx <= radius; dx++) {
+                copyOffsets[c++] = (float) ((cx + dx) * extent);
+                copyOffsets[c++] = (float) ((cz + dz) * extent);
+            }
+        }
+        world.add(entity, new Cullable(tree.bounds(), copyOffsets));
+    }
+
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        World world = context.world();
+        Settings settings = world.resource(Settings.class);
+        LodSettings lod = settings.get(LodSettings.class);
+        TerrainDebugSettings debug = settings.get(TerrainDebugSettings.class);
+        // 1. the cut: the paper's level rule over the quadtree (or its flat grid), visible patches only
+        Visibility visibility = world.get(entity, Visibility.class)
+                .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
+        Vector3fc eye = context.camera().position();
+        if (debug.freezeLod()) {
+            frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
+            eye = frozenEye;
+        } else {
+            frozenEye = null;
+        }
+        long t0 = System.nanoTime();
+        selection.select(eye, copyOffsets, lod.baseResolution(), lod.mode(), visibility, patches);
+        double selectMs = (System.nanoTime() - t0) / 1e6;
+        Counters counters = world.resource(Counters.class);
+        String prefix = "terrain." + pass.label() + ".";
+        counters.add(prefix + "patches", patches.size());
+        counters.add(prefix + "culled", selection.culledPatches());
+        counters.add(prefix + "select-ms", selectMs);
+        // 2. the maps, the materials and the view options
+        program.use();
+        maps.heights.bind(UNIT_HEIGHTS);
+        maps.gradients.bind(UNIT_GRADIENTS);
+        maps.snow.bind(UNIT_SNOW);
+        materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
+        colouring.set(debug.colouring().ordinal());
+        // 3. the patches, front faces only
+        glEnable(GL_DEPTH_TEST);
+        glDepthMask(true);
+        glEnable(GL_CULL_FACE);
+        if (debug.wireframe()) {
+            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        }
+        renderer.draw(patches, copyOffsets, context.stats());
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glDisable(GL_CULL_FACE);
+    }
+
+    /** The generated or imported data, for tools that show it (the heightmap command, tests). */
+    public TerrainData data() {
+        return data;
+    }
+
+    @Override
+    public void close() {
+        for (AutoCloseable c : new AutoCloseable[] {program, renderer, materials, maps}) {
+            if (c != null) {
+                try {
+                    c.close();
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }
+        }
+    }
+}

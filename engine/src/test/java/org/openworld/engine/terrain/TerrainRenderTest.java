@@ -1,0 +1,129 @@
+package org.openworld.engine.terrain;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.openworld.engine.Engine;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.environment.DaylightSystem;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.Image;
+
+/**
+ * The terrain rendered headless on small worlds: the stitching leaves no crack between levels, and the default
+ * materials put snow on the heights and grass in the valleys. Pictures go to {@code target/test-images/}.
+ */
+class TerrainRenderTest {
+
+    static final int WIDTH = 320;
+    static final int HEIGHT = 180;
+
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
+
+    /**
+     * Levels are chosen from a point on the ground in the middle of the tile, then frozen; the camera climbs and looks
+     * down at the cut from outside. Coloured by level with no sky behind, any gap between patches (in x/z from a
+     * T-junction, or vertical from two levels disagreeing on a shared vertex's height) shows the black clear colour.
+     */
+    @Test
+    void everyLevelPresentAndNoCrackLetsTheBackgroundThrough() throws IOException {
+        for (String mode : List.of("quadtree", "flat-grid")) {
+            try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                    List.of("terrain.size=256", "lod.patch-vertices=33", "lod.base-resolution=16", "lod.mode=" + mode,
+                            "terrain-debug.colouring=levels", "terrain-debug.freeze-lod=on"),
+                    new TerrainSystem(), new CullingSystem())) {
+                TerrainSystem terrain = terrain(engine);
+                HeightMap map = terrain.data().pyramid().base();
+                Camera camera = engine.world().resource(Camera.class);
+                camera.setPose(new CameraPose(0, map.heightAt(0, 0) + 2, 0, 0, -10, 60));
+                frame(engine);
+                // from outside: high above the south edge, looking north and steeply down over the tile
+                camera.setPose(new CameraPose(0, map.max() + 300, map.extent() * 0.6, 0, -60, 50));
+                Image image = frame(engine);
+                image.writePng(Path.of("target/test-images/terrain-cut-" + mode + ".png"));
+
+                int background = 0;
+                Set<Integer> colours = new HashSet<>();
+                for (int y = 0; y < HEIGHT; y++) {
+                    for (int x = 0; x < WIDTH; x++) {
+                        int r = image.channel(x, y, 0), g = image.channel(x, y, 1), b = image.channel(x, y, 2);
+                        if (r + g + b < 6) {
+                            background++;
+                        }
+                        colours.add(hueBucket(r, g, b));
+                    }
+                }
+                assertEquals(0, background, mode + ": pixels where the background shows through the terrain");
+                assertTrue(colours.size() >= 4, mode + ": expected at least four level colours, saw " + colours.size());
+            }
+        }
+    }
+
+    /**
+     * The default world (2048² samples, seed 1) from the demo's starting pose at noon, with the default materials:
+     * snow (bright, grey) high in the picture, grass (green) low.
+     */
+    @Test
+    void defaultWorldShowsSnowAboveAndGreenBelow() throws IOException {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                new TerrainSystem(), new CullingSystem(), new DaylightSystem())) {
+            engine.world().setResource(new TimeOfDay(12.0, 0));
+            engine.world().resource(Camera.class).setPose(new CameraPose(0, 400, 900, 0, -8, 60));
+            Image image = frame(engine);
+            image.writePng(Path.of("target/test-images/terrain-default-noon.png"));
+
+            double snowRows = 0, snow = 0, greenRows = 0, green = 0;
+            for (int y = 0; y < HEIGHT; y++) {
+                for (int x = 0; x < WIDTH; x++) {
+                    int r = image.channel(x, y, 0), g = image.channel(x, y, 1), b = image.channel(x, y, 2);
+                    if (Math.min(r, Math.min(g, b)) > 170 && Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) < 40) {
+                        snow++;
+                        snowRows += y;
+                    } else if (g > r * 1.05 && g > b * 1.05) {
+                        green++;
+                        greenRows += y;
+                    }
+                }
+            }
+            int pixels = WIDTH * HEIGHT;
+            assertTrue(snow > pixels * 0.01, "snow covers " + snow + " pixels");
+            assertTrue(green > pixels * 0.01, "grass covers " + green + " pixels");
+            assertTrue(snowRows / snow < greenRows / green,
+                    "snow lies above grass: mean rows " + snowRows / snow + " vs " + greenRows / green);
+        }
+    }
+
+    private static TerrainSystem terrain(Engine engine) {
+        return (TerrainSystem) engine.order().systems().stream().filter(s -> s instanceof TerrainSystem)
+                .findFirst().orElseThrow();
+    }
+
+    private static Image frame(Engine engine) {
+        engine.update();
+        engine.render();
+        return engine.readImage();
+    }
+
+    /** Coarse hue classes of saturated colours (the level palette); greys count as one class. */
+    private static int hueBucket(int r, int g, int b) {
+        int max = Math.max(r, Math.max(g, b));
+        int min = Math.min(r, Math.min(g, b));
+        if (max - min < 30) {
+            return -1;
+        }
+        float[] hsb = java.awt.Color.RGBtoHSB(r, g, b, null);
+        return Math.round(hsb[0] * 12) % 12;
+    }
+}

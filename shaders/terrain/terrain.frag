@@ -1,0 +1,52 @@
+#version 330 core
+// Terrain surface: the slope from the gradient map gives the tangent frame, the snow map and the height choose the
+// materials (terrain/material.glsl), then the shared fog and the display transform.
+#include "common/frame.glsl"
+#include "common/fog.glsl"
+#include "common/color.glsl"
+#include "terrain/material.glsl"
+
+in vec3 wsPos;
+flat in int lodLevel;
+out vec4 fragColor;
+
+uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered
+uniform sampler2D snowMap;     // snow coverage 0..1
+uniform float extent;          // metres per map tile
+uniform vec2 heightRange;      // lowest height, 1 / (highest - lowest), metres
+uniform int colouring;         // 0 shaded, 1 by level (figure 6), 2 tangent space (figure 4)
+
+// A distinct colour per level, so the quadtree cut reads at a glance.
+vec3 levelColour(int level) {
+    const vec3 palette[8] = vec3[8](vec3(0.90, 0.20, 0.15), vec3(0.95, 0.60, 0.10), vec3(0.90, 0.90, 0.20),
+                                    vec3(0.30, 0.80, 0.25), vec3(0.15, 0.70, 0.80), vec3(0.20, 0.35, 0.90),
+                                    vec3(0.60, 0.30, 0.85), vec3(0.85, 0.85, 0.85));
+    return palette[min(level, 7)];
+}
+
+void main() {
+    vec2 uv = wsPos.xz / extent + 0.5;
+    vec2 slope = texture(gradients, uv).xy;
+    TerrainSurface s;
+    s.wsPos = wsPos;
+    s.wsTangent = normalize(vec3(1.0, slope.x, 0.0));
+    s.wsBitangent = normalize(vec3(0.0, slope.y, 1.0));
+    s.wsNormal = normalize(vec3(-slope.x, 1.0, -slope.y));
+    s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
+    s.snow = texture(snowMap, uv).r;
+    vec3 color;
+    if (colouring == 2) {
+        // Figure 4: the local frame as colour: the tangent's rise (slope along x) red, the normal's height
+        // (flatness) green, the bitangent's rise (slope along z) blue; squared into linear light
+        color = 0.5 + 0.5 * vec3(s.wsTangent.y, s.wsNormal.y, s.wsBitangent.y);
+        color = color * color;
+    } else {
+        color = shadeTerrain(s);
+        if (colouring == 1) {
+            float lightness = dot(color, vec3(0.2126, 0.7152, 0.0722));
+            color = levelColour(lodLevel) * (0.25 + 1.5 * lightness);
+        }
+        color = applyFog(color, wsPos);
+    }
+    fragColor = vec4(displayColor(color), 1.0);
+}

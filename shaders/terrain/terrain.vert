@@ -1,0 +1,52 @@
+#version 330 core
+// Geomipmapped terrain patches (engine: org.openworld.engine.terrain.PatchRenderer). Every patch is the same grid
+// of (N+1)² vertices; the instance says where it lies, how far apart its vertices are and which pyramid level each
+// of its vertices reads. Heights come from the R32F pyramid texture, level L = pyramid level L, read exactly.
+#include "common/frame.glsl"
+
+layout(location = 0) in vec2 gridPos;         // column, row in 0..N
+layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample z, samples per grid step, level
+layout(location = 2) in ivec4 sideLevels;     // north, east, south, west
+layout(location = 3) in ivec4 cornerLevels;   // north-west, north-east, south-east, south-west
+layout(location = 4) in vec2 copyOffset;      // metres
+
+uniform sampler2D heights;
+uniform int mapSize;        // level-0 samples per side
+uniform float spacing;      // metres between level-0 samples
+uniform int cells;          // N, grid cells per patch side
+uniform int periodic;       // 1: the map wraps (generated), 0: it clamps (imported)
+
+out vec3 wsPos;
+flat out int lodLevel;
+
+// The level a vertex reads: a stitched side reads its coarser neighbour's level, a corner the coarsest of the
+// patches that meet there, so every patch computes the same height for a shared vertex (no cracks).
+int vertexLevel(ivec2 g) {
+    bool north = g.y == 0, south = g.y == cells, west = g.x == 0, east = g.x == cells;
+    if (north && west) return cornerLevels.x;
+    if (north && east) return cornerLevels.y;
+    if (south && east) return cornerLevels.z;
+    if (south && west) return cornerLevels.w;
+    if (north) return sideLevels.x;
+    if (east) return sideLevels.y;
+    if (south) return sideLevels.z;
+    if (west) return sideLevels.w;
+    return patchInfo.w;
+}
+
+float heightAt(ivec2 sampleIndex, int level) {
+    int n = mapSize >> level;
+    ivec2 texel = sampleIndex >> level;
+    texel = periodic == 1 ? (texel & (n - 1)) : clamp(texel, ivec2(0), ivec2(n - 1));
+    return texelFetch(heights, texel, level).r;
+}
+
+void main() {
+    ivec2 g = ivec2(gridPos);
+    ivec2 sampleIndex = patchInfo.xy + g * patchInfo.z;
+    vec2 xz = (vec2(sampleIndex) - 0.5 * float(mapSize)) * spacing + copyOffset;
+    wsPos = vec3(xz.x, heightAt(sampleIndex, vertexLevel(g)), xz.y);
+    lodLevel = patchInfo.w;
+    gl_ClipDistance[0] = dot(vec4(wsPos, 1.0), frame.clipPlane);
+    gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
+}
