@@ -15,11 +15,13 @@ class CameraPathAssetsTest {
     @Test
     void valleyIsALowFlightNearTheCentre() throws CameraPathFormatException {
         CameraPath valley = CameraPathParser.parseResource("assets/paths/valley.path");
-        assertEquals(HeightReference.SEA, valley.heights());
+        assertEquals(HeightReference.GROUND, valley.heights());
         assertEquals(30, valley.duration(), 1e-9);
+        HeightField hills = (x, z) -> 300 + 20 * Math.sin(x / 10) * Math.cos(z / 15);
         for (double t = 0; t <= valley.duration(); t += 0.1) {
-            CameraPose pose = valley.sample(t, HeightField.FLAT);
-            assertTrue(pose.y() >= 60 && pose.y() <= 200, "y " + pose.y() + " at t=" + t);
+            CameraPose pose = valley.sample(t, hills);
+            double above = pose.y() - hills.heightAt(pose.x(), pose.z());
+            assertTrue(above >= 60 && above <= 200, "height above ground " + above + " at t=" + t);
             assertTrue(Math.abs(pose.x()) <= 1500 && Math.abs(pose.z()) <= 1500, pose + " at t=" + t);
         }
     }
