@@ -14,13 +14,17 @@ import org.openworld.engine.gl.Texture2D;
  *   <li>{@code gradients}: (∂h/∂x, ∂h/∂z) of level 0 by central differences, RG16F with box-filtered mips. A
  *       gradient averages correctly under filtering (a normal would not), so distant coarse patches still shade
  *       with the slope of every sample beneath them;</li>
- *   <li>{@code snow}: the snow map's coverage, R8 with mips, filtered to soften its edges.</li>
+ *   <li>{@code snow}: the snow map's coverage, blurred by {@value #SNOW_BLUR_PASSES} binomial passes (a Gaussian of
+ *       σ ≈ 1.7 texels) before upload, R8 with mips: the 0/1 map's texel squares would otherwise show as blocks
+ *       close up, and the blur turns them into soft drifts that the material's threshold shapes.</li>
  * </ul>
  * Periodic maps repeat; imported ones clamp. Uploads go in strips of rows, so an 8192² map needs a staging buffer
  * of a few megabytes, not of the whole map.
  */
 final class TerrainMaps implements AutoCloseable {
 
+    /** Passes of the (1 4 6 4 1)/16 kernel over the snow map; variances add, σ = √(passes · 1) texels. */
+    static final int SNOW_BLUR_PASSES = 3;
     /** Rows uploaded per call: bounds the staging buffer at 8192 × 64 × 2 floats = 4 MiB. */
     private static final int STRIP_ROWS = 64;
 
@@ -43,7 +47,8 @@ final class TerrainMaps implements AutoCloseable {
             uploadGradients(g, base);
             g.generateMipmaps();
             s = Texture2D.withMips(gl, snowMap.size(), snowMap.size(), Texture2D.Format.R8, wrap);
-            ByteBuffer coverage = MemoryUtil.memAlloc(snowMap.coverage().length).put(snowMap.coverage()).flip();
+            byte[] soft = blur(snowMap.coverage(), snowMap.size(), snowMap.periodic());
+            ByteBuffer coverage = MemoryUtil.memAlloc(soft.length).put(soft).flip();
             try {
                 s.upload(0, 0, snowMap.size(), coverage);
             } finally {
@@ -61,6 +66,40 @@ final class TerrainMaps implements AutoCloseable {
         heights = h;
         gradients = g;
         snow = s;
+    }
+
+    /** The coverage low-passed along rows and then columns, {@link #SNOW_BLUR_PASSES} times, wrapping or clamping. */
+    static byte[] blur(byte[] coverage, int size, boolean periodic) {
+        float[] a = new float[coverage.length];
+        for (int i = 0; i < a.length; i++) {
+            a[i] = coverage[i] & 0xFF;
+        }
+        float[] b = new float[a.length];
+        for (int pass = 0; pass < SNOW_BLUR_PASSES; pass++) {
+            binomial(a, b, size, 1, size, periodic);
+            binomial(b, a, size, size, 1, periodic);
+        }
+        byte[] out = new byte[a.length];
+        for (int i = 0; i < a.length; i++) {
+            out[i] = (byte) Math.round(a[i]);
+        }
+        return out;
+    }
+
+    /** One (1 4 6 4 1)/16 pass: {@code step} between taps, {@code lineStep} between the lines filtered. */
+    private static void binomial(float[] from, float[] to, int size, int step, int lineStep, boolean periodic) {
+        final float[] weights = {1 / 16f, 4 / 16f, 6 / 16f, 4 / 16f, 1 / 16f};
+        for (int line = 0; line < size; line++) {
+            int base = line * lineStep;
+            for (int i = 0; i < size; i++) {
+                float sum = 0;
+                for (int t = -2; t <= 2; t++) {
+                    int j = periodic ? (i + t) & (size - 1) : Math.max(0, Math.min(size - 1, i + t));
+                    sum += weights[t + 2] * from[base + j * step];
+                }
+                to[base + i * step] = sum;
+            }
+        }
     }
 
     private static void uploadHeights(Texture2D texture, int level, HeightMap map) {

@@ -105,6 +105,34 @@ class TerrainRenderTest {
         }
     }
 
+    /**
+     * Culling frozen on the ground, then seen from above: only the patches inside the frozen frustum are drawn (fewer
+     * than the same view culls normally), and the frozen frustum's outline shows where it was.
+     */
+    @Test
+    void frozenCullingKeepsTheOldFrustumWhenTheCameraFliesOut() throws IOException {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=512", "terrain.spacing=8", "culling.freeze=on", "terrain-debug.freeze-lod=on"),
+                new TerrainSystem(), new CullingSystem(), new DaylightSystem())) {
+            Camera camera = engine.world().resource(Camera.class);
+            HeightMap map = terrain(engine).data().pyramid().base();
+            camera.setPose(new CameraPose(0, map.heightAt(0, 600) + 30, 600, 0, 0, 60));
+            frame(engine);
+            camera.setPose(new CameraPose(0, 3500, 2600, 0, -50, 60));
+            Image image = frame(engine);
+            image.writePng(Path.of("target/test-images/terrain-frozen-culling.png"));
+            double[] frozenPatches = new double[1];
+            engine.collectFrames(true, r -> frozenPatches[0] = r.counters().get("terrain.main.patches"));
+
+            engine.settings().set("culling.freeze", "off");
+            frame(engine);
+            double[] livePatches = new double[1];
+            engine.collectFrames(true, r -> livePatches[0] = r.counters().get("terrain.main.patches"));
+            assertTrue(frozenPatches[0] > 0 && frozenPatches[0] < livePatches[0],
+                    "frozen frustum draws " + frozenPatches[0] + " patches, the live one " + livePatches[0]);
+        }
+    }
+
     private static TerrainSystem terrain(Engine engine) {
         return (TerrainSystem) engine.order().systems().stream().filter(s -> s instanceof TerrainSystem)
                 .findFirst().orElseThrow();
