@@ -4,14 +4,10 @@ import org.openworld.engine.Engine;
 
 import static org.junit.jupiter.api.Assertions.*;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.bench.SummaryJson;
 import org.openworld.engine.gl.Image;
@@ -22,44 +18,20 @@ class CommandLineTest {
     @TempDir
     Path dir;
 
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
-    private PrintStream savedOut;
-    private PrintStream savedErr;
-
-    @BeforeEach
-    void capture() {
-        savedOut = System.out;
-        savedErr = System.err;
-        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
-        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-    }
-
-    @AfterEach
-    void restore() {
-        System.setOut(savedOut);
-        System.setErr(savedErr);
-    }
-
-    private String stdout() {
-        return out.toString(StandardCharsets.UTF_8);
-    }
-
-    private String stderr() {
-        return err.toString(StandardCharsets.UTF_8);
-    }
+    @RegisterExtension
+    final ConsoleCapture console = new ConsoleCapture();
 
     @Test
     void shotWritesAnImageOfTheAskedSize() throws Exception {
         Path png = dir.resolve("shot.png");
-        assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90"), stderr());
+        assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90"), console.stderr());
         Image image = Image.read(png);
         assertEquals(160, image.width());
         assertEquals(90, image.height());
         // The default view shows blue sky above and green-grey ground below.
         assertTrue(blueness(image, 0, 20) > 15, "sky at the top should be blue");
         assertTrue(blueness(image, 70, 90) < 5, "ground at the bottom should not be blue");
-        assertTrue(stdout().contains("llvmpipe") || stdout().contains("wrote"), stdout());
+        assertTrue(console.stdout().contains("llvmpipe") || console.stdout().contains("wrote"), console.stdout());
     }
 
     @Test
@@ -88,22 +60,22 @@ class CommandLineTest {
     void invalidSetValueNamesTheKeyAndRange() {
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--set", "engine.step=5");
         assertEquals(Main.EXIT_USER_ERROR, code);
-        assertTrue(stderr().contains("engine.step") && stderr().contains("0.001 .. 0.1"), stderr());
-        assertFalse(stderr().contains("Exception"), "no stack trace for a user's mistake: " + stderr());
+        assertTrue(console.stderr().contains("engine.step") && console.stderr().contains("0.001 .. 0.1"), console.stderr());
+        assertFalse(console.stderr().contains("Exception"), "no stack trace for a user's mistake: " + console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
     void invalidTimeIsACommandLineError() {
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
-        assertTrue(stderr().contains("--time") && stderr().contains("hours 0–23"), stderr());
+        assertTrue(console.stderr().contains("--time") && console.stderr().contains("hours 0–23"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
     void unknownSetKeyIsAnError() {
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("settings", "--set", "camera.fovv=70"));
-        assertTrue(stderr().contains("unknown setting 'camera.fovv'"), stderr());
+        assertTrue(console.stderr().contains("unknown setting 'camera.fovv'"), console.stderr());
     }
 
     @Test
@@ -112,31 +84,31 @@ class CommandLineTest {
         Files.writeString(path, "# a path\n0 0 100 0 0 0\n1 0 100 abc 0 0\n");
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--path", path.toString());
         assertEquals(Main.EXIT_USER_ERROR, code);
-        assertTrue(stderr().contains(path + ":3:9:"), stderr());
-        assertFalse(stderr().contains("Exception"), stderr());
+        assertTrue(console.stderr().contains(path + ":3:9:"), console.stderr());
+        assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
 
     @Test
     void settingsListsEveryKeyWithItsDefault() {
         assertEquals(0, Main.execute("settings"));
         for (String key : Engine.settingsFor(DemoScene.systems()).keys()) {
-            assertTrue(stdout().contains(key), "missing " + key);
+            assertTrue(console.stdout().contains(key), "missing " + key);
         }
-        assertTrue(stdout().contains("camera.fov") && stdout().contains("deg"));
+        assertTrue(console.stdout().contains("camera.fov") && console.stdout().contains("deg"));
     }
 
     @Test
     void infoPrintsRendererAndFrameOrder() {
         assertEquals(0, Main.execute("info"));
-        assertTrue(stdout().contains("context:   headless-"), stdout());
-        assertTrue(stdout().indexOf("culling") < stdout().indexOf("terrain"), stdout());
+        assertTrue(console.stdout().contains("context:   headless-"), console.stdout());
+        assertTrue(console.stdout().indexOf("culling") < console.stdout().indexOf("terrain"), console.stdout());
     }
 
     @Test
     void benchWritesTheThreeFilesAndCompares() throws Exception {
         Path a = dir.resolve("a");
         assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", a.toString(),
-                "--size", "96x54", "--frames", "12", "--warmup", "2"), stderr());
+                "--size", "96x54", "--frames", "12", "--warmup", "2"), console.stderr());
         assertTrue(Files.exists(a.resolve("frames.csv")));
         assertTrue(Files.exists(a.resolve("frametime.png")));
         var summary = SummaryJson.read(a.resolve("summary.json"));
@@ -149,12 +121,12 @@ class CommandLineTest {
 
         assertEquals(0, Main.execute("bench", "--compare", a.resolve("summary.json").toString(),
                 a.resolve("summary.json").toString()));
-        assertTrue(stdout().contains("frame ms median"), stdout());
+        assertTrue(console.stdout().contains("frame ms median"), console.stdout());
     }
 
     @Test
     void benchWithoutPathSaysWhatItNeeds() {
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("bench", "--out", dir.toString()));
-        assertTrue(stderr().contains("--path"), stderr());
+        assertTrue(console.stderr().contains("--path"), console.stderr());
     }
 }

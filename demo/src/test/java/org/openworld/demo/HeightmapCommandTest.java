@@ -5,15 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.gl.Image;
 
@@ -23,38 +19,14 @@ class HeightmapCommandTest {
     @TempDir
     Path dir;
 
-    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
-    private PrintStream savedOut;
-    private PrintStream savedErr;
-
-    @BeforeEach
-    void capture() {
-        savedOut = System.out;
-        savedErr = System.err;
-        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
-        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-    }
-
-    @AfterEach
-    void restore() {
-        System.setOut(savedOut);
-        System.setErr(savedErr);
-    }
-
-    private String stdout() {
-        return out.toString(StandardCharsets.UTF_8);
-    }
-
-    private String stderr() {
-        return err.toString(StandardCharsets.UTF_8);
-    }
+    @RegisterExtension
+    final ConsoleCapture console = new ConsoleCapture();
 
     @Test
     void writesSixteenBitHeightsSnowAndSpectrumAndPrintsEachStage() throws Exception {
         Path folder = dir.resolve("maps");
         assertEquals(0, Main.execute("heightmap", "--out", folder.toString(), "--seed", "3",
-                "--set", "terrain.size=256", "--set", "terrain.beta=2"), stderr());
+                "--set", "terrain.size=256", "--set", "terrain.beta=2"), console.stderr());
         BufferedImage height = ImageIO.read(folder.resolve(HeightmapCommand.HEIGHT_PNG).toFile());
         assertEquals(256, height.getWidth());
         assertEquals(256, height.getHeight());
@@ -64,21 +36,21 @@ class HeightmapCommandTest {
         Image spectrum = Image.read(folder.resolve(HeightmapCommand.SPECTRUM_PNG));
         assertTrue(spectrum.width() > 400);
         for (String line : new String[] {"synthesis", "pyramid", "snow map", "peak heap", "expected -2 beta = -4.00"}) {
-            assertTrue(stdout().contains(line), "missing '" + line + "' in\n" + stdout());
+            assertTrue(console.stdout().contains(line), "missing '" + line + "' in\n" + console.stdout());
         }
-        String slope = stdout().replaceAll("(?s).*spectrum slope: (-?[0-9.]+).*", "$1");
-        assertEquals(-4.0, Double.parseDouble(slope), 0.15, stdout());
+        String slope = console.stdout().replaceAll("(?s).*spectrum slope: (-?[0-9.]+).*", "$1");
+        assertEquals(-4.0, Double.parseDouble(slope), 0.15, console.stdout());
     }
 
     @Test
     void itsHeightPngImportsAgain() throws Exception {
         Path first = dir.resolve("first");
-        assertEquals(0, Main.execute("heightmap", "--out", first.toString(), "--set", "terrain.size=256"), stderr());
+        assertEquals(0, Main.execute("heightmap", "--out", first.toString(), "--set", "terrain.size=256"), console.stderr());
         Path again = dir.resolve("again");
         String png = first.resolve(HeightmapCommand.HEIGHT_PNG).toString();
         assertEquals(0, Main.execute("heightmap", "--out", again.toString(), "--set", "terrain.import-file=" + png),
-                stderr());
-        assertTrue(stdout().contains("import "), stdout());
+                console.stderr());
+        assertTrue(console.stdout().contains("import "), console.stdout());
         // lowest sample 0 and highest 65535 both times, so the exported heights come back to within rounding
         var a = ImageIO.read(first.resolve(HeightmapCommand.HEIGHT_PNG).toFile()).getRaster();
         var b = ImageIO.read(again.resolve(HeightmapCommand.HEIGHT_PNG).toFile()).getRaster();
@@ -95,19 +67,19 @@ class HeightmapCommandTest {
     @Test
     void repeatPrintsTheMedianOfEachStage() {
         assertEquals(0, Main.execute("heightmap", "--out", dir.toString(), "--set", "terrain.size=256",
-                "--repeat", "3"), stderr());
-        assertTrue(stdout().contains("run 3/3: snow map"), stdout());
-        assertTrue(stdout().contains("median of 3 runs:"), stdout());
-        assertTrue(stdout().matches("(?s).*median of 3 runs:\\s+synthesis\\s+\\d+ ms\\s+pyramid\\s+\\d+ ms"
-                + "\\s+snow map\\s+\\d+ ms\\s+total\\s+\\d+ ms.*"), stdout());
+                "--repeat", "3"), console.stderr());
+        assertTrue(console.stdout().contains("run 3/3: snow map"), console.stdout());
+        assertTrue(console.stdout().contains("median of 3 runs:"), console.stdout());
+        assertTrue(console.stdout().matches("(?s).*median of 3 runs:\\s+synthesis\\s+\\d+ ms\\s+pyramid\\s+\\d+ ms"
+                + "\\s+snow map\\s+\\d+ ms\\s+total\\s+\\d+ ms.*"), console.stdout());
     }
 
     @Test
     void outThatIsAFileIsAUserError() throws Exception {
         Path file = Files.writeString(dir.resolve("taken"), "x");
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", file.toString()));
-        assertTrue(stderr().contains(file + " is a file"), stderr());
-        assertFalse(stderr().contains("Exception"), stderr());
+        assertTrue(console.stderr().contains(file + " is a file"), console.stderr());
+        assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
 
     @Test
@@ -115,13 +87,13 @@ class HeightmapCommandTest {
         Path file = Files.write(dir.resolve("heights.raw"), new byte[1000]);
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", dir.resolve("o").toString(),
                 "--set", "terrain.import-file=" + file));
-        assertTrue(stderr().contains(file.toString()) && stderr().contains("250 float32 samples"), stderr());
-        assertFalse(stderr().contains("Exception"), stderr());
+        assertTrue(console.stderr().contains(file.toString()) && console.stderr().contains("250 float32 samples"), console.stderr());
+        assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
 
     @Test
     void repeatMustBePositive() {
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", dir.toString(), "--repeat", "0"));
-        assertTrue(stderr().contains("--repeat"), stderr());
+        assertTrue(console.stderr().contains("--repeat"), console.stderr());
     }
 }
