@@ -16,11 +16,10 @@ public final class Mesh implements AutoCloseable {
     public record Attribute(int location, int components) {
     }
 
-    private final GlContext gl;
+    private final VertexArray vao;
     private final GpuBuffer vertices;
     private final GpuBuffer indices;
     private final int indexCount;
-    private int vao;
 
     /**
      * @param interleaved vertex data, attributes in {@code layout} order for each vertex
@@ -30,11 +29,9 @@ public final class Mesh implements AutoCloseable {
         if (triangles.length % 3 != 0) {
             throw new IllegalArgumentException("index count " + triangles.length + " is not a multiple of 3");
         }
-        this.gl = gl;
         this.indexCount = triangles.length;
-        this.vao = glGenVertexArrays();
-        gl.objects().created(GlObjects.Kind.VERTEX_ARRAY);
-        glBindVertexArray(vao);
+        this.vao = new VertexArray(gl);
+        vao.bind();
         vertices = new GpuBuffer(gl, GL_ARRAY_BUFFER);
         indices = new GpuBuffer(gl, GL_ELEMENT_ARRAY_BUFFER);
         FloatBuffer vertexData = MemoryUtil.memAllocFloat(interleaved.length).put(interleaved).flip();
@@ -65,7 +62,7 @@ public final class Mesh implements AutoCloseable {
 
     /** Draws every triangle once. */
     public void draw(DrawStats stats) {
-        glBindVertexArray(vao);
+        vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0);
         stats.add(1, triangleCount());
     }
@@ -74,10 +71,6 @@ public final class Mesh implements AutoCloseable {
     public void close() {
         vertices.close();
         indices.close();
-        if (vao != 0) {
-            glDeleteVertexArrays(vao);
-            gl.objects().deleted(GlObjects.Kind.VERTEX_ARRAY);
-            vao = 0;
-        }
+        vao.close();
     }
 }

@@ -33,6 +33,9 @@ final class PatchRenderer implements AutoCloseable {
     private static final int STRIDE = 14 * 4;
     /** Each patch is drawn by five patterns: its interior and its four edge strips. */
     private static final int PATTERNS_PER_PATCH = 5;
+    /** The enum values, kept: {@code values()} copies its array on every call, and these loops run per patch. */
+    private static final Side[] SIDES = Side.values();
+    private static final Corner[] CORNERS = Corner.values();
 
     private final PatchPatterns patterns;
     private final GpuBuffer grid;
@@ -105,7 +108,7 @@ final class PatchRenderer implements AutoCloseable {
         for (int i = 0; i < list.size(); i++) {
             int a = list.strideLog2(i);
             slotPattern[i * PATTERNS_PER_PATCH] = patterns.interior(a);
-            for (Side side : Side.values()) {
+            for (Side side : SIDES) {
                 slotPattern[i * PATTERNS_PER_PATCH + 1 + side.ordinal()] =
                         patterns.edge(side, a, list.sideStrideLog2(i, side));
             }
@@ -155,10 +158,10 @@ final class PatchRenderer implements AutoCloseable {
         staging.putInt(at + 4, list.originSampleZ(i));
         staging.putInt(at + 8, list.sampleStep(i));
         staging.putInt(at + 12, list.level(i));
-        for (Side side : Side.values()) {
+        for (Side side : SIDES) {
             staging.putInt(at + 16 + 4 * side.ordinal(), list.sideLevel(i, side));
         }
-        for (Corner corner : Corner.values()) {
+        for (Corner corner : CORNERS) {
             staging.putInt(at + 32 + 4 * corner.ordinal(), list.cornerLevel(i, corner));
         }
         staging.putFloat(at + 48, copyOffsets[2 * list.copy(i)]);

@@ -198,26 +198,6 @@ public final class SnowMap {
         return coverage[edge(z, size, periodic) * size + edge(x, size, periodic)] != 0;
     }
 
-    /**
-     * Snow cover at world position (x, z), 0 to 1: the bilinear blend of the four nearest samples, so a texture
-     * lookup sees a soft snow line. The map is centred on the origin like a {@link HeightMap}.
-     */
-    public double coverageAt(double x, double z) {
-        double gx = x / spacing + size / 2.0;
-        double gz = z / spacing + size / 2.0;
-        int x0 = (int) Math.floor(gx);
-        int z0 = (int) Math.floor(gz);
-        double fx = gx - x0;
-        double fz = gz - z0;
-        double top = cover(x0, z0) * (1 - fx) + cover(x0 + 1, z0) * fx;
-        double bottom = cover(x0, z0 + 1) * (1 - fx) + cover(x0 + 1, z0 + 1) * fx;
-        return top * (1 - fz) + bottom * fz;
-    }
-
-    private double cover(int x, int z) {
-        return snowAt(x, z) ? 1 : 0;
-    }
-
     /** Fraction of samples that are snow, 0 to 1. */
     public double fraction() {
         long snow = 0;

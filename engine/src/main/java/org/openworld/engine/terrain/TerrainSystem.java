@@ -203,7 +203,7 @@ public final class TerrainSystem implements EngineSystem {
         glDisable(GL_CULL_FACE);
     }
 
-    /** The generated or imported data, for tools that show it (the heightmap command, tests). */
+    /** The generated or imported data, once initialised (tests and tools read the heights the terrain draws). */
     public TerrainData data() {
         return data;
     }

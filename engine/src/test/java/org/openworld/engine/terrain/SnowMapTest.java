@@ -113,15 +113,13 @@ class SnowMapTest {
     }
 
     @Test
-    void coverageAtIsCentredOnTheOriginAndBlendsBetweenSamples() {
+    void fractionCountsTheSnowSamples() {
         int n = 4;
         byte[] c = new byte[n * n];
-        c[2 * n + 2] = SnowMap.SNOW; // sample (2, 2) lies at world (0, 0)
+        c[2 * n + 2] = SnowMap.SNOW;
+        c[3] = SnowMap.SNOW;
         SnowMap snow = new SnowMap(n, 10, false, c);
-        assertEquals(1, snow.coverageAt(0, 0), 1e-12);
-        assertEquals(0.5, snow.coverageAt(5, 0), 1e-12);
-        assertEquals(0.25, snow.coverageAt(-5, -5), 1e-12);
-        assertEquals(0, snow.coverageAt(-20, -20), 1e-12);
-        assertEquals(1.0 / 16, snow.fraction(), 1e-12);
+        assertEquals(2.0 / 16, snow.fraction(), 1e-12);
+        assertTrue(snow.snowAt(2, 2) && snow.snowAt(3, 0) && !snow.snowAt(0, 0));
     }
 }
