@@ -243,18 +243,18 @@ public final class Engine implements AutoCloseable {
                 glClearStencil(0);
                 glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
             }
-            // 3. the systems draw, timed on the GPU as one span per pass
-            timers.begin(pass.label());
+            // 3. the systems draw, each timed on the GPU as one span labelled pass.system
             RenderContext context = new RenderContext(world, camera, stats, scene.width(), scene.height());
             for (EngineSystem system : drawing) {
                 if (!isEnabled(system.spec().name())) {
                     continue;
                 }
                 long t0 = System.nanoTime();
+                timers.begin(pass.label() + "." + system.spec().name());
                 system.render(pass, context);
+                timers.end();
                 systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
             }
-            timers.end();
         }
         timers.endFrame(frame);
         double cpuMs = (System.nanoTime() - frameStart) / 1e6;

@@ -255,7 +255,8 @@ class EngineTest {
         for (int i = 0; i < records.size(); i++) {
             FrameRecord r = records.get(i);
             assertEquals(i, r.frame());
-            assertEquals(List.of("shadow", "reflection", "main", "overlay"), List.copyOf(r.passGpuMs().keySet()));
+            assertEquals(List.of("shadow.shadow", "reflection.mirror", "main.terrain", "main.decals", "overlay.hud"),
+                    List.copyOf(r.passGpuMs().keySet()), "one span per system in each pass, labelled pass.system");
             r.passGpuMs().forEach((pass, ms) -> assertTrue(ms >= 0 && Double.isFinite(ms), pass + ": " + ms));
             assertEquals(triangles, r.triangles());
             assertEquals(5, r.drawCalls());
@@ -283,7 +284,7 @@ class EngineTest {
             assertEquals("0,0,255", rgb(image, SIZE / 4, SIZE * 3 / 4), "decals show without the hud");
             engine.collectFrames(true, records::add);
             FrameRecord r = records.get(0);
-            assertEquals(List.of("shadow", "main"), List.copyOf(r.passGpuMs().keySet()));
+            assertEquals(List.of("shadow.shadow", "main.terrain", "main.decals"), List.copyOf(r.passGpuMs().keySet()));
             assertEquals(2 + 1 + 2, r.triangles());
             assertEquals(3, r.drawCalls());
             assertFalse(r.systemCpuMs().containsKey("hud"));

@@ -12,7 +12,8 @@ import java.util.Map;
  *                   frames in flight (as a swap chain allows): the frame time a viewer sees, milliseconds
  * @param cpuMs      CPU time of the frame's update and render calls, milliseconds
  * @param systemCpuMs CPU time per system (update + render), milliseconds
- * @param passGpuMs  GPU time per pass from timer queries, milliseconds
+ * @param passGpuMs  GPU time per system in each pass from timer queries, keyed {@code pass.system} (e.g.
+ *                   {@code main.sky}), milliseconds
  * @param triangles  triangles submitted in all passes
  * @param drawCalls  draw calls in all passes
  * @param counters   each system's own counters, e.g. {@code terrain.visible}

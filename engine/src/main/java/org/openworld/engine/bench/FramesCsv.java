@@ -14,7 +14,7 @@ import java.util.Map;
  * Writes {@code frames.csv}: one row per recorded frame, for spreadsheets and plotting scripts.
  *
  * <p>Columns: {@code frame,sim_time_s,cpu_ms,frame_ms}, then {@code cpu_ms.<system>} per system,
- * {@code gpu_ms.<pass>} per pass, {@code triangles,draw_calls}, then one column per counter under its own name.
+ * {@code gpu_ms.<pass>.<system>} per system in each pass, {@code triangles,draw_calls}, then one column per counter under its own name.
  * The named columns are the union over all frames in first-seen order ({@link FrameColumns}); a frame without a
  * value leaves its cell empty. Numbers use '.' as the decimal separator whatever the machine's locale
  * ({@link Locale#ROOT}), so a German or French machine writes the same file.

@@ -23,7 +23,7 @@ import java.util.Map;
  * @param frameMs           distribution of {@link FrameRecord#frameMs()}, milliseconds
  * @param meanFps           1000 / mean frame time, frames per second
  * @param cpuMs             distribution of whole-frame CPU time, milliseconds
- * @param passGpuMsMedian   median GPU time per pass, milliseconds
+ * @param passGpuMsMedian   median GPU time per system in each pass ({@code pass.system}), milliseconds
  * @param systemCpuMsMedian median CPU time per system, milliseconds
  * @param countersMedian    median of each system counter, in the counter's own unit
  * @param trianglesMedian   median triangles per frame

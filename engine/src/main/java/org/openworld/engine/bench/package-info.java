@@ -1,10 +1,10 @@
 /**
  * The benchmark recorder's output: per-frame records ({@link org.openworld.engine.bench.FrameRecord}) become
  * {@code frames.csv}, {@code summary.json} (medians and percentiles, with the renderer and every setting) and
- * {@code frametime.png} (per-pass GPU time stacked under the frame time), and two summaries compare side by side
+ * {@code frametime.png} (GPU time per pass and system stacked under the frame time), and two summaries compare side by side
  * with their ratio ({@link org.openworld.engine.bench.BenchComparison}). See {@code docs/benchmarks.md}.
  *
  * <p>A frame's time is its wall-clock interval with at most two frames in flight; CPU time per system and GPU time
- * per pass explain it.
+ * per system in each pass explain it.
  */
 package org.openworld.engine.bench;

@@ -13,7 +13,7 @@ import java.util.Map;
 import java.util.function.BiConsumer;
 
 /**
- * GPU time per labelled span (one span per pass), from {@code GL_TIME_ELAPSED} queries.
+ * GPU time per labelled span (one span per system in each pass), from {@code GL_TIME_ELAPSED} queries.
  *
  * <p>The GPU runs a frame or two behind the CPU, so results are read when they are available, not when the span
  * ends: asking at once would stall the pipeline. Spans are grouped by frame; {@link #collect} hands over every
