@@ -12,13 +12,14 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathRecorder;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.input.InputState;
 
 /**
  * The interactive loop: GLFW events into the world's {@link InputState}, fixed-step updates for the real time
  * that passed, one render, the picture to the screen. Keys the loop itself handles (the camera system handles
- * movement): Esc, Tab or the right mouse button for mouse look, R to record a path, F5 to reload shaders
- * (with {@code --dev}), F1 to print the controls.
+ * movement): Esc, Tab or the right mouse button for mouse look, R to record a path, T, [, ], - and = for the day
+ * cycle ({@link DayCycle}), F5 to reload shaders (with {@code --dev}), F1 to print the controls.
  */
 final class WindowLoop {
 
@@ -30,6 +31,9 @@ final class WindowLoop {
               Arrow keys      turn
               Right mouse     hold to look around (Tab toggles it on and off)
               V               fly / walk
+              T               pause / resume the day cycle
+              [ / ]           a quarter hour earlier / later
+              - / =           day cycle half / twice as fast
               R               start / stop recording a camera path (saved under assets/paths/)
               F5              reload shaders from ./shaders (with --dev)
               F1              print these controls
@@ -44,6 +48,7 @@ final class WindowLoop {
     private final Engine engine;
     private final Optional<CameraPath> replay;
     private final InputState input = new InputState();
+    private final DayCycle day = new DayCycle();
     private CameraPathRecorder recorder;
     private boolean lookToggled;
     private double lastX = Double.NaN;
@@ -92,7 +97,8 @@ final class WindowLoop {
             framesSinceTitle++;
             if (now - titleAt >= TITLE_INTERVAL) {
                 double ms = (now - titleAt) * 1000 / framesSinceTitle;
-                glfwSetWindowTitle(window, String.format("OpenWorld - %.0f fps (%.1f ms)%s", 1000 / ms, ms,
+                glfwSetWindowTitle(window, String.format("OpenWorld - %.0f fps (%.1f ms) - %s%s", 1000 / ms, ms,
+                        DayCycle.describe(time()),
                         recorder != null ? " - recording" : ""));
                 titleAt = now;
                 framesSinceTitle = 0;
@@ -108,6 +114,8 @@ final class WindowLoop {
             if (action == GLFW_PRESS) {
                 input.keyDown(key);
                 onPress(window, key);
+            } else if (action == GLFW_REPEAT && (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET)) {
+                onPress(window, key); // held: keep scrubbing
             } else if (action == GLFW_RELEASE) {
                 input.keyUp(key);
             }
@@ -148,10 +156,23 @@ final class WindowLoop {
                     stopRecording();
                 }
             }
+            case GLFW_KEY_T -> setTime(day.togglePause(time()));
+            case GLFW_KEY_LEFT_BRACKET -> setTime(day.scrub(time(), -1));
+            case GLFW_KEY_RIGHT_BRACKET -> setTime(day.scrub(time(), 1));
+            case GLFW_KEY_MINUS -> setTime(day.changeSpeed(time(), 0.5));
+            case GLFW_KEY_EQUAL -> setTime(day.changeSpeed(time(), 2));
             case GLFW_KEY_F5 -> reloadShaders();
             case GLFW_KEY_F1 -> System.out.println(CONTROLS);
             default -> { }
         }
+    }
+
+    private TimeOfDay time() {
+        return engine.world().resource(TimeOfDay.class);
+    }
+
+    private void setTime(TimeOfDay t) {
+        engine.world().setResource(t);
     }
 
     private void setLooking(long window, boolean looking) {
