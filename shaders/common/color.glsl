@@ -1,4 +1,6 @@
-// Linear light to the display: a filmic tone curve (ACES fit by Narkowicz 2015), then the sRGB transfer.
+// Scene light to the display: the exposure of the moment, a filmic tone curve (ACES fit by Narkowicz 2015), then
+// the sRGB transfer. Engine: org.openworld.engine.environment.Exposure (frame.exposure.x).
+#include "common/frame.glsl"
 
 vec3 toneMapAces(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
@@ -11,7 +13,7 @@ vec3 linearToSrgb(vec3 c) {
     return mix(lo, hi, step(vec3(0.0031308), c));
 }
 
-// Tone-mapped and sRGB-encoded: the last step of every shader that writes the scene colour.
+// Exposed, tone-mapped and sRGB-encoded: the last step of every shader that writes the scene colour.
 vec3 displayColor(vec3 linear) {
-    return linearToSrgb(toneMapAces(linear));
+    return linearToSrgb(toneMapAces(linear * frame.exposure.x));
 }

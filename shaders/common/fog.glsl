@@ -1,23 +1,18 @@
-// Height-dependent exponential fog, the same in every pass (engine: org.openworld.engine.environment.Fog).
-// Optical depth along the ray eye -> p through density(h) = d0 * exp(-k h):
-//   tau = d0 * |p - eye| * (exp(-k h0) - exp(-k h1)) / (k (h1 - h0))
+// Aerial perspective: what the air between the eye and a surface adds and takes away, the same in every pass
+// (paper section 1's distance fog, made physical). The sky system fills the table for the eye's altitude and the
+// sun of the moment (engine: org.openworld.engine.sky.AerialPerspective): per view direction and distance, the
+// light scattered into the ray (display units) and the mean transmittance. Seen colour:
+//   c' = c * transmittance + inScattered
+// Without a sky system the engine binds a neutral table (nothing added, everything transmitted).
 #include "common/frame.glsl"
+#include "sky/atmosphere.glsl"
 
-float fogOpticalDepth(vec3 wsEye, vec3 wsPos) {
-    float d0 = frame.fogColorDensity.w;
-    float k = frame.timeInfo.w;
-    float dist = length(wsPos - wsEye);
-    float h0 = wsEye.y;
-    float h1 = wsPos.y;
-    float dh = h1 - h0;
-    // For a level ray the integral tends to exp(-k h0); the series form avoids dividing by ~0.
-    float mean = abs(k * dh) < 1e-3 ? exp(-k * h0) * (1.0 - 0.5 * k * dh)
-                                    : (exp(-k * h0) - exp(-k * h1)) / (k * dh);
-    return d0 * dist * mean;
-}
+uniform sampler3D aerialPerspective; // bound by the engine (gl.SharedTexture.AERIAL_PERSPECTIVE)
 
-// The colour seen at wsPos after the fog between it and the eye.
+// The colour seen at wsPos after the air between it and the eye.
 vec3 applyFog(vec3 linearColor, vec3 wsPos) {
-    float transmittance = exp(-fogOpticalDepth(cameraPos(), wsPos));
-    return mix(frame.fogColorDensity.rgb, linearColor, transmittance);
+    vec3 toPoint = wsPos - cameraPos();
+    float distance = length(toPoint);
+    vec4 air = texture(aerialPerspective, aerialPerspectiveUvw(toPoint / max(distance, 1e-3), sunDir(), distance));
+    return linearColor * air.a + air.rgb;
 }

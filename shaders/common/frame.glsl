@@ -9,11 +9,11 @@ layout(std140) uniform FrameBlock {
     mat4 invViewProjection;
     vec4 cameraPosNear;   // xyz: eye, world space (m); w: near plane (m)
     vec4 sunDirFar;       // xyz: unit vector towards the sun, world space; w: far plane (m)
-    vec4 sunColor;        // rgb: direct sunlight at the ground, linear
-    vec4 ambientColor;    // rgb: sky light on an upward surface, linear
-    vec4 fogColorDensity; // rgb: fog colour, linear; w: extinction at sea level (1/m)
+    vec4 sunColor;        // rgb: direct sunlight at the eye, display units (1 = the sun above the atmosphere)
+    vec4 ambientColor;    // rgb: sky light on an upward surface, display units
+    vec4 exposure;        // x: scene (display units, 1 = white under the sun above the air) -> tone mapper input; yzw: 0
     vec4 clipPlane;       // world-space plane; dot(vec4(wsPos, 1), clipPlane) < 0 is cut
-    vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: fog height falloff (1/m)
+    vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
 } frame;
 

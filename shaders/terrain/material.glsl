@@ -3,7 +3,6 @@
 // Engine side: org.openworld.engine.terrain.TerrainMaterials (binds everything below), TerrainTextures (synthesis).
 //
 //   vec3 shadeTerrain(TerrainSurface s)   linear RGB, lit, before fog
-//   vec3 skyReflection(vec3 wsDir, float lod)   the stand-in sky's radiance in a direction (lod 0 sharp .. 6 blurred)
 //
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
@@ -12,13 +11,13 @@
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
-//   5. light: Lambert sun and hemisphere sky, normalised Blinn-Phong highlight and a Fresnel-weighted sky reflection,
-//      both scaled by the gloss map
+//   5. light: Lambert sun and hemisphere sky, normalised Blinn-Phong highlight and a Fresnel-weighted reflection of
+//      the environment map (the sky system's), both scaled by the gloss map
 #include "common/frame.glsl"
+#include "common/environment.glsl"
 
 uniform sampler2DArray uMatAlbedo; // layers MAT_GRASS, MAT_ROCK, MAT_SNOW; sRGB-stored colour, sampled linear
 uniform sampler2DArray uMatDetail; // rg: tangent-space normal xy * 0.5 + 0.5; b: relief 0..1; a: gloss 0..1
-uniform samplerCube uMatSky;       // sky radiance for the reference ambient light (MAT_AMBIENT_REFERENCE)
 uniform float uMatDetailScale;     // metres per fine tile
 uniform int uMatSnowMode;          // MAT_SNOW_MAP or MAT_ALTITUDE_BANDS
 uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
@@ -59,15 +58,6 @@ const float MAT_LAYER_SOFTNESS = 0.15; // relief units over which a layer's cove
 // 5. light
 const float MAT_F0 = 0.04;           // Fresnel reflectance at normal incidence of rock, leaves and ice (IOR ~1.3-1.5)
 const float MAT_MAX_POWER = 2048.0;  // Blinn-Phong exponent at gloss 1 (power = MAX_POWER^gloss): sharp sun glints
-const float MAT_SKY_MAX_LOD = 6.0;   // the 64^2 cube map's 1^2 mip: the fully blurred sky of a matt surface
-const float MAT_AMBIENT_REFERENCE = 0.3717; // luminance of the ambient light the sky cube map was made for
-const vec3 MAT_LUMA = vec3(0.2126, 0.7152, 0.0722); // Rec. 709 luminance weights
-
-// The stand-in sky's radiance in direction wsDir, scaled with the day's ambient light.
-vec3 skyReflection(vec3 wsDir, float lod) {
-    float scale = dot(frame.ambientColor.rgb, MAT_LUMA) / MAT_AMBIENT_REFERENCE;
-    return textureLod(uMatSky, wsDir, lod).rgb * scale;
-}
 
 // Hash of a lattice point to 0..1, without sin (stable across GPUs): Dave Hoskins, "Hash without Sine".
 float matHash(vec2 p) {
@@ -231,7 +221,7 @@ vec3 shadeTerrain(TerrainSurface s) {
         vec3 r = reflect(-v, n);
         float nv = max(dot(n, v), 0.0);
         float fresnelView = MAT_F0 + (1.0 - MAT_F0) * pow(1.0 - nv, 5.0);
-        color += skyReflection(r, (1.0 - gloss) * MAT_SKY_MAX_LOD) * fresnelView * gloss * gloss;
+        color += environmentRadiance(r, (1.0 - gloss) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
     }
     return color;
 }

@@ -5,8 +5,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.culling.CullingSystem;
-import org.openworld.engine.environment.DaylightSystem;
-import org.openworld.engine.environment.GradientSkySystem;
+import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.terrain.TerrainSystem;
 
 /**
@@ -26,8 +25,7 @@ final class DemoScene {
     static List<EngineSystem> systems() {
         return List.of(
                 new CameraSystem(),
-                new DaylightSystem(),
-                new GradientSkySystem(),
+                new SkySystem(),
                 new CullingSystem(),
                 new TerrainSystem(line -> System.err.println(line)));
     }

@@ -2,6 +2,7 @@ package org.openworld.engine;
 
 import static org.lwjgl.opengl.GL11C.*;
 
+import java.nio.FloatBuffer;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
@@ -14,6 +15,7 @@ import java.util.Set;
 import java.util.function.Consumer;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
+import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
@@ -25,9 +27,11 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemOrder;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
-import org.openworld.engine.environment.Fog;
+import org.openworld.engine.environment.Exposure;
+import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.CubeMapTexture;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.FrameThrottle;
 import org.openworld.engine.gl.FrameUniforms;
@@ -37,6 +41,9 @@ import org.openworld.engine.gl.GpuTimers;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
+import org.openworld.engine.gl.SharedTexture;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Texture3D;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -71,6 +78,7 @@ public final class Engine implements AutoCloseable {
     private FrameUniforms frameUniforms;
     private GpuTimers timers;
     private FrameThrottle throttle;
+    private SkyMaps neutralSky;
     private double simTime;
     private long lastFrameEnd;
     private double unsimulated;
@@ -106,6 +114,7 @@ public final class Engine implements AutoCloseable {
             frameUniforms = new FrameUniforms(gl);
             timers = new GpuTimers(gl);
             throttle = new FrameThrottle(gl);
+            neutralSky = neutralSky(gl);
             EngineContext context = new EngineContext(gl, world, this.shaders, settings);
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
@@ -232,8 +241,9 @@ public final class Engine implements AutoCloseable {
                 continue;
             }
             ViewCamera camera = passCameras.get(pass);
-            // 1. the pass's camera and the world's light and fog into the frame block
+            // 1. the pass's camera and the world's light into the frame block; the sky's textures to their units
             frameUniforms.write(frameValues(camera));
+            bindSharedTextures();
             // 2. the target: MAIN and OVERLAY draw into the scene; SHADOW and REFLECTION owners bind their own
             if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
                 scene.bind();
@@ -271,16 +281,34 @@ public final class Engine implements AutoCloseable {
 
     private FrameUniforms.Values frameValues(ViewCamera camera) {
         Sun sun = world.findResource(Sun.class).orElse(NOON);
-        Fog fog = world.findResource(Fog.class).orElse(NO_FOG);
+        Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
-                fog.color(), fog.density(), fog.heightFalloff(), camera.clipPlane(), simTime,
-                world.resource(TimeOfDay.class).hours(), frame, scene.width(), scene.height());
+                exposure.scale(), camera.clipPlane(), simTime, world.resource(TimeOfDay.class).hours(), frame,
+                scene.width(), scene.height());
+    }
+
+    /** Binds the sky's shared textures, or the neutral stand-ins when no system models the sky. */
+    private void bindSharedTextures() {
+        SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
+        maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
+        maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
     }
 
     /** Light for a world with no system that models the sky: a high white sun. */
     private static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1), new Vector3f(0.3f));
-    private static final Fog NO_FOG = new Fog(new Vector3f(0.7f, 0.8f, 0.9f), 0, 0);
+
+    /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as NOON's ambient light. */
+    private static SkyMaps neutralSky(GlContext gl) {
+        FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
+        try {
+            Texture3D air = Texture3D.of(gl, 1, 1, 1, Texture2D.Format.RGBA16F, Texture3D.Sampling3D.LINEAR_CLAMP,
+                    clearAir);
+            return new SkyMaps(air, CubeMapTexture.fromDirections(gl, 1, d -> NOON.ambient()));
+        } finally {
+            MemoryUtil.memFree(clearAir);
+        }
+    }
 
     private FrameRecord cpuRecord(double wallMs, double cpuMs) {
         Map<String, Double> systemMs = new LinkedHashMap<>();
@@ -333,6 +361,10 @@ public final class Engine implements AutoCloseable {
             initialised.get(i).close();
         }
         initialised.clear();
+        if (neutralSky != null) {
+            neutralSky.environment().close();
+            neutralSky.aerialPerspective().close();
+        }
         if (throttle != null) {
             throttle.close();
         }

@@ -23,11 +23,11 @@ void main() {
     } else if (column == 4) {
         v = vec4(frame.ambientColor.rgb, 1.0 - frame.ambientColor.a);
     } else if (column == 5) {
-        v = vec4(frame.fogColorDensity.rgb, frame.fogColorDensity.w * 1000.0);
+        v = vec4(frame.exposure.x / 8.0, frame.exposure.yz, 1.0 - frame.exposure.w);
     } else if (column == 6) {
         v = vec4(frame.clipPlane * 0.5 + 0.5);
     } else if (column == 7) {
-        v = vec4(frame.timeInfo.x * 5.0, frame.timeInfo.y / 24.0, frame.timeInfo.z / 8.0, frame.timeInfo.w * 100.0);
+        v = vec4(frame.timeInfo.x * 5.0, frame.timeInfo.y / 24.0, frame.timeInfo.z / 8.0, 1.0 - frame.timeInfo.w);
     } else if (column == 8) {
         v = vec4(clip.xy / clip.w * 0.5 + 0.5, viaViewAndProjection.xy / viaViewAndProjection.w * 0.5 + 0.5);
     } else {

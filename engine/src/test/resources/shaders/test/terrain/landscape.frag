@@ -1,7 +1,7 @@
 #version 330 core
 // The stand-in landscape shaded by material.glsl, to judge the materials from afar (engine test:
 // org.openworld.engine.terrain.MaterialRenderTest): the height field's normal gives the tangent frame, a made-up
-// snow map puts snow likelier higher up; with uSky = 1 the stand-in sky behind it.
+// snow map puts snow likelier higher up; with uSky = 1 the environment map behind it.
 #include "terrain/material.glsl"
 #include "common/fog.glsl"
 #include "common/color.glsl"
@@ -17,7 +17,7 @@ void main() {
         vec2 ndc = gl_FragCoord.xy * frame.viewport.zw * 2.0 - 1.0;
         vec4 wsFar = frame.invViewProjection * vec4(ndc, 1.0, 1.0);
         vec3 dir = normalize(wsFar.xyz / wsFar.w - cameraPos());
-        vec3 sky = skyReflection(dir, 0.0) + frame.sunColor.rgb * pow(max(dot(dir, sunDir()), 0.0), 400.0) * 4.0;
+        vec3 sky = environmentRadiance(dir, 0.0) + frame.sunColor.rgb * pow(max(dot(dir, sunDir()), 0.0), 400.0) * 4.0;
         fragColor = vec4(displayColor(sky), 1.0);
         return;
     }

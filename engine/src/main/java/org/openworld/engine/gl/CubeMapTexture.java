@@ -4,6 +4,8 @@ import static org.lwjgl.opengl.GL32C.*;
 
 import java.nio.FloatBuffer;
 import java.util.function.Function;
+import java.util.function.IntConsumer;
+import org.joml.Matrix3f;
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
@@ -11,7 +13,8 @@ import org.lwjgl.system.MemoryUtil;
 /**
  * A cube map ({@code GL_TEXTURE_CUBE_MAP}): six square faces sampled by direction, {@code texture(samplerCube, dir)},
  * for what surrounds the scene (the sky that glossy surfaces reflect). Made with {@link #fromDirections} from a
- * function of direction; stored as half floats ({@code GL_RGB16F}) so radiance above 1 survives.
+ * function of direction, or drawn into face by face with {@link #render}; stored as half floats
+ * ({@code GL_RGB16F}) so radiance above 1 survives, with a full mip chain for blurrier reflections.
  *
  * <p>Seamless filtering ({@code GL_TEXTURE_CUBE_MAP_SEAMLESS}, core since 3.2) is switched on in {@link #bind}: without
  * it, linear filtering stops at each face's border and the cube's edges show as lines in a blurry reflection. It is
@@ -23,6 +26,7 @@ public final class CubeMapTexture implements AutoCloseable {
     private final GlContext gl;
     private final int size;
     private int id;
+    private int framebuffer;
 
     private CubeMapTexture(GlContext gl, int size) {
         this.gl = gl;
@@ -44,6 +48,7 @@ public final class CubeMapTexture implements AutoCloseable {
         }
         CubeMapTexture t = new CubeMapTexture(gl, size);
         glBindTexture(GL_TEXTURE_CUBE_MAP, t.id);
+        t.setSampling();
         FloatBuffer face = MemoryUtil.memAllocFloat(3 * size * size);
         try {
             Vector3f dir = new Vector3f();
@@ -63,31 +68,88 @@ public final class CubeMapTexture implements AutoCloseable {
             MemoryUtil.memFree(face);
         }
         glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        return t;
+    }
+
+    /**
+     * Storage to draw into with {@link #render}: six empty {@code size}² faces and their mip levels.
+     *
+     * @param size texels along a face's side, a power of two
+     */
+    public static CubeMapTexture renderTarget(GlContext gl, int size) {
+        if (size <= 0 || Integer.bitCount(size) != 1) {
+            throw new IllegalArgumentException("cube map face size must be a power of two, got " + size);
+        }
+        CubeMapTexture t = new CubeMapTexture(gl, size);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, t.id);
+        t.setSampling();
+        for (int f = 0; f < 6; f++) {
+            for (int level = 0, s = size; s >= 1; level++, s /= 2) {
+                glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, level, GL_RGB16F, s, s, 0, GL_RGB, GL_FLOAT,
+                        (FloatBuffer) null);
+            }
+        }
+        t.framebuffer = glGenFramebuffers();
+        gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
+        return t;
+    }
+
+    /**
+     * Draws the six faces of a {@link #renderTarget}: for each face, binds it as the colour target with the viewport
+     * on it and calls {@code drawFace} with the face's index (0 .. 5 as +X, −X, +Y, −Y, +Z, −Z; see
+     * {@link #faceAxes}); then rebuilds the mip levels and restores the framebuffer and viewport that were bound.
+     */
+    public void render(IntConsumer drawFace) {
+        if (framebuffer == 0) {
+            throw new IllegalStateException("cube map made from directions, not a render target");
+        }
+        int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+        int[] viewport = new int[4];
+        glGetIntegerv(GL_VIEWPORT, viewport);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glViewport(0, 0, size, size);
+        for (int f = 0; f < 6; f++) {
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, id, 0);
+            drawFace.accept(f);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, previous);
+        glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, id);
+        glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    }
+
+    /**
+     * The axes of face f (+X, −X, +Y, −Y, +Z, −Z) as the columns of a matrix: the direction through the point
+     * (s, t) of the face, s and t in −1..1 along its texel columns and rows, is {@code normalize(axes · (s, t, 1))}.
+     * From the table of the OpenGL specification (section 8.13, "Cube Map Texture Selection"): face +X holds
+     * (1, −t, −s), −X (−1, −t, s), +Y (s, 1, t), −Y (s, −1, −t), +Z (s, −t, 1), −Z (−s, −t, −1).
+     */
+    public static Matrix3f faceAxes(int f) {
+        return switch (f) {
+            case 0 -> new Matrix3f(0, 0, -1, 0, -1, 0, 1, 0, 0);
+            case 1 -> new Matrix3f(0, 0, 1, 0, -1, 0, -1, 0, 0);
+            case 2 -> new Matrix3f(1, 0, 0, 0, 0, 1, 0, 1, 0);
+            case 3 -> new Matrix3f(1, 0, 0, 0, 0, -1, 0, -1, 0);
+            case 4 -> new Matrix3f(1, 0, 0, 0, -1, 0, 0, 0, 1);
+            case 5 -> new Matrix3f(-1, 0, 0, 0, -1, 0, 0, 0, -1);
+            default -> throw new IllegalArgumentException("cube face " + f + ": expected 0..5");
+        };
+    }
+
+    /** Trilinear, clamped at the faces' edges (seamless filtering joins them, see {@link #bind}). */
+    private void setSampling() {
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-        return t;
     }
 
-    /**
-     * The unit direction through the centre of texel (x, y) of face f (+X, −X, +Y, −Y, +Z, −Z), from the table
-     * of the OpenGL specification (section 8.13, "Cube Map Texture Selection"): with s, t the texel centre in
-     * −1..1, face +X holds (1, −t, −s), −X (−1, −t, s), +Y (s, 1, t), −Y (s, −1, −t), +Z (s, −t, 1), −Z (−s, −t, −1).
-     */
+    /** The unit direction through the centre of texel (x, y) of face f (see {@link #faceAxes}). */
     private static Vector3f direction(int f, int x, int y, int size, Vector3f out) {
         float s = 2 * (x + 0.5f) / size - 1;
         float t = 2 * (y + 0.5f) / size - 1;
-        switch (f) {
-            case 0 -> out.set(1, -t, -s);
-            case 1 -> out.set(-1, -t, s);
-            case 2 -> out.set(s, 1, t);
-            case 3 -> out.set(s, -1, -t);
-            case 4 -> out.set(s, -t, 1);
-            default -> out.set(-s, -t, -1);
-        }
-        return out.normalize();
+        return faceAxes(f).transform(out.set(s, t, 1)).normalize();
     }
 
     /** Binds to texture unit {@code unit} and makes cube filtering seamless across the faces' edges. */
@@ -107,6 +169,11 @@ public final class CubeMapTexture implements AutoCloseable {
 
     @Override
     public void close() {
+        if (framebuffer != 0) {
+            glDeleteFramebuffers(framebuffer);
+            gl.objects().deleted(GlObjects.Kind.FRAMEBUFFER);
+            framebuffer = 0;
+        }
         if (id != 0) {
             glDeleteTextures(id);
             gl.objects().deleted(GlObjects.Kind.TEXTURE);

@@ -29,8 +29,7 @@ public final class FrameUniforms implements AutoCloseable {
 
     /** Everything the block holds, gathered by the engine for one pass. */
     public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
-                         Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient,
-                         Vector3fc fogColor, float fogDensity, float fogHeightFalloff,
+                         Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure,
                          Vector4fc clipPlane, double simTime, double timeOfDayHours, long frame,
                          int width, int height) {
     }
@@ -57,9 +56,9 @@ public final class FrameUniforms implements AutoCloseable {
         o = vec4(o, v.sunDir().x(), v.sunDir().y(), v.sunDir().z(), v.far());
         o = vec4(o, v.sunColor().x(), v.sunColor().y(), v.sunColor().z(), 0);
         o = vec4(o, v.ambient().x(), v.ambient().y(), v.ambient().z(), 0);
-        o = vec4(o, v.fogColor().x(), v.fogColor().y(), v.fogColor().z(), v.fogDensity());
+        o = vec4(o, v.exposure(), 0, 0, 0);
         o = vec4(o, v.clipPlane().x(), v.clipPlane().y(), v.clipPlane().z(), v.clipPlane().w());
-        o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), v.fogHeightFalloff());
+        o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
         vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
         buffer.update(data);
         buffer.bindBase(BINDING);

@@ -18,7 +18,7 @@ import java.util.function.Consumer;
  * <p>Uniforms are typed handles resolved at link time: {@code Uniform.Mat4 model = program.mat4("uModel")} fails
  * at once, naming the program, when the uniform does not exist (or the compiler removed it as unused). If the
  * program declares the {@code FrameBlock} uniform block of {@code common/frame.glsl}, it is bound to
- * {@link FrameUniforms#BINDING}.
+ * {@link FrameUniforms#BINDING}; samplers named like a {@link SharedTexture} are set to its unit.
  *
  * <p>{@link #reload()} rebuilds from the current sources (dev mode, F5): on failure the old program stays in use and
  * the error is thrown for the caller to print.
@@ -51,6 +51,10 @@ public final class ShaderProgram implements AutoCloseable {
 
     public int id() {
         return id;
+    }
+
+    public Uniform.Mat3 mat3(String name) {
+        return resolve(new Uniform.Mat3(name));
     }
 
     public Uniform.Mat4 mat4(String name) {
@@ -140,6 +144,13 @@ public final class ShaderProgram implements AutoCloseable {
             int frameBlock = glGetUniformBlockIndex(program, FrameUniforms.BLOCK_NAME);
             if (frameBlock != GL_INVALID_INDEX) {
                 glUniformBlockBinding(program, frameBlock, FrameUniforms.BINDING);
+            }
+            glUseProgram(program);
+            for (SharedTexture shared : SharedTexture.values()) {
+                int location = glGetUniformLocation(program, shared.sampler());
+                if (location >= 0) {
+                    glUniform1i(location, shared.unit());
+                }
             }
             return program;
         } finally {

@@ -15,6 +15,8 @@ public final class Texture2D implements AutoCloseable {
     /** Sampling and wrap, chosen per use. */
     public record Sampling(int minFilter, int magFilter, int wrap) {
         public static final Sampling NEAREST_CLAMP = new Sampling(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
+        /** Bilinear, clamped at the edges: a look-up table read between its texels. */
+        public static final Sampling LINEAR_CLAMP = new Sampling(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
         /** Exact texels by {@code texelFetch} from every mip level (a height pyramid). */
         public static final Sampling NEAREST_MIPMAP = new Sampling(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT);
         /** Trilinear and tiling: a map that wraps around (a periodic world). */
@@ -32,6 +34,8 @@ public final class Texture2D implements AutoCloseable {
         public static final Format R32F = new Format(GL_R32F, GL_RED, GL_FLOAT);
         /** Two half floats per texel, uploaded from floats, e.g. a height gradient. */
         public static final Format RG16F = new Format(GL_RG16F, GL_RG, GL_FLOAT);
+        /** Three half floats per texel, uploaded from floats, e.g. radiance that may exceed 1. */
+        public static final Format RGB16F = new Format(GL_RGB16F, GL_RGB, GL_FLOAT);
         /** One byte per texel, e.g. a coverage mask. */
         public static final Format R8 = new Format(GL_R8, GL_RED, GL_UNSIGNED_BYTE);
     }

@@ -2,6 +2,7 @@ package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL20C.*;
 
+import org.joml.Matrix3fc;
 import org.joml.Matrix4fc;
 import org.joml.Vector3fc;
 import org.joml.Vector4fc;
@@ -11,7 +12,7 @@ import org.lwjgl.system.MemoryStack;
  * A typed uniform handle, resolved once when its program links (STYLE.md 9) and again on a reload. Setting a value
  * needs the program bound ({@link ShaderProgram#use()}). Get one from {@link ShaderProgram#mat4} and its siblings.
  */
-public abstract sealed class Uniform permits Uniform.Mat4, Uniform.Vec2, Uniform.Vec3, Uniform.Vec4, Uniform.Float, Uniform.Int {
+public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform.Vec2, Uniform.Vec3, Uniform.Vec4, Uniform.Float, Uniform.Int {
 
     final String name;
     int location;
@@ -22,6 +23,18 @@ public abstract sealed class Uniform permits Uniform.Mat4, Uniform.Vec2, Uniform
 
     public String name() {
         return name;
+    }
+
+    public static final class Mat3 extends Uniform {
+        Mat3(String name) {
+            super(name);
+        }
+
+        public void set(Matrix3fc value) {
+            try (MemoryStack stack = MemoryStack.stackPush()) {
+                glUniformMatrix3fv(location, false, value.get(stack.mallocFloat(9)));
+            }
+        }
     }
 
     public static final class Mat4 extends Uniform {

@@ -23,7 +23,7 @@ import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
-import org.openworld.engine.environment.Fog;
+import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 
@@ -94,7 +94,7 @@ class FrameUniformsTest {
         Vector3f sunDir = new Vector3f(0.3f, 0.5f, -0.8f).normalize();
         Vector3f sunColor = new Vector3f(1.2f, 0.9f, 0.6f);
         Vector3f ambient = new Vector3f(0.25f, 0.35f, 0.45f);
-        Fog fog = new Fog(new Vector3f(0.2f, 0.4f, 0.6f), 0.0003f, 0.002f);
+        Exposure exposure = new Exposure(3.25f);
         double hours = 15.25;
         int updates = 6;
 
@@ -104,7 +104,7 @@ class FrameUniformsTest {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, probe)) {
             engine.world().resource(Camera.class).setPose(pose);
             engine.world().setResource(new Sun(sunDir, sunColor, ambient));
-            engine.world().setResource(fog);
+            engine.world().setResource(exposure);
             engine.world().setResource(new TimeOfDay(hours, 0));
             ViewCamera camera = engine.world().resource(Camera.class).view((float) WIDTH / HEIGHT);
             // A point 100 m ahead of the eye, a little right and below, so it projects inside the picture.
@@ -127,10 +127,10 @@ class FrameUniformsTest {
                 Camera.FAR / 40000);
         assertColumn(image, 3, sunColor.x * 0.5f, sunColor.y * 0.5f, sunColor.z * 0.5f, 1);
         assertColumn(image, 4, ambient.x, ambient.y, ambient.z, 1);
-        assertColumn(image, 5, fog.color().x(), fog.color().y(), fog.color().z(), fog.density() * 1000);
+        assertColumn(image, 5, exposure.scale() / 8, 0, 0, 1);
         Vector4f noClip = new Vector4f(ViewCamera.NO_CLIP).mul(0.5f).add(0.5f, 0.5f, 0.5f, 0.5f);
         assertColumn(image, 6, noClip.x, noClip.y, noClip.z, noClip.w);
-        assertColumn(image, 7, (float) (simTime * 5), (float) hours / 24, 1 / 8f, fog.heightFalloff() * 100);
+        assertColumn(image, 7, (float) (simTime * 5), (float) hours / 24, 1 / 8f, 1);
         float ndcX = expectedNdc.x * 0.5f + 0.5f;
         float ndcY = expectedNdc.y * 0.5f + 0.5f;
         assertColumn(image, 8, ndcX, ndcY, ndcX, ndcY);

@@ -26,7 +26,6 @@ import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
-import org.openworld.engine.environment.DaylightSystem;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlObjects;
@@ -36,6 +35,7 @@ import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.sky.SkySystem;
 
 /**
  * The terrain materials on real GL: test shaders build {@code TerrainSurface}s, call {@code shadeTerrain} and show
@@ -139,7 +139,7 @@ class MaterialRenderTest {
 
     static Engine engine(String vertex, String fragment) {
         Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, new MaterialPreview(vertex, fragment),
-                new DaylightSystem());
+                new SkySystem());
         engine.world().setResource(new TimeOfDay(MORNING, 0));
         engine.world().resource(Camera.class).setPose(ABOVE);
         return engine;
@@ -298,33 +298,6 @@ class MaterialRenderTest {
         }
     }
 
-    @Test
-    void skyCubeMapHoldsTheGradientInEveryDirection() throws IOException {
-        try (Engine engine = engine("test/fullscreen.vert", "test/terrain/sky-probe.frag")) {
-            engine.update();
-            engine.render();
-            Image image = engine.readImage();
-            Vector3fc ambient = engine.world().resource(Sun.class).ambient();
-            float scale = (0.2126f * ambient.x() + 0.7152f * ambient.y() + 0.0722f * ambient.z()) / 0.3717f;
-            Vector3f[] directions = {
-                new Vector3f(0, 1, 0), new Vector3f(0, -1, 0),
-                new Vector3f((float) Math.cos(Math.toRadians(30)), (float) Math.sin(Math.toRadians(30)), 0),
-                new Vector3f(0, (float) Math.sin(Math.toRadians(30)), (float) -Math.cos(Math.toRadians(30))),
-                new Vector3f(0, (float) -Math.sin(Math.toRadians(30)), (float) Math.cos(Math.toRadians(30))),
-                new Vector3f((float) -Math.cos(Math.toRadians(10)), (float) Math.sin(Math.toRadians(10)), 0)};
-            for (int i = 0; i < directions.length; i++) {
-                Vector3f expected = new Vector3f(TerrainMaterials.skyGradient(directions[i])).mul(scale * 255);
-                int x = 8 * i + 4;
-                for (int c = 0; c < 3; c++) {
-                    assertEquals(expected.get(c), image.channel(x, HEIGHT / 2, c), 3,
-                            "direction " + directions[i] + " channel " + c);
-                }
-            }
-            assertTrue(TerrainMaterials.skyGradient(new Vector3f(0, 1, 0)).z() > TerrainMaterials.skyGradient(
-                    new Vector3f(0, 1, 0)).x() * 3, "the zenith is blue");
-        }
-    }
-
     /**
      * A stand-in landscape to see the materials from afar until the terrain system draws the real one: a mesh over
      * {@link #SIDE} metres whose heights are a sum of sine waves with amplitude rising with wavelength (a 1/f-like
@@ -454,7 +427,7 @@ class MaterialRenderTest {
     @Test
     void landscapeFromAfarHasGrassBelowRockAndSnowAbove() throws IOException {
         Landscape landscape = new Landscape();
-        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, landscape, new DaylightSystem())) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, landscape, new SkySystem())) {
             engine.world().setResource(new TimeOfDay(MORNING, 0));
             engine.world().resource(Camera.class).setPose(
                     new CameraPose(0, landscape.height(0, 900) + 30, 900, 0, -2, 60));

@@ -16,9 +16,9 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.culling.CullingSystem;
-import org.openworld.engine.environment.DaylightSystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.sky.SkySystem;
 
 /**
  * The terrain rendered headless on small worlds: the stitching leaves no crack between levels, and the default
@@ -78,7 +78,7 @@ class TerrainRenderTest {
     @Test
     void defaultWorldShowsSnowAboveAndGreenBelow() throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                new TerrainSystem(), new CullingSystem(), new DaylightSystem())) {
+                new TerrainSystem(), new CullingSystem(), new SkySystem())) {
             engine.world().setResource(new TimeOfDay(12.0, 0));
             engine.world().resource(Camera.class).setPose(new CameraPose(0, 400, 900, 0, -8, 60));
             Image image = frame(engine);
@@ -113,7 +113,7 @@ class TerrainRenderTest {
     void frozenCullingKeepsTheOldFrustumWhenTheCameraFliesOut() throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
                 List.of("terrain.size=512", "terrain.spacing=8", "culling.freeze=on", "terrain-debug.freeze-lod=on"),
-                new TerrainSystem(), new CullingSystem(), new DaylightSystem())) {
+                new TerrainSystem(), new CullingSystem(), new SkySystem())) {
             Camera camera = engine.world().resource(Camera.class);
             HeightMap map = terrain(engine).data().pyramid().base();
             camera.setPose(new CameraPose(0, map.heightAt(0, 600) + 30, 600, 0, 0, 60));

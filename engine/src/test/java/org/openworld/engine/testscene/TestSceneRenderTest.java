@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -14,11 +15,12 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
-import org.openworld.engine.environment.DaylightSystem;
-import org.openworld.engine.environment.GradientSkySystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.sky.SkySettings;
+import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.sky.SolarPosition;
 
 /**
  * The test scene under the daylight system, rendered headless at fixed poses and times. The pictures are written to
@@ -43,8 +45,8 @@ class TestSceneRenderTest {
     @BeforeAll
     static void render() throws IOException {
         gl = GlContext.headless();
-        try (Engine engine = GlTestSupport.engine(gl, WIDTH, HEIGHT, new TestSceneSystem(), new GradientSkySystem(),
-                new DaylightSystem())) {
+        try (Engine engine = GlTestSupport.engine(gl, WIDTH, HEIGHT, List.of("clouds.cover=0"), new TestSceneSystem(),
+                new SkySystem())) {
             morning = renderAt(engine, LOOKING_NORTH, 10.0);
             dusk = renderAt(engine, LOOKING_NORTH, 19.5);
             lowSun = renderAt(engine, lookingAtTheSun(18.5), 18.5);
@@ -73,8 +75,8 @@ class TestSceneRenderTest {
 
     /** A camera at the usual place turned towards the sun of the default latitude and season. */
     static CameraPose lookingAtTheSun(double hours) {
-        DaylightSystem.DaylightSettings s = DaylightSystem.DaylightSettings.DEFAULTS;
-        Vector3f toSun = DaylightSystem.sunDirection(hours, s.latitude(), s.declination());
+        SkySettings s = SkySettings.DEFAULTS;
+        Vector3f toSun = SolarPosition.direction(hours, s.latitude(), s.declination());
         double yaw = Math.toDegrees(Math.atan2(toSun.x, -toSun.z)); // clockwise from north (−Z)
         double pitch = Math.toDegrees(Math.asin(toSun.y));
         return new CameraPose(LOOKING_NORTH.x(), LOOKING_NORTH.y(), LOOKING_NORTH.z(), yaw, pitch, LOOKING_NORTH.fov());

@@ -10,7 +10,6 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
-import org.openworld.engine.environment.Fog;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderProgram;
@@ -18,7 +17,7 @@ import org.openworld.engine.gl.ShaderProgram;
 /**
  * A test fixture that exercises the whole pipeline with simple geometry: a ground grid with a ring of boxes, lit by
  * the world's sun and fogged by the shared fog. It publishes a flat {@link HeightField} so walk mode has ground to
- * stand on. Pair it with {@link org.openworld.engine.environment.GradientSkySystem} for a background.
+ * stand on. Pair it with {@link org.openworld.engine.sky.SkySystem} for a background.
  */
 public final class TestSceneSystem implements EngineSystem {
 
@@ -36,7 +35,7 @@ public final class TestSceneSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("test-scene").reads(Sun.class, Fog.class).writes(HeightField.class).draws(Pass.MAIN);
+        return SystemSpec.named("test-scene").reads(Sun.class).writes(HeightField.class).draws(Pass.MAIN);
     }
 
     @Override

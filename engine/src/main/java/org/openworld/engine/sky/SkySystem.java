@@ -1,0 +1,279 @@
+package org.openworld.engine.sky;
+
+import static org.lwjgl.opengl.GL11C.*;
+
+import java.nio.FloatBuffer;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import org.joml.Vector3d;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.Exposure;
+import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.CubeMapTexture;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Texture3D;
+import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * The sky of paper sections 2.3 and 3.1: the atmosphere's scattering tables for the sun of the moment, the sky and
+ * its clouds drawn behind everything, the environment map glossy surfaces reflect, and the light of the world (the
+ * sun's colour at the eye, the sky's ambient light, the exposure).
+ *
+ * <p>Per update: the sun's direction from the clock ({@link SolarPosition}); when it or the eye's altitude moved
+ * enough to matter ({@link SunTables#staleFor}) new tables, on a worker thread while the sun drifts with the day
+ * cycle (the sky keeps the old ones until they are ready) and at once when it jumped (a new {@code --time}, a
+ * scrub), so a picture never shows the tables of another hour. Per frame in MAIN: new tables are uploaded, the
+ * environment map is redrawn when they changed or the clouds drifted for {@link #ENVIRONMENT_REFRESH} seconds, and the
+ * sky is drawn on the far plane.
+ *
+ * <p>Counters: {@code sky.tables-ms} (CPU time of tables that arrived this frame), {@code sky.environment} (1 when
+ * the environment map was redrawn).
+ */
+public final class SkySystem implements EngineSystem {
+
+    /** Texels along a side of the environment map's faces: the sky's gradients are smooth, so few suffice. */
+    public static final int ENVIRONMENT_SIZE = 64;
+    /** Simulation seconds after which drifting clouds are redrawn into the environment map. */
+    static final double ENVIRONMENT_REFRESH = 1.0;
+    /**
+     * Tables this many steps of {@link SunTables#staleFor} away are rebuilt at once rather than in the background: the
+     * sun jumped (a new time was set) instead of drifting with the day cycle.
+     */
+    static final int JUMP_STEPS = 4;
+    /**
+     * Automatic exposure, as an eye adapts but not all the way: {@code exposure = KEY / max(E, E_MIN)^ADAPTATION}
+     * with E the luminance of the light on the ground (sun on level ground plus sky), display units. KEY makes the
+     * noon world look as bright as a white surface in sunlight should; ADAPTATION &lt; 1 lets dusk be darker than
+     * noon while staying readable; E_MIN stops the night from being lifted into day.
+     */
+    static final double EXPOSURE_KEY = 1.2;
+    static final double EXPOSURE_ADAPTATION = 0.75;
+    static final double EXPOSURE_MIN_LIGHT = 2e-4;
+
+    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "sky-tables");
+        t.setDaemon(true);
+        return t;
+    });
+    private CompletableFuture<SunTables> building;
+    private SunTables tables;
+    private SunTables uploaded;
+    private double simTime;
+    private double environmentTime = Double.NEGATIVE_INFINITY;
+    private boolean environmentDirty = true;
+
+    private ShaderProgram program;
+    private Uniform.Int cubeFace;
+    private Uniform.Mat3 faceAxes;
+    private Uniform.Float groundAlbedo;
+    private Uniform.Vec4 cloudParams;
+    private Uniform.Vec4 cloudMotion;
+    private Mesh fullScreen;
+    private Texture2D skyView;
+    private Texture3D air;
+    private Texture3D clouds;
+    private CloudField cloudField;
+    private CubeMapTexture environment;
+
+    @Override
+    public SystemSpec spec() {
+        return SystemSpec.named("sky").reads(TimeOfDay.class, Settings.class, Camera.class)
+                .writes(Sun.class, Exposure.class, SkyMaps.class).draws(Pass.MAIN);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of(SkySettings.SETTINGS, AtmosphereSettings.SETTINGS, CloudSettings.SETTINGS);
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        GlContext gl = context.gl();
+        Settings settings = context.settings();
+        CloudSettings c = settings.get(CloudSettings.class);
+        cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), settings.get(EngineSettings.class).seed());
+        program = context.shaders().program("sky/sky.vert", "sky/sky.frag");
+        program.sampler("skyView", 0);
+        program.sampler("cloudField", 1);
+        cubeFace = program.int1("uCubeFace");
+        faceAxes = program.mat3("uFaceAxes");
+        groundAlbedo = program.float1("uGroundAlbedo");
+        cloudParams = program.vec4("cloudParams");
+        cloudMotion = program.vec4("cloudMotion");
+        fullScreen = new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
+        skyView = Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Texture2D.Format.RGB16F,
+                Texture2D.Sampling.LINEAR_CLAMP);
+        air = Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT, AerialPerspective.DEPTH,
+                Texture2D.Format.RGBA16F, Texture3D.Sampling3D.LINEAR_CLAMP, null);
+        clouds = upload(gl, cloudField);
+        environment = CubeMapTexture.renderTarget(gl, ENVIRONMENT_SIZE);
+        context.world().setResource(new SkyMaps(air, environment));
+        update(context.world(), 0);
+    }
+
+    private static Texture3D upload(GlContext gl, CloudField field) {
+        FloatBuffer data = MemoryUtil.memAllocFloat(field.values().length).put(field.values()).flip();
+        try {
+            return Texture3D.of(gl, field.resolution(), field.resolution(), field.frames(), Texture2D.Format.R16F,
+                    Texture3D.Sampling3D.LINEAR_REPEAT, data);
+        } finally {
+            MemoryUtil.memFree(data);
+        }
+    }
+
+    @Override
+    public void update(World world, double step) {
+        simTime += step;
+        Settings settings = world.resource(Settings.class);
+        SkySettings s = settings.get(SkySettings.class);
+        AtmosphereSettings atmosphere = settings.get(AtmosphereSettings.class);
+        Vector3f toSun = SolarPosition.direction(world.resource(TimeOfDay.class).hours(), s.latitude(), s.declination());
+        double elevation = Math.asin(toSun.y);
+        double altitude = Math.max(0, world.resource(Camera.class).pose().y());
+        Counters counters = world.resource(Counters.class);
+
+        if (building != null && building.isDone()) {
+            accept(building.join(), counters);
+            building = null;
+        }
+        if (tables == null || tables.staleFor(atmosphere, elevation, altitude)) {
+            if (tables == null || jumped(atmosphere, elevation, altitude)) {
+                accept(build(atmosphere, elevation, altitude), counters);
+            } else if (building == null) {
+                AtmosphereTables own = tables.atmosphere();
+                building = CompletableFuture.supplyAsync(() -> SunTables.build(
+                        own.settings().equals(atmosphere) ? own : AtmosphereTables.build(atmosphere),
+                        elevation, altitude), worker);
+            }
+        }
+        SkyLight light = tables.light();
+        world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient())));
+        world.setResource(new Exposure(exposure(light, toSun.y, s.exposure())));
+    }
+
+    private SunTables build(AtmosphereSettings atmosphere, double elevation, double altitude) {
+        AtmosphereTables own = tables != null && tables.atmosphere().settings().equals(atmosphere)
+                ? tables.atmosphere() : AtmosphereTables.build(atmosphere);
+        return SunTables.build(own, elevation, altitude);
+    }
+
+    /** Whether the sun or the eye moved {@link #JUMP_STEPS} times what makes tables stale, or the air changed. */
+    private boolean jumped(AtmosphereSettings atmosphere, double elevation, double altitude) {
+        double e = tables.sunElevation() + (elevation - tables.sunElevation()) / JUMP_STEPS;
+        double a = tables.altitude() + (altitude - tables.altitude()) / JUMP_STEPS;
+        return tables.staleFor(atmosphere, e, a);
+    }
+
+    private void accept(SunTables fresh, Counters counters) {
+        tables = fresh;
+        counters.put("sky.tables-ms", fresh.buildMillis());
+    }
+
+    /** The automatic exposure times the user's compensation (see {@link #EXPOSURE_KEY}). */
+    static float exposure(SkyLight light, double sunSine, double compensationEv) {
+        Vector3d ground = new Vector3d(light.sun()).mul(Math.max(sunSine, 0)).add(light.ambient());
+        double luminance = 0.2126 * ground.x + 0.7152 * ground.y + 0.0722 * ground.z;
+        double auto = EXPOSURE_KEY / Math.pow(Math.max(luminance, EXPOSURE_MIN_LIGHT), EXPOSURE_ADAPTATION);
+        return (float) (auto * Math.pow(2, compensationEv));
+    }
+
+    private static Vector3f vector(Vector3d v) {
+        return new Vector3f((float) v.x, (float) v.y, (float) v.z);
+    }
+
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        Settings settings = context.world().resource(Settings.class);
+        if (uploaded != tables) {
+            uploadTables(tables);
+            uploaded = tables;
+            environmentDirty = true;
+        }
+        CloudSettings c = settings.get(CloudSettings.class);
+        program.use();
+        skyView.bind(0);
+        clouds.bind(1);
+        groundAlbedo.set((float) settings.get(AtmosphereSettings.class).groundAlbedo());
+        cloudParams.set(c.cloudParams(CloudField.coverageThreshold(cloudField, c.cover()), new Vector4f()));
+        cloudMotion.set(c.cloudMotion(simTime, new Vector4f()));
+        if (environmentDirty || simTime - environmentTime >= ENVIRONMENT_REFRESH) {
+            drawEnvironment(context);
+            context.world().resource(Counters.class).put("sky.environment", 1);
+        }
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(false);
+        cubeFace.set(0);
+        fullScreen.draw(context.stats());
+        glDepthMask(true);
+        glDepthFunc(GL_LESS);
+    }
+
+    /** The sky without the sun's disc into the six faces of the environment map, linear. */
+    private void drawEnvironment(RenderContext context) {
+        glDisable(GL_DEPTH_TEST);
+        cubeFace.set(1);
+        environment.render(face -> {
+            faceAxes.set(CubeMapTexture.faceAxes(face));
+            fullScreen.draw(context.stats());
+        });
+        glEnable(GL_DEPTH_TEST);
+        environmentTime = simTime;
+        environmentDirty = false;
+    }
+
+    private void uploadTables(SunTables t) {
+        FloatBuffer view = MemoryUtil.memAllocFloat(t.view().rgb().length).put(t.view().rgb()).flip();
+        FloatBuffer table = MemoryUtil.memAllocFloat(t.air().rgba().length).put(t.air().rgba()).flip();
+        try {
+            skyView.upload(0, 0, SkyView.HEIGHT, view);
+            air.upload(table);
+        } finally {
+            MemoryUtil.memFree(view);
+            MemoryUtil.memFree(table);
+        }
+    }
+
+    @Override
+    public void close() {
+        worker.shutdownNow();
+        if (environment != null) {
+            environment.close();
+        }
+        if (clouds != null) {
+            clouds.close();
+        }
+        if (air != null) {
+            air.close();
+        }
+        if (skyView != null) {
+            skyView.close();
+        }
+        if (fullScreen != null) {
+            fullScreen.close();
+        }
+        if (program != null) {
+            program.close();
+        }
+    }
+}

@@ -1,0 +1,46 @@
+/**
+ * The sky (paper sections 2.3 and 3.1, figures 5, 8 and 9): sunlight scattered by the air, the clouds, and the light
+ * the sky gives the world.
+ *
+ * <p><b>Scattering.</b> Light of wavelength λ reaching the eye from direction v is the sunlight scattered into the
+ * view ray at every point p on it, dimmed on the way in and out:
+ * {@code L(λ) = ∫ Σ_k β_k(λ) ρ_k(h(p)) P_k(θ) E_sun T(p→sun) T(eye→p) ds}, k over Rayleigh (β ∝ λ⁻⁴, phase
+ * 3/16π (1 + cos²θ)) and Mie (aerosols, grey, forward-peaked Cornette–Shanks phase), densities ρ falling
+ * exponentially with height (8 km and 1.2 km scale heights), transmittance {@code T = exp(−∫ extinction)}, with ozone
+ * absorbing but not scattering. {@link org.openworld.engine.sky.AtmosphereSettings} chooses how it is solved:
+ * <ul>
+ *   <li>{@code SINGLE}: the paper's equations 3 and 4 as written, nested sums: an outer sum of points along the
+ *       view ray, and at each an inner sum towards the sun for its optical depth; only light scattered once.
+ *       Cost per direction: outer × inner × wavelengths. Its limit is the paper's own: with the sun below the
+ *       horizon the lit air is far away and dawn and dusk go dark (figure 9 a and f).</li>
+ *   <li>{@code MULTIPLE} (default): Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere Rendering
+ *       Technique": a transmittance table (altitude × sun angle) replaces the inner sum, and a multiple-scattering
+ *       table adds every higher order as an isotropic source {@code Ψ_ms = L₂ / (1 − f_ms)} (the second order
+ *       times the geometric series of the fraction re-scattered), which lights the twilight sky.</li>
+ * </ul>
+ * All of it is spectral: {@link org.openworld.engine.sky.Spectrum} samples 400–750 nm (the paper found 6 samples the
+ * least that works; 8 by default) and integrates them against the CIE 1931 colour-matching functions to XYZ and
+ * then linear sRGB, white-balanced to the sun above the air. Mixing three RGB "wavelengths" instead gets the
+ * colours wrong, because extinction is not linear in λ (paper 3.1). Figure 8's Rayleigh-only and Mie-only skies are
+ * {@code atmosphere.component}.
+ *
+ * <p><b>Tables, not per-pixel integrals.</b> The sky is the same for every eye at one altitude under one sun
+ * elevation, laid out relative to the sun's azimuth; so the CPU computes, when the sun or the eye moved enough
+ * ({@link org.openworld.engine.sky.SunTables#staleFor}): the dome ({@link org.openworld.engine.sky.SkyView}, 192 ×
+ * 108 directions, denser at the horizon: the paper's per-vertex dome evaluation), the aerial perspective for the
+ * terrain ({@link org.openworld.engine.sky.AerialPerspective}, 32 × 32 directions × 32 distances up to 64 km) and
+ * the light ({@link org.openworld.engine.sky.SkyLight}: the sun's colour at the eye from the transmittance, the
+ * sky's irradiance on the ground). The GPU only looks them up. Units throughout are display units, 1 = a white
+ * surface facing the sun above the atmosphere; an automatic exposure adapts to the light of the moment.
+ *
+ * <p><b>Clouds</b> (paper 2.3). {@link org.openworld.engine.sky.CloudField}: random phases with amplitude 1/f over
+ * two axes of space and one of time, one inverse 3D DFT: a density that tiles in space and loops in time. Mapped
+ * onto the dome four ways ({@link org.openworld.engine.sky.CloudSettings.Mapping}, figure 5): spherical angles
+ * (squeezed at the horizon), the same with fog, perspective-corrected onto a layer at an altitude (repeats show
+ * towards the horizon), and that with horizon fog (the default).
+ *
+ * <p><b>Limits.</b> The clouds are a flat, single-scattering layer with no volume and no shadows on the ground; the
+ * ground albedo is one grey; there is no moon or stars, so the night is only dim; and the tables assume the eye at
+ * the altitude they were built for, rebuilt every 100 m of climb.
+ */
+package org.openworld.engine.sky;
