@@ -36,6 +36,10 @@ public final class Texture2D implements AutoCloseable {
         public static final Format RG16F = new Format(GL_RG16F, GL_RG, GL_FLOAT);
         /** Three half floats per texel, uploaded from floats, e.g. radiance that may exceed 1. */
         public static final Format RGB16F = new Format(GL_RGB16F, GL_RGB, GL_FLOAT);
+        /** One half float per texel, uploaded from floats, e.g. a cloud density field. */
+        public static final Format R16F = new Format(GL_R16F, GL_RED, GL_FLOAT);
+        /** Four half floats per texel, uploaded from floats, e.g. a table of linear colours above 1. */
+        public static final Format RGBA16F = new Format(GL_RGBA16F, GL_RGBA, GL_FLOAT);
         /** One byte per texel, e.g. a coverage mask. */
         public static final Format R8 = new Format(GL_R8, GL_RED, GL_UNSIGNED_BYTE);
     }
