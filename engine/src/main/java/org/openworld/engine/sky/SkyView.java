@@ -17,7 +17,8 @@ import org.joml.Vector3d;
  * which crowds texels at the horizon, where the sky changes fastest. Texel x holds u = x / (WIDTH − 1) and texel y
  * holds v = y / (HEIGHT − 1), so u, v ∈ [0, 1] reach texel centres with tex = ½/N + u·(1 − 1/N)
  * ({@code shaders/sky/atmosphere.glsl}). Each texel runs {@link SkyIntegrator#dome} once (in parallel over rows;
- * the result does not depend on the thread count).
+ * the result does not depend on the thread count) and is converted with {@link Spectrum#toDisplayRgb}, which clips
+ * the few twilight oranges outside the sRGB gamut to it.
  */
 public final class SkyView {
 

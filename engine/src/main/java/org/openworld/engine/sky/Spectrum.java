@@ -1,7 +1,5 @@
 package org.openworld.engine.sky;
 
-import java.util.Arrays;
-
 import org.joml.Matrix3d;
 import org.joml.Vector3d;
 
@@ -147,7 +145,6 @@ public final class Spectrum {
     private static final Vector3d D65 = new Vector3d(0.95047, 1.0, 1.08883);
 
     private final double[] wavelengths;
-    private final double bandNm;
     /** Per sample, x̄ȳz̄·Δλ, three values each. */
     private final double[] weights;
     /** XYZ → white-balanced linear sRGB for this sampling. */
@@ -157,7 +154,7 @@ public final class Spectrum {
         if (count < 1) {
             throw new IllegalArgumentException("a spectrum needs at least one wavelength, got " + count);
         }
-        bandNm = (MAX_NM - MIN_NM) / count;
+        double bandNm = (MAX_NM - MIN_NM) / count;
         wavelengths = new double[count];
         weights = new double[3 * count];
         Vector3d white = new Vector3d();
@@ -194,11 +191,6 @@ public final class Spectrum {
     /** Wavelength of sample i, nm. */
     public double wavelengthNm(int i) {
         return wavelengths[i];
-    }
-
-    /** Width of the band each sample stands for, nm. */
-    public double bandNm() {
-        return bandNm;
     }
 
     /**
@@ -247,13 +239,6 @@ public final class Spectrum {
     public Vector3d toDisplayRgb(double[] spectral, Vector3d out) {
         toRgb(spectral, out);
         return out.set(Math.max(out.x, 0), Math.max(out.y, 0), Math.max(out.z, 0));
-    }
-
-    /** A flat spectrum of this sampling's size. */
-    public double[] flat(double value) {
-        double[] s = new double[wavelengths.length];
-        Arrays.fill(s, value);
-        return s;
     }
 
     /** Builds a JOML matrix (column-major) from values written row by row. */

@@ -103,11 +103,6 @@ public final class TransmittanceTable {
         return out;
     }
 
-    /** Wavelengths per texel. */
-    public int wavelengths() {
-        return n;
-    }
-
     static double clamp(double v, double min, double max) {
         return Math.max(min, Math.min(max, v));
     }

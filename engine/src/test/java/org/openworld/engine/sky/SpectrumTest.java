@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
+
 import org.joml.Vector3d;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.junit.jupiter.api.Test;
 
 class SpectrumTest {
 
@@ -15,7 +17,9 @@ class SpectrumTest {
     @ValueSource(ints = {3, 6, 8, 15, 16})
     void aFlatSpectrumIsNeutral(int count) {
         Spectrum spectrum = Spectrum.sampled(count);
-        Vector3d rgb = spectrum.toRgb(spectrum.flat(0.37), new Vector3d());
+        double[] flat = new double[count];
+        Arrays.fill(flat, 0.37);
+        Vector3d rgb = spectrum.toRgb(flat, new Vector3d());
         assertEquals(0.37, rgb.x, 1e-9);
         assertEquals(0.37, rgb.y, 1e-9);
         assertEquals(0.37, rgb.z, 1e-9);
