@@ -1,0 +1,32 @@
+package org.openworld.engine.sky;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.openworld.engine.settings.SettingsGroup;
+
+class AtmosphereSettingsTest {
+
+    @Test
+    void keysAndDefaults() {
+        List<String> keys = AtmosphereSettings.SETTINGS.keys().stream().map(SettingsGroup.Key::key).toList();
+        assertEquals(List.of("atmosphere.scattering", "atmosphere.component", "atmosphere.wavelengths",
+                "atmosphere.outer-samples", "atmosphere.inner-samples", "atmosphere.haze", "atmosphere.ozone",
+                "atmosphere.mie-anisotropy", "atmosphere.ground-albedo"), keys);
+        assertEquals(AtmosphereSettings.Scattering.MULTIPLE, AtmosphereSettings.DEFAULTS.scattering());
+        assertEquals(8, AtmosphereSettings.DEFAULTS.wavelengths());
+    }
+
+    @Test
+    void outOfRangeValuesAreRejected() {
+        AtmosphereSettings d = AtmosphereSettings.DEFAULTS;
+        assertThrows(IllegalArgumentException.class, () -> d.withWavelengths(2));
+        assertThrows(IllegalArgumentException.class, () -> d.withWavelengths(17));
+        assertThrows(IllegalArgumentException.class, () -> new AtmosphereSettings(d.scattering(), d.component(),
+                8, 16, 8, 1, 1, 1.0, 0.3));
+        assertEquals(16, d.withWavelengths(16).wavelengths());
+    }
+}

@@ -1,0 +1,134 @@
+package org.openworld.engine.sky;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.openworld.engine.sky.SkyColours.luminance;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+
+import org.joml.Vector3d;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.openworld.engine.sky.AtmosphereSettings.Component;
+import org.openworld.engine.sky.AtmosphereSettings.Scattering;
+
+class SkyViewTest {
+
+    private static final double ALTITUDE = 100;
+    private static AtmosphereTables multiple;
+    private static AtmosphereTables single;
+
+    @BeforeAll
+    static void build() {
+        multiple = SkyColours.tables(Scattering.MULTIPLE, Component.BOTH);
+        single = SkyColours.tables(Scattering.SINGLE, Component.BOTH);
+    }
+
+    @Test
+    void noonZenithIsBlue() {
+        for (AtmosphereTables t : new AtmosphereTables[] {multiple, single}) {
+            Vector3d zenith = SkyView.build(t, Math.toRadians(60), ALTITUDE).sample(0, Math.PI / 2, new Vector3d());
+            assertTrue(zenith.z > zenith.y && zenith.y > zenith.x, t.settings().scattering() + ": " + zenith);
+        }
+    }
+
+    @Test
+    void sunsetHorizonTowardTheSunIsRed() {
+        for (AtmosphereTables t : new AtmosphereTables[] {multiple, single}) {
+            Vector3d horizon = SkyView.build(t, Math.toRadians(1), ALTITUDE)
+                    .sample(0, Math.toRadians(0.5), new Vector3d());
+            assertTrue(horizon.x > horizon.y && horizon.y > horizon.z, t.settings().scattering() + ": " + horizon);
+        }
+    }
+
+    @Test
+    void multipleScatteringLightsTheTwilightZenith() {
+        double sun = Math.toRadians(-4);
+        double withMultiple = luminance(SkyView.build(multiple, sun, ALTITUDE).sample(0, Math.PI / 2, new Vector3d()));
+        double singleOnly = luminance(SkyView.build(single, sun, ALTITUDE).sample(0, Math.PI / 2, new Vector3d()));
+        assertTrue(singleOnly > 0, "the high air is still lit at -4 degrees");
+        assertTrue(withMultiple >= 1.5 * singleOnly, withMultiple + " vs " + singleOnly);
+    }
+
+    @Test
+    void texelsEqualTheReference() {
+        double sunElevation = Math.toRadians(12);
+        double sunAzimuth = 1.1;
+        Vector3d sun = direction(sunAzimuth, sunElevation);
+        for (AtmosphereTables t : new AtmosphereTables[] {multiple, single}) {
+            SkyView view = SkyView.build(t, sunElevation, ALTITUDE);
+            int[][] texels = {{0, 80}, {57, 100}, {191, 60}, {100, 20}, {10, 54}, {140, 107}};
+            for (int[] xy : texels) {
+                double[] d = SkyView.direction(xy[0] / (SkyView.WIDTH - 1.0), xy[1] / (SkyView.HEIGHT - 1.0));
+                // Either side of the sun's plane sees the same sky.
+                for (double side : new double[] {1, -1}) {
+                    Vector3d expected = SkyReference.radiance(t,
+                            direction(sunAzimuth + side * d[0], d[1]), sun, ALTITUDE);
+                    for (int c = 0; c < 3; c++) {
+                        double texel = view.texel(xy[0], xy[1], c);
+                        assertEquals(expected.get(c), texel, 1e-5 * Math.abs(texel) + 1e-9,
+                                "texel " + xy[0] + "," + xy[1] + " channel " + c);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void buildsAreDeterministic() {
+        assertArrayEquals(SkyView.build(multiple, 0.3, ALTITUDE).rgb(), SkyView.build(multiple, 0.3, ALTITUDE).rgb());
+    }
+
+    @Test
+    void uvAndDirectionRoundTrip() {
+        for (double az = 0; az <= Math.PI; az += 0.1) {
+            for (double el = -Math.PI / 2; el <= Math.PI / 2; el += 0.05) {
+                double[] uv = SkyView.uv(az, el);
+                double[] back = SkyView.direction(uv[0], uv[1]);
+                assertEquals(az, back[0], 1e-12);
+                assertEquals(el, back[1], 1e-12);
+            }
+        }
+        // Azimuths fold into [0, pi]: the sky is symmetric about the sun's plane.
+        assertArrayEquals(SkyView.uv(0.7, 0.2), SkyView.uv(-0.7, 0.2), 1e-15);
+        assertArrayEquals(SkyView.uv(0.7, 0.2), SkyView.uv(2 * Math.PI - 0.7, 0.2), 1e-12);
+    }
+
+    @Test
+    void uvFollowsTheDocumentedFormula() {
+        for (double el : new double[] {-1.2, -0.3, -0.01, 0, 0.02, 0.4, 1.5}) {
+            double v = 0.5 + 0.5 * Math.signum(el) * Math.sqrt(Math.abs(el) / (Math.PI / 2));
+            assertEquals(v, SkyView.uv(0.4, el)[1], 1e-15);
+            assertEquals(0.4 / Math.PI, SkyView.uv(0.4, el)[0], 1e-15);
+        }
+        // Texel (x, y) holds u = x/(W-1), v = y/(H-1): the shader's centre mapping 0.5/N + u(1 - 1/N) lands on it.
+        for (int y : new int[] {0, 30, 53, 54, 107}) {
+            double[] d = SkyView.direction(0, y / (SkyView.HEIGHT - 1.0));
+            double v = SkyView.uv(d[0], d[1])[1];
+            assertEquals((y + 0.5) / SkyView.HEIGHT, 0.5 / SkyView.HEIGHT + v * (1 - 1.0 / SkyView.HEIGHT), 1e-12);
+        }
+        assertEquals(Math.PI / 2, SkyView.direction(0, 1)[1], 1e-15);
+        assertEquals(-Math.PI / 2, SkyView.direction(0, 0)[1], 1e-15);
+    }
+
+    @Test
+    void theShaderIncludeUsesTheJavaSizes() throws IOException {
+        String glsl;
+        try (InputStream in = SkyViewTest.class.getResourceAsStream("/shaders/sky/atmosphere.glsl")) {
+            glsl = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+        assertTrue(glsl.contains("vec2(" + SkyView.WIDTH + ".0, " + SkyView.HEIGHT + ".0)"));
+        assertTrue(glsl.contains("vec3(" + AerialPerspective.WIDTH + ".0, " + AerialPerspective.HEIGHT + ".0, "
+                + AerialPerspective.DEPTH + ".0)"));
+        assertTrue(glsl.contains("AERIAL_MAX_DISTANCE = " + (int) AerialPerspective.MAX_DISTANCE + ".0"));
+    }
+
+    /** World direction at an azimuth (radians from +X toward +Z) and elevation. */
+    static Vector3d direction(double azimuth, double elevation) {
+        return new Vector3d(Math.cos(elevation) * Math.cos(azimuth), Math.sin(elevation),
+                Math.cos(elevation) * Math.sin(azimuth));
+    }
+}
