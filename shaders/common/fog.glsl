@@ -13,6 +13,7 @@ uniform sampler3D aerialPerspective; // bound by the engine (gl.SharedTexture.AE
 vec3 applyFog(vec3 linearColor, vec3 wsPos) {
     vec3 toPoint = wsPos - cameraPos();
     float distance = length(toPoint);
-    vec4 air = texture(aerialPerspective, aerialPerspectiveUvw(toPoint / max(distance, 1e-3), sunDir(), distance));
+    vec4 table = texture(aerialPerspective, aerialPerspectiveUvw(toPoint / max(distance, 1e-3), sunDir(), distance));
+    vec4 air = mix(vec4(0.0, 0.0, 0.0, 1.0), table, aerialPerspectiveWeight(distance));
     return linearColor * air.a + air.rgb;
 }

@@ -8,7 +8,7 @@ in vec2 ndc;
 out vec4 fragColor;
 
 uniform vec4 camera;      // x: yaw, y: pitch (rad, DESIGN.md conventions); z: tan(vertical fov / 2); w: width / height
-uniform vec3 sunDir;
+uniform vec3 uSunDir;
 uniform vec3 sunColor;
 uniform vec3 ambientColor;
 uniform vec3 horizonColor;
@@ -25,6 +25,7 @@ void main() {
     vec3 wsDir = normalize(forward + ndc.x * camera.z * camera.w * right + ndc.y * camera.z * up);
 
     vec3 sky = wsDir.y > 0.0 ? mix(horizonColor, zenithColor, sqrt(wsDir.y)) : GROUND;
-    vec4 clouds = cloudsOn * cloudLayer(wsDir, sunDir, sunColor, ambientColor, horizonColor);
-    fragColor = vec4(displayColor(sky * (1.0 - clouds.a) + clouds.rgb), clouds.a);
+    vec4 clouds = cloudsOn * cloudLayer(wsDir, uSunDir, sunColor, ambientColor, horizonColor);
+    // tone curve and sRGB without the engine's exposure: this fixture runs without an engine's frame block
+    fragColor = vec4(linearToSrgb(toneMapAces(sky * (1.0 - clouds.a) + clouds.rgb)), clouds.a);
 }

@@ -66,8 +66,8 @@ public final class SkySystem implements EngineSystem {
      * noon world look as bright as a white surface in sunlight should; ADAPTATION &lt; 1 lets dusk be darker than
      * noon while staying readable; E_MIN stops the night from being lifted into day.
      */
-    static final double EXPOSURE_KEY = 1.2;
-    static final double EXPOSURE_ADAPTATION = 0.75;
+    static final double EXPOSURE_KEY = 1.0;
+    static final double EXPOSURE_ADAPTATION = 0.5;
     static final double EXPOSURE_MIN_LIGHT = 2e-4;
 
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {

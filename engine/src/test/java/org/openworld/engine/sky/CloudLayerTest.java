@@ -111,7 +111,7 @@ class CloudLayerTest {
         program.vec4("camera").set((float) YAW, (float) PITCH, (float) TAN_HALF_FOV, (float) WIDTH / HEIGHT);
         Vector3d sun = new Vector3d(Math.sin(Math.toRadians(215)), Math.tan(Math.toRadians(30)),
                 -Math.cos(Math.toRadians(215))).normalize(); // 30° up in the south-west, inside the picture
-        program.vec3("sunDir").set((float) sun.x, (float) sun.y, (float) sun.z);
+        program.vec3("uSunDir").set((float) sun.x, (float) sun.y, (float) sun.z);
         program.vec3("sunColor").set(1.0f, 0.95f, 0.85f);
         program.vec3("ambientColor").set(0.30f, 0.38f, 0.50f);
         program.vec3("horizonColor").set(0.62f, 0.70f, 0.80f);
