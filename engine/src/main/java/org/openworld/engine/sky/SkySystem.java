@@ -168,7 +168,7 @@ public final class SkySystem implements EngineSystem {
         }
         SkyLight light = tables.light();
         world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient())));
-        world.setResource(new Exposure(exposure(light, toSun.y, s.exposure())));
+        world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
     }
 
     private SunTables build(AtmosphereSettings atmosphere, double elevation, double altitude) {
@@ -189,11 +189,17 @@ public final class SkySystem implements EngineSystem {
         counters.put("sky.tables-ms", fresh.buildMillis());
     }
 
-    /** The automatic exposure times the user's compensation (see {@link #EXPOSURE_KEY}). */
+    /**
+     * The exposure for the light of the moment (see {@link #EXPOSURE_KEY}), or noon's ({@code EXPOSURE_KEY}: the
+     * light of a high sun is about 1) when {@code light} is null, times the user's compensation.
+     */
     static float exposure(SkyLight light, double sunSine, double compensationEv) {
-        Vector3d ground = new Vector3d(light.sun()).mul(Math.max(sunSine, 0)).add(light.ambient());
-        double luminance = 0.2126 * ground.x + 0.7152 * ground.y + 0.0722 * ground.z;
-        double auto = EXPOSURE_KEY / Math.pow(Math.max(luminance, EXPOSURE_MIN_LIGHT), EXPOSURE_ADAPTATION);
+        double auto = EXPOSURE_KEY;
+        if (light != null) {
+            Vector3d ground = new Vector3d(light.sun()).mul(Math.max(sunSine, 0)).add(light.ambient());
+            double luminance = 0.2126 * ground.x + 0.7152 * ground.y + 0.0722 * ground.z;
+            auto = EXPOSURE_KEY / Math.pow(Math.max(luminance, EXPOSURE_MIN_LIGHT), EXPOSURE_ADAPTATION);
+        }
         return (float) (auto * Math.pow(2, compensationEv));
     }
 
