@@ -43,6 +43,7 @@ final class Launch implements AutoCloseable {
 
     static Launch start(RenderOptions options, boolean window, boolean vsync, String title) {
         Settings settings = settings(options);
+        double daySpeed = options.daySpeed(0);
         ShaderSources shaders = options.dev ? devShaders() : ShaderSources.classpath();
         List<EngineSystem> systems = DemoScene.systems();
         GlContext gl = window
@@ -50,7 +51,7 @@ final class Launch implements AutoCloseable {
                 : GlContext.headless();
         try {
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
-            engine.world().setResource(new TimeOfDay(options.hours, 0));
+            engine.world().setResource(new TimeOfDay(options.hours, daySpeed));
             return new Launch(gl, engine, options.dev);
         } catch (RuntimeException e) {
             gl.close();

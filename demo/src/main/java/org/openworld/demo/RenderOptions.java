@@ -32,6 +32,22 @@ final class RenderOptions {
         }
     }
 
+    @Option(names = "--day-speed", paramLabel = "X",
+            description = "Simulated hours per real hour of the day cycle, 0 .. 8640; 0 stops the sun (default: 60 in "
+                    + "the window, a day in 24 minutes; 0 elsewhere). In the window: T pauses, [ and ] scrub, - and = "
+                    + "change the speed.")
+    Double daySpeed;
+
+    /** The day cycle's speed: what the user said, else the command's own default; out of range is a user error. */
+    double daySpeed(double commandDefault) {
+        double speed = daySpeed != null ? daySpeed : commandDefault;
+        if (!(speed >= 0 && speed <= DayCycle.MAX_SPEED)) {
+            throw new UserError("--day-speed " + speed + ": expected 0 .. " + DayCycle.MAX_SPEED
+                    + " simulated hours per real hour");
+        }
+        return speed;
+    }
+
     @Option(names = "--set", paramLabel = "KEY=VALUE",
             description = "Change a setting; repeatable. 'openworld settings' lists every key.")
     List<String> set = new ArrayList<>();

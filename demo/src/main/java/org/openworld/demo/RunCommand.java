@@ -19,24 +19,14 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--no-vsync", description = "Do not wait for the display's refresh (measure the uncapped frame rate).")
     boolean noVsync;
 
-    @Option(names = "--day-speed", paramLabel = "X",
-            description = "Simulated hours per real hour of the day cycle; 0 stops the sun (default: ${DEFAULT-VALUE}: "
-                    + "a day in 24 minutes). In the window: T pauses, [ and ] scrub, - and = change the speed.",
-            defaultValue = "60")
-    double daySpeed;
-
     @Override
     public Integer call() throws Exception {
         var path = Poses.loadPath(pose);
         if (render.headless) {
             throw new UserError("run is interactive and needs a window; use 'shot' or 'bench' for headless rendering");
         }
-        if (!(daySpeed >= 0 && daySpeed <= DayCycle.MAX_SPEED)) {
-            throw new UserError("--day-speed " + daySpeed + ": expected 0 .. " + DayCycle.MAX_SPEED
-                    + " simulated hours per real hour");
-        }
         try (Launch launch = Launch.start(render, true, !noVsync, "OpenWorld")) {
-            launch.engine.world().setResource(new TimeOfDay(render.hours, daySpeed));
+            launch.engine.world().setResource(new TimeOfDay(render.hours, render.daySpeed(DayCycle.RESUME_SPEED)));
             new WindowLoop(launch, path, pose).run();
         }
         return 0;
