@@ -4,7 +4,7 @@ import org.joml.Vector3d;
 
 /**
  * The light the sky puts on the scene for one sun position, in display units (E / E_sun, linear sRGB): the direct
- * sun, the sky's ambient irradiance and the horizon's colour (for fog and cloud tint).
+ * sun and the sky's ambient irradiance.
  * <ul>
  * <li>{@link #sun()}: T(r, μ_s)·1 through the {@link TransmittanceTable}, times the fraction of the solar disc (radius
  *     {@value #SUN_ANGULAR_RADIUS_DEG}°) above the eye's horizon, so the sun fades as it sets instead of switching
@@ -12,7 +12,6 @@ import org.joml.Vector3d;
  * <li>{@link #ambient()}: E = ∫_{upper hemisphere} L cosθ dω from the {@link SkyView} table, which stores P = π·L, so
  *     E = 2 ∫₀^π dφ ∫₀^{π/2} (P/π) sin e cos e de (the sky is symmetric about the sun's plane), by the midpoint rule
  *     on {@value #AMBIENT_AZIMUTHS} × {@value #AMBIENT_ELEVATIONS} directions. A uniform sky P = 1 gives E = 1.</li>
- * <li>{@link #horizon(double)}: the SkyView row just above the horizon.</li>
  * </ul>
  */
 public final class SkyLight {
@@ -24,19 +23,17 @@ public final class SkyLight {
     /** Midpoint-rule directions over the elevation 0..π/2: sin e cos e is smooth, 16 are within 0.2 %. */
     private static final int AMBIENT_ELEVATIONS = 16;
 
-    private final SkyView view;
     private final Vector3d sun;
     private final Vector3d ambient;
 
-    private SkyLight(SkyView view, Vector3d sun, Vector3d ambient) {
-        this.view = view;
+    private SkyLight(Vector3d sun, Vector3d ambient) {
         this.sun = sun;
         this.ambient = ambient;
     }
 
-    /** Sun, ambient and horizon light for a sun at {@code sunElevationRad}, from a SkyView built for that sun. */
+    /** Sun and ambient light for a sun at {@code sunElevationRad}, from a SkyView built for that sun. */
     public static SkyLight of(AtmosphereTables t, SkyView view, double sunElevationRad, double cameraAltitudeM) {
-        return new SkyLight(view, sunlight(t, sunElevationRad, cameraAltitudeM), ambient(view));
+        return new SkyLight(sunlight(t, sunElevationRad, cameraAltitudeM), ambient(view));
     }
 
     /** Direct sunlight at the eye, E / E_sun as linear sRGB (a copy). */
@@ -47,12 +44,6 @@ public final class SkyLight {
     /** Sky irradiance on an upward-facing surface, E / E_sun as linear sRGB (a copy). */
     public Vector3d ambient() {
         return new Vector3d(ambient);
-    }
-
-    /** Sky colour just above the horizon at an azimuth from the sun, display units. */
-    public Vector3d horizon(double azimuthFromSunRad) {
-        double[] uv = SkyView.uv(azimuthFromSunRad, 0);
-        return view.sampleUv(uv[0], (SkyView.HEIGHT / 2) / (SkyView.HEIGHT - 1.0), new Vector3d());
     }
 
     private static Vector3d sunlight(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
