@@ -93,6 +93,9 @@ public final class SkySystem implements EngineSystem {
     private Texture3D air;
     private Texture3D clouds;
     private CloudField cloudField;
+    /** The density threshold for {@link #thresholdCover}: a sort of the whole field, so computed once per cover. */
+    private float threshold;
+    private double thresholdCover = Double.NaN;
     private CubeMapTexture environment;
 
     @Override
@@ -220,7 +223,11 @@ public final class SkySystem implements EngineSystem {
         skyView.bind(0);
         clouds.bind(1);
         groundAlbedo.set((float) settings.get(AtmosphereSettings.class).groundAlbedo());
-        cloudParams.set(c.cloudParams(CloudField.coverageThreshold(cloudField, c.cover()), new Vector4f()));
+        if (c.cover() != thresholdCover) {
+            threshold = CloudField.coverageThreshold(cloudField, c.cover());
+            thresholdCover = c.cover();
+        }
+        cloudParams.set(c.cloudParams(threshold, new Vector4f()));
         cloudMotion.set(c.cloudMotion(simTime, new Vector4f()));
         if (environmentDirty || simTime - environmentTime >= ENVIRONMENT_REFRESH) {
             drawEnvironment(context);
