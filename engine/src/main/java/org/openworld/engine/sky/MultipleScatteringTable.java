@@ -122,20 +122,7 @@ public final class MultipleScatteringTable {
         double fx = TransmittanceTable.clamp((sunCosZenith + 1) / 2, 0, 1) * (SIZE - 1);
         double fy = TransmittanceTable.clamp((radiusM - Atmosphere.BOTTOM_RADIUS) / Atmosphere.thickness(), 0, 1)
                 * (SIZE - 1);
-        int x0 = Math.min((int) fx, SIZE - 2);
-        int y0 = Math.min((int) fy, SIZE - 2);
-        double ax = fx - x0;
-        double ay = fy - y0;
-        int b00 = (y0 * SIZE + x0) * n;
-        int b10 = b00 + n;
-        int b01 = b00 + SIZE * n;
-        int b11 = b01 + n;
-        for (int i = 0; i < n; i++) {
-            double bottom = values[b00 + i] + (values[b10 + i] - values[b00 + i]) * ax;
-            double top = values[b01 + i] + (values[b11 + i] - values[b01 + i]) * ax;
-            out[i] = bottom + (top - bottom) * ay;
-        }
-        return out;
+        return TransmittanceTable.bilinear(values, SIZE, SIZE, n, fx, fy, out);
     }
 
     /** Hillaire's even sphere sampling: θ = 2π·a, φ = acos(1 − 2b) on an 8 × 8 grid of cell centres (a, b). */

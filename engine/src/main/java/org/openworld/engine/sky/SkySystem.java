@@ -114,7 +114,8 @@ public final class SkySystem implements EngineSystem {
         GlContext gl = context.gl();
         Settings settings = context.settings();
         CloudSettings c = settings.get(CloudSettings.class);
-        cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), settings.get(EngineSettings.class).seed());
+        int seed = settings.get(EngineSettings.class).seed();
+        cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), seed);
         program = context.shaders().program("sky/sky.vert", "sky/sky.frag");
         program.sampler("skyView", 0);
         program.sampler("cloudField", 1);
@@ -150,7 +151,8 @@ public final class SkySystem implements EngineSystem {
         Settings settings = world.resource(Settings.class);
         SkySettings s = settings.get(SkySettings.class);
         AtmosphereSettings atmosphere = settings.get(AtmosphereSettings.class);
-        Vector3f toSun = SolarPosition.direction(world.resource(TimeOfDay.class).hours(), s.latitude(), s.declination());
+        double hours = world.resource(TimeOfDay.class).hours();
+        Vector3f toSun = SolarPosition.direction(hours, s.latitude(), s.declination());
         double elevation = Math.asin(toSun.y);
         double altitude = Math.max(0, world.resource(Camera.class).pose().y());
         Counters counters = world.resource(Counters.class);
@@ -161,12 +163,10 @@ public final class SkySystem implements EngineSystem {
         }
         if (tables == null || tables.staleFor(atmosphere, elevation, altitude)) {
             if (tables == null || jumped(atmosphere, elevation, altitude)) {
-                accept(build(atmosphere, elevation, altitude), counters);
+                accept(build(tables, atmosphere, elevation, altitude), counters);
             } else if (building == null) {
-                AtmosphereTables own = tables.atmosphere();
-                building = CompletableFuture.supplyAsync(() -> SunTables.build(
-                        own.settings().equals(atmosphere) ? own : AtmosphereTables.build(atmosphere),
-                        elevation, altitude), worker);
+                SunTables current = tables;
+                building = CompletableFuture.supplyAsync(() -> build(current, atmosphere, elevation, altitude), worker);
             }
         }
         SkyLight light = tables.light();
@@ -174,9 +174,11 @@ public final class SkySystem implements EngineSystem {
         world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
     }
 
-    private SunTables build(AtmosphereSettings atmosphere, double elevation, double altitude) {
-        AtmosphereTables own = tables != null && tables.atmosphere().settings().equals(atmosphere)
-                ? tables.atmosphere() : AtmosphereTables.build(atmosphere);
+    /** New tables for a sun and an eye, reusing those of {@code current} (may be null) that the air shares. */
+    private static SunTables build(SunTables current, AtmosphereSettings atmosphere, double elevation,
+                                   double altitude) {
+        AtmosphereTables own = current != null && current.atmosphere().settings().equals(atmosphere)
+                ? current.atmosphere() : AtmosphereTables.build(atmosphere);
         return SunTables.build(own, elevation, altitude);
     }
 

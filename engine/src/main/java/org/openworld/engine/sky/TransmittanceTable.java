@@ -87,13 +87,21 @@ public final class TransmittanceTable {
         double xR = clamp(rho / H, 0, 1);
         double fx = xMu * (WIDTH - 1);
         double fy = xR * (HEIGHT - 1);
-        int x0 = Math.min((int) fx, WIDTH - 2);
-        int y0 = Math.min((int) fy, HEIGHT - 2);
+        return bilinear(values, WIDTH, HEIGHT, n, fx, fy, out);
+    }
+
+    /**
+     * Bilinear lookup in a table of {@code width × height} texels of {@code n} wavelengths each (row-major,
+     * wavelengths innermost) at texel coordinates (fx, fy), each within 0 .. size − 1. Returns {@code out}.
+     */
+    static double[] bilinear(double[] values, int width, int height, int n, double fx, double fy, double[] out) {
+        int x0 = Math.min((int) fx, width - 2);
+        int y0 = Math.min((int) fy, height - 2);
         double ax = fx - x0;
         double ay = fy - y0;
-        int b00 = (y0 * WIDTH + x0) * n;
+        int b00 = (y0 * width + x0) * n;
         int b10 = b00 + n;
-        int b01 = b00 + WIDTH * n;
+        int b01 = b00 + width * n;
         int b11 = b01 + n;
         for (int i = 0; i < n; i++) {
             double bottom = values[b00 + i] + (values[b10 + i] - values[b00 + i]) * ax;
