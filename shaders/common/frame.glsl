@@ -12,7 +12,6 @@ layout(std140) uniform FrameBlock {
     vec4 sunColor;        // rgb: direct sunlight at the eye, display units (1 = the sun above the atmosphere)
     vec4 ambientColor;    // rgb: sky light on an upward surface, display units
     vec4 exposure;        // x: scene (display units, 1 = white under the sun above the air) -> tone mapper input; yzw: 0
-    vec4 clipPlane;       // world-space plane; dot(vec4(wsPos, 1), clipPlane) < 0 is cut
     vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
 } frame;

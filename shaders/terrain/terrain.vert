@@ -47,6 +47,5 @@ void main() {
     vec2 xz = (vec2(sampleIndex) - 0.5 * float(mapSize)) * spacing + copyOffset;
     wsPos = vec3(xz.x, heightAt(sampleIndex, vertexLevel(g)), xz.y);
     lodLevel = patchInfo.w;
-    gl_ClipDistance[0] = dot(vec4(wsPos, 1.0), frame.clipPlane);
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }

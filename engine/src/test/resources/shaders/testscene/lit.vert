@@ -9,6 +9,5 @@ out vec3 wsNormal;
 void main() {
     wsPos = wsPosIn;
     wsNormal = wsNormalIn;
-    gl_ClipDistance[0] = dot(vec4(wsPosIn, 1.0), frame.clipPlane);
     gl_Position = frame.viewProjection * vec4(wsPosIn, 1.0);
 }

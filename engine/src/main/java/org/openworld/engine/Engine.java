@@ -1,6 +1,8 @@
 package org.openworld.engine;
 
 import static org.lwjgl.opengl.GL11C.*;
+import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
+import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
 
 import java.nio.FloatBuffer;
 import java.util.ArrayDeque;
@@ -22,9 +24,11 @@ import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Pass;
-import org.openworld.engine.core.PassCameras;
+import org.openworld.engine.core.PassOwner;
+import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemOrder;
+import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Exposure;
@@ -51,8 +55,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * Owns the world and the systems and runs the frame (DESIGN.md, "Core"):
  * <ol>
  *   <li>fixed-step {@code update}: every enabled system, in resolved order, advances by exactly one step;</li>
- *   <li>render passes SHADOW → REFLECTION → MAIN → OVERLAY: for each pass that some system draws in, the frame
- *       uniform block is written with that pass's camera and the systems draw in resolved order;</li>
+ *   <li>render passes SHADOW → REFLECTION → MAIN → OVERLAY: for each pass that some system draws in (and, for SHADOW
+ *       and REFLECTION, whose {@link PassOwner} gives a view this frame), the frame uniform block is written with
+ *       that pass's camera, its target is bound and cleared, and the systems draw in resolved order;</li>
  *   <li>the picture is in the scene target, to be read back (headless) or shown (window).</li>
  * </ol>
  * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as
@@ -67,10 +72,11 @@ public final class Engine implements AutoCloseable {
     private final SystemOrder order;
     /** The systems drawing in or preparing each pass, in resolved order; fixed at start-up. */
     private final Map<Pass, List<EngineSystem>> drawingIn = new EnumMap<>(Pass.class);
+    /** The system owning SHADOW or REFLECTION, if any. */
+    private final Map<Pass, EngineSystem> owners = new EnumMap<>(Pass.class);
     private final Set<String> disabled = new HashSet<>();
     private final DrawStats stats = new DrawStats();
     private final Counters counters = new Counters();
-    private final PassCameras passCameras = new PassCameras();
     private final List<EngineSystem> initialised = new ArrayList<>();
     private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
     private final Map<String, Double> systemNanos = new LinkedHashMap<>();
@@ -104,9 +110,22 @@ public final class Engine implements AutoCloseable {
             drawingIn.put(pass, order.systems().stream()
                     .filter(s -> s.spec().passes().contains(pass) || s.spec().prepared().contains(pass)).toList());
         }
+        for (EngineSystem system : order.systems()) {
+            if (system instanceof PassOwner owner) {
+                Pass pass = owner.ownedPass();
+                if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
+                    throw new SystemOrderException("system '" + system.spec().name() + "' claims the " + pass.label()
+                            + " pass, which the engine draws with the viewer's camera into the scene");
+                }
+                EngineSystem other = owners.put(pass, system);
+                if (other != null) {
+                    throw new SystemOrderException("systems '" + other.spec().name() + "' and '"
+                            + system.spec().name() + "' both own the " + pass.label() + " pass");
+                }
+            }
+        }
         world.setResource(settings);
         world.setResource(counters);
-        world.setResource(passCameras);
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
@@ -231,30 +250,27 @@ public final class Engine implements AutoCloseable {
     public void render() {
         long frameStart = System.nanoTime();
         stats.reset();
-        float aspect = (float) scene.width() / scene.height();
-        ViewCamera main = world.resource(Camera.class).view(aspect);
-        passCameras.set(Pass.MAIN, main);
-        passCameras.set(Pass.OVERLAY, main);
+        ViewCamera viewer = world.resource(Camera.class).view((float) scene.width() / scene.height());
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
             if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
                 continue;
             }
-            ViewCamera camera = passCameras.get(pass);
-            // 1. the pass's camera and the world's light into the frame block; the sky's textures to their units
-            frameUniforms.write(frameValues(camera));
-            bindSharedTextures();
-            // 2. the target: MAIN and OVERLAY draw into the scene; SHADOW and REFLECTION owners bind their own
-            if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
-                scene.bind();
+            PassView view = view(pass, viewer);
+            if (view == null) {
+                continue;
             }
-            if (pass == Pass.MAIN) {
-                glClearColor(0, 0, 0, 1);
-                glClearStencil(0);
-                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+            // 1. the pass's camera and the world's light into the frame block; the sky's textures to their units
+            frameUniforms.write(frameValues(view));
+            bindSharedTextures();
+            // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
+            view.target().bind();
+            glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
+            if (pass != Pass.OVERLAY) {
+                clear(pass);
             }
             // 3. the systems draw, each timed on the GPU as one span labelled pass.system
-            RenderContext context = new RenderContext(world, camera, stats, scene.width(), scene.height());
+            RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
             for (EngineSystem system : drawing) {
                 if (!isEnabled(system.spec().name())) {
                     continue;
@@ -266,6 +282,9 @@ public final class Engine implements AutoCloseable {
                 systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
             }
         }
+        glFrontFace(GL_CCW);
+        glDisable(GL_STENCIL_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         timers.endFrame(frame);
         double cpuMs = (System.nanoTime() - frameStart) / 1e6;
         // 4. at most two frames in flight, as with a swap chain, so timings measure frames and not a queue
@@ -279,13 +298,49 @@ public final class Engine implements AutoCloseable {
         frame++;
     }
 
-    private FrameUniforms.Values frameValues(ViewCamera camera) {
+    /** MAIN and OVERLAY: the viewer into the scene; SHADOW and REFLECTION: their owner's view, or null to skip. */
+    private PassView view(Pass pass, ViewCamera viewer) {
+        if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
+            return new PassView(viewer, scene);
+        }
+        EngineSystem owner = owners.get(pass);
+        if (owner == null || !isEnabled(owner.spec().name())) {
+            return null;
+        }
+        return ((PassOwner) owner).passView(world, viewer).orElse(null);
+    }
+
+    /**
+     * Clears a pass's target. MAIN starts black, with the stencil at 0xFF everywhere and every fragment that passes
+     * the depth test writing 0: the first step of the paper's water (section 3.3), "stencil clear value 0xFF, the
+     * terrain writes 0", kept as the engine's rule so no drawing system need know of it. A system that marks its
+     * pixels otherwise (the water writes 0xFF) sets its own stencil state and puts this one back. An owned pass
+     * (shadow map, reflection) starts with alpha 0, so a reader can tell where nothing was drawn.
+     */
+    private static void clear(Pass pass) {
+        boolean main = pass == Pass.MAIN;
+        glClearColor(0, 0, 0, main ? 1 : 0);
+        glClearStencil(0xFF);
+        glDepthMask(true);
+        glStencilMask(0xFF);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        if (main) {
+            glEnable(GL_STENCIL_TEST);
+            glStencilFunc(GL_ALWAYS, 0, 0xFF);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        } else {
+            glDisable(GL_STENCIL_TEST);
+        }
+    }
+
+    private FrameUniforms.Values frameValues(PassView view) {
+        ViewCamera camera = view.camera();
         Sun sun = world.findResource(Sun.class).orElse(NOON);
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
-                exposure.scale(), camera.clipPlane(), simTime, world.resource(TimeOfDay.class).hours(), frame,
-                scene.width(), scene.height());
+                exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
+                view.target().height());
     }
 
     /** Binds the sky's shared textures, or the neutral stand-ins when no system models the sky. */

@@ -14,7 +14,9 @@ import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Function;
+import java.util.function.UnaryOperator;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
@@ -26,8 +28,10 @@ import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Pass;
-import org.openworld.engine.core.PassCameras;
+import org.openworld.engine.core.PassOwner;
+import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
@@ -49,12 +53,11 @@ class EngineTest {
     static final HeadlessGl GL = new HeadlessGl();
 
     /** One render call as a system saw it. */
-    record Call(String system, Pass pass, ViewCamera camera) {
+    record Call(String system, Pass pass, ViewCamera camera, Framebuffer target) {
     }
 
     /**
-     * A system that draws one mesh in one flat colour in each of its passes and logs every lifecycle call. Systems
-     * drawing in SHADOW or REFLECTION bind a small target of their own, as the real owners of those passes do.
+     * A system that draws one mesh in one flat colour in each of its passes and logs every lifecycle call.
      */
     static class Drawing implements EngineSystem {
         final SystemSpec spec;
@@ -68,7 +71,6 @@ class EngineTest {
         private ShaderProgram program;
         private Uniform.Vec4 colorUniform;
         private Mesh mesh;
-        private Framebuffer ownTarget;
 
         Drawing(SystemSpec spec, List<String> log, List<Call> calls, Function<GlContext, Mesh> meshFactory,
                 float... color) {
@@ -90,10 +92,6 @@ class EngineTest {
             program = context.shaders().program("test/fullscreen.vert", "test/solid.frag");
             colorUniform = program.vec4("uColor");
             mesh = meshFactory.apply(context.gl());
-            if (spec.passes().contains(Pass.SHADOW) || spec.passes().contains(Pass.REFLECTION)) {
-                ownTarget = new Framebuffer(context.gl(), 16, 16, Texture2D.Format.RGBA8, Texture2D.Format.DEPTH32F,
-                        Texture2D.Sampling.NEAREST_CLAMP);
-            }
         }
 
         @Override
@@ -105,10 +103,7 @@ class EngineTest {
         @Override
         public void render(Pass pass, RenderContext context) {
             log.add(pass.label() + " " + spec.name());
-            calls.add(new Call(spec.name(), pass, context.camera()));
-            if (ownTarget != null) {
-                ownTarget.bind();
-            }
+            calls.add(new Call(spec.name(), pass, context.camera(), context.target()));
             glDisable(GL_DEPTH_TEST);
             program.use();
             colorUniform.set(color[0], color[1], color[2], 1);
@@ -119,9 +114,6 @@ class EngineTest {
         public void close() {
             closed = true;
             log.add("close " + spec.name());
-            if (ownTarget != null) {
-                ownTarget.close();
-            }
             mesh.close();
             program.close();
         }
@@ -130,22 +122,65 @@ class EngineTest {
     /** The sun's camera: an orthographic box looking down, as a shadow system would set it. */
     static final ViewCamera SUN_CAMERA = new ViewCamera(
             new Matrix4f().lookAt(0, 500, 0, 0, 0, 0, 0, 0, -1), new Matrix4f().ortho(-100, 100, -100, 100, 1, 1000),
-            new Vector3f(0, 500, 0), 1, 1000, ViewCamera.NO_CLIP);
+            new Vector3f(0, 500, 0), 1, 1000);
 
     final List<String> log = new ArrayList<>();
     final List<Call> calls = new ArrayList<>();
 
-    /** Sets the SHADOW pass's camera in its update and reports a counter. */
-    final Drawing shadow = new Drawing(SystemSpec.named("shadow").writes(PassCameras.class).draws(Pass.SHADOW),
+    /**
+     * Owns a pass the way the shadow and water systems do: gives its camera (from the viewer's) and a small target of
+     * its own, or nothing while {@code skip} is set.
+     */
+    static class Owner extends Drawing implements PassOwner {
+        final Pass owned;
+        final UnaryOperator<ViewCamera> camera;
+        Framebuffer target;
+        boolean skip;
+
+        Owner(SystemSpec spec, Pass owned, UnaryOperator<ViewCamera> camera, List<String> log, List<Call> calls,
+              Function<GlContext, Mesh> meshFactory, float... color) {
+            super(spec, log, calls, meshFactory, color);
+            this.owned = owned;
+            this.camera = camera;
+        }
+
+        @Override
+        public void init(EngineContext context) {
+            super.init(context);
+            target = new Framebuffer(context.gl(), 16, 16, Texture2D.Format.RGBA8, Texture2D.Format.DEPTH32F,
+                    Texture2D.Sampling.NEAREST_CLAMP);
+        }
+
+        @Override
+        public Pass ownedPass() {
+            return owned;
+        }
+
+        @Override
+        public Optional<PassView> passView(World world, ViewCamera viewer) {
+            return skip ? Optional.empty() : Optional.of(new PassView(camera.apply(viewer), target));
+        }
+
+        @Override
+        public void close() {
+            super.close();
+            target.close();
+        }
+    }
+
+    /** Owns SHADOW with the sun's camera and reports a counter. */
+    final Owner shadow = new Owner(SystemSpec.named("shadow").draws(Pass.SHADOW), Pass.SHADOW, viewer -> SUN_CAMERA,
             log, calls, GlTestSupport::quarterQuad, 0, 0, 0) {
         @Override
         public void update(World world, double step) {
             super.update(world, step);
-            world.resource(PassCameras.class).set(Pass.SHADOW, SUN_CAMERA);
             world.resource(Counters.class).put("shadow.casters", 3);
         }
     };
-    final Drawing mirror = new Drawing(SystemSpec.named("mirror").draws(Pass.REFLECTION),
+    /** Owns REFLECTION with the viewer mirrored in y = 0. */
+    final Owner mirror = new Owner(SystemSpec.named("mirror").draws(Pass.REFLECTION), Pass.REFLECTION,
+            viewer -> new ViewCamera(new Matrix4f(viewer.view()).scale(1, -1, 1), viewer.projection(),
+                    new Vector3f(viewer.position()).mul(1, -1, 1), viewer.near(), viewer.far()),
             log, calls, GlTestSupport::fullScreenTriangle, 1, 1, 1);
     final Drawing terrain = new Drawing(SystemSpec.named("terrain").draws(Pass.MAIN),
             log, calls, GlTestSupport::fullScreenTriangle, 0, 1, 0);
@@ -233,9 +268,42 @@ class EngineTest {
             ViewCamera main = byPass.get(Pass.MAIN);
             assertNotSame(SUN_CAMERA, main);
             assertEquals(new Vector3f(10, 20, 30), main.position());
-            assertSame(main, byPass.get(Pass.REFLECTION), "nobody owns REFLECTION's camera: it is the main one");
+            ViewCamera reflection = byPass.get(Pass.REFLECTION);
+            assertEquals(new Vector3f(10, -20, 30), reflection.position());
+            assertTrue(reflection.mirrored() && !main.mirrored());
             assertSame(main, byPass.get(Pass.OVERLAY));
+            Map<Pass, Framebuffer> targets = new java.util.EnumMap<>(Pass.class);
+            calls.forEach(c -> targets.put(c.pass(), c.target()));
+            assertSame(shadow.target, targets.get(Pass.SHADOW));
+            assertSame(mirror.target, targets.get(Pass.REFLECTION));
+            assertSame(targets.get(Pass.MAIN), targets.get(Pass.OVERLAY));
+            assertEquals(SIZE, targets.get(Pass.MAIN).width());
         }
+    }
+
+    @Test
+    void aPassIsSkippedWhileItsOwnerGivesNoView() {
+        try (Engine engine = engineWithAllPasses()) {
+            mirror.skip = true;
+            engine.update();
+            log.clear();
+            engine.render();
+            assertEquals(List.of("shadow shadow", "main terrain", "main decals", "overlay hud"), log);
+        }
+    }
+
+    @Test
+    void aPassHasAtMostOneOwnerAndTheViewersPassesNone() {
+        Owner second = new Owner(SystemSpec.named("second-mirror").draws(Pass.REFLECTION), Pass.REFLECTION,
+                viewer -> viewer, log, calls, GlTestSupport::fullScreenTriangle, 1, 1, 1);
+        SystemOrderException twice = assertThrows(SystemOrderException.class,
+                () -> GlTestSupport.engine(GL.context(), SIZE, SIZE, mirror, second).close());
+        assertTrue(twice.getMessage().contains("'mirror' and 'second-mirror' both own the reflection pass"),
+                twice.getMessage());
+        Owner main = new Owner(SystemSpec.named("thief").draws(Pass.MAIN), Pass.MAIN, viewer -> viewer, log, calls,
+                GlTestSupport::fullScreenTriangle, 1, 1, 1);
+        assertThrows(SystemOrderException.class, () -> GlTestSupport.engine(GL.context(), SIZE, SIZE, main).close());
+        assertEquals(0, GL.context().objects().live());
     }
 
     @Test

@@ -25,10 +25,8 @@ void main() {
     } else if (column == 5) {
         v = vec4(frame.exposure.x / 8.0, frame.exposure.yz, 1.0 - frame.exposure.w);
     } else if (column == 6) {
-        v = vec4(frame.clipPlane * 0.5 + 0.5);
-    } else if (column == 7) {
         v = vec4(frame.timeInfo.x * 5.0, frame.timeInfo.y / 24.0, frame.timeInfo.z / 8.0, 1.0 - frame.timeInfo.w);
-    } else if (column == 8) {
+    } else if (column == 7) {
         v = vec4(clip.xy / clip.w * 0.5 + 0.5, viaViewAndProjection.xy / viaViewAndProjection.w * 0.5 + 0.5);
     } else {
         v = vec4(clip.z / clip.w * 0.5 + 0.5, backError < 0.01 ? 1.0 : 0.0, 0.0, 1.0);

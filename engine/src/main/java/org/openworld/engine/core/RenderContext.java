@@ -1,16 +1,18 @@
 package org.openworld.engine.core;
 
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.Framebuffer;
 
 /**
- * What a system gets in {@link EngineSystem#render}: the world, the camera of the pass being drawn, and the frame's
- * draw statistics. The frame uniform block ({@code shaders/common/frame.glsl}) already holds this pass's camera.
+ * What a system gets in {@link EngineSystem#render}: the world, the camera of the pass being drawn, the frame's draw
+ * statistics and the pass's target. The frame uniform block ({@code shaders/common/frame.glsl}) already holds this
+ * pass's camera, and the target is bound.
  *
  * @param world  the shared world
  * @param camera this pass's camera
  * @param stats  draw calls and triangles, counted by {@code Mesh}
- * @param width  width of the scene target, pixels (a SHADOW or REFLECTION owner knows its own target's size)
- * @param height height of the scene target, pixels
+ * @param target the framebuffer this pass draws into (the scene target in MAIN and OVERLAY), bound; a system that
+ *               binds another one (the water copying the scene) binds this one back
  */
-public record RenderContext(World world, ViewCamera camera, DrawStats stats, int width, int height) {
+public record RenderContext(World world, ViewCamera camera, DrawStats stats, Framebuffer target) {
 }

@@ -4,21 +4,19 @@ import org.joml.Matrix4f;
 import org.joml.Matrix4fc;
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
-import org.joml.Vector4f;
-import org.joml.Vector4fc;
 import org.openworld.engine.camera.CameraPose;
 
 /**
- * The camera one pass renders with: view and projection matrices, the eye position and an optional world-space
- * clip plane (the water's reflection pass clips everything below the water). Immutable.
+ * The camera one pass renders with: view and projection matrices and the eye position. Immutable. A camera may be
+ * <em>mirrored</em> (its view has a negative determinant, as the water's reflection camera does): it sees the world
+ * with its handedness flipped, so triangles wind the other way on screen and the engine swaps which winding is the
+ * front face. A clip plane, where a pass needs one, is built into the projection as its near plane (the water's
+ * oblique projection), so every shader and the culling obey it without knowing of it.
  *
  * <p>View matrix from a pose, in DESIGN.md's conventions (yaw clockwise from north = −Z, pitch up):
  * {@code V = Rx(−pitch) · Ry(yaw) · T(−eye)}. With yaw 90° that maps east (+X) onto the view direction −Z.
  */
 public final class ViewCamera {
-
-    /** No clipping: every point has a positive distance. */
-    public static final Vector4fc NO_CLIP = new Vector4f(0, 0, 0, 1);
 
     private final Matrix4f view;
     private final Matrix4f projection;
@@ -26,16 +24,14 @@ public final class ViewCamera {
     private final Vector3f position;
     private final float near;
     private final float far;
-    private final Vector4f clipPlane;
 
-    public ViewCamera(Matrix4fc view, Matrix4fc projection, Vector3fc position, float near, float far, Vector4fc clipPlane) {
+    public ViewCamera(Matrix4fc view, Matrix4fc projection, Vector3fc position, float near, float far) {
         this.view = new Matrix4f(view);
         this.projection = new Matrix4f(projection);
         this.viewProjection = new Matrix4f(projection).mul(view);
         this.position = new Vector3f(position);
         this.near = near;
         this.far = far;
-        this.clipPlane = new Vector4f(clipPlane);
     }
 
     /** A perspective camera at a pose; {@code aspect} is width / height. */
@@ -46,12 +42,7 @@ public final class ViewCamera {
                 .rotateY((float) Math.toRadians(pose.yaw()))
                 .translate(-eye.x, -eye.y, -eye.z);
         Matrix4f projection = new Matrix4f().perspective((float) Math.toRadians(pose.fov()), aspect, near, far);
-        return new ViewCamera(view, projection, eye, near, far, NO_CLIP);
-    }
-
-    /** The same camera with a world-space clip plane (a, b, c, d): points with ax + by + cz + d &lt; 0 are cut. */
-    public ViewCamera withClipPlane(Vector4fc plane) {
-        return new ViewCamera(view, projection, position, near, far, plane);
+        return new ViewCamera(view, projection, eye, near, far);
     }
 
     public Matrix4fc view() {
@@ -78,7 +69,8 @@ public final class ViewCamera {
         return far;
     }
 
-    public Vector4fc clipPlane() {
-        return clipPlane;
+    /** Whether the view flips handedness (a mirror's camera): counter-clockwise triangles then appear clockwise. */
+    public boolean mirrored() {
+        return view.determinant3x3() < 0;
     }
 }

@@ -11,7 +11,9 @@
  * with the reason for every edge.
  *
  * <p><b>Passes.</b> SHADOW → REFLECTION → MAIN → OVERLAY, each with its own {@link org.openworld.engine.core.ViewCamera}
- * kept in {@link org.openworld.engine.core.PassCameras}.
+ * and target ({@link org.openworld.engine.core.PassView}): MAIN and OVERLAY the viewer's camera and the scene, SHADOW
+ * and REFLECTION what their {@link org.openworld.engine.core.PassOwner} (the shadow system, the water system) gives
+ * each frame.
  *
  * <p><b>Limits.</b> The world is a hash map per component class: fine for thousands of entities, not for millions
  * (particles live on the GPU, not in the world).

@@ -3,7 +3,6 @@ package org.openworld.engine.culling;
 import org.joml.Matrix4f;
 import org.joml.Matrix4fc;
 import org.joml.Vector4f;
-import org.joml.Vector4fc;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.culling.Visibility.Containment;
 
@@ -16,9 +15,8 @@ import org.openworld.engine.culling.Visibility.Containment;
  * {@link Matrix4f#frustumPlane(int, Vector4f)} computes it). This is algebra on the matrix, so it holds for
  * perspective and orthographic projections, for oblique near planes, and for mirrored views
  * ({@code view · scale(1, −1, 1)}), whose handedness flips but whose clip inequalities do not. The planes are
- * scaled to unit normals, pointing inwards. A seventh plane is the camera's clip plane
- * ({@link ViewCamera#clipPlane()}: the reflection pass cuts everything below the water); for a camera without one it
- * is {@code (0, 0, 0, 1)}, which every box is inside.
+ * scaled to unit normals, pointing inwards. The water's reflection camera has an oblique near plane that lies in the
+ * water surface, so its frustum's near plane culls whatever is under the water.
  *
  * <p><b>Box test.</b> For a plane {@code (n, d)} and a box {@code [min, max]}, the corner furthest along {@code n}
  * is the positive vertex {@code p⁺ = (nₓ ≥ 0 ? maxₓ : minₓ, …)}, the nearest the negative vertex {@code p⁻}. Then
@@ -29,12 +27,12 @@ import org.openworld.engine.culling.Visibility.Containment;
  * </ul>
  * This is conservative: a box near a frustum corner can be outside the frustum while no single plane has all its
  * corners outside, and is then kept as PARTIAL. It never rejects a box that the camera can see. Cost: two dot
- * products per plane, at most 14 per box.
+ * products per plane, at most 12 per box.
  */
 public final class Frustum {
 
-    /** Six frustum planes and the clip plane. */
-    static final int PLANES = 7;
+    /** Left, right, bottom, top, near, far. */
+    static final int PLANES = 6;
     /** The frustum planes in JOML's order: −x, +x, −y, +y, −z (near), +z (far). */
     private static final int[] JOML_PLANES = {
         Matrix4fc.PLANE_NX, Matrix4fc.PLANE_PX, Matrix4fc.PLANE_NY, Matrix4fc.PLANE_PY, Matrix4fc.PLANE_NZ,
@@ -51,22 +49,17 @@ public final class Frustum {
         }
     }
 
-    /** The planes of a pass camera: its view-projection frustum and its clip plane. */
+    /** The planes of a pass camera's view-projection frustum. */
     public Frustum set(ViewCamera camera) {
-        return set(camera.viewProjection(), camera.clipPlane());
+        return set(camera.viewProjection());
     }
 
-    /**
-     * @param viewProjection world → clip, OpenGL conventions (clip z from −w to w)
-     * @param clipPlane      a world-space plane (a, b, c, d) whose negative side is cut, or
-     *                       {@link ViewCamera#NO_CLIP}
-     */
-    public Frustum set(Matrix4fc viewProjection, Vector4fc clipPlane) {
-        for (int i = 0; i < JOML_PLANES.length; i++) {
+    /** @param viewProjection world → clip, OpenGL conventions (clip z from −w to w) */
+    public Frustum set(Matrix4fc viewProjection) {
+        for (int i = 0; i < PLANES; i++) {
             viewProjection.frustumPlane(JOML_PLANES[i], plane);
             store(i, plane);
         }
-        store(PLANES - 1, plane.set(clipPlane));
         return this;
     }
 

@@ -6,7 +6,6 @@ import static org.lwjgl.opengl.GL15C.GL_DYNAMIC_DRAW;
 import java.nio.ByteBuffer;
 import org.joml.Matrix4f;
 import org.joml.Vector3fc;
-import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 
 /**
@@ -24,13 +23,13 @@ public final class FrameUniforms implements AutoCloseable {
 
     private static final int MAT4 = 64;
     private static final int VEC4 = 16;
-    /** 4 matrices and 8 vectors, bytes. */
-    static final int SIZE = 4 * MAT4 + 8 * VEC4;
+    /** 4 matrices and 7 vectors, bytes. */
+    static final int SIZE = 4 * MAT4 + 7 * VEC4;
 
     /** Everything the block holds, gathered by the engine for one pass. */
     public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
                          Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure,
-                         Vector4fc clipPlane, double simTime, double timeOfDayHours, long frame,
+                         double simTime, double timeOfDayHours, long frame,
                          int width, int height) {
     }
 
@@ -57,7 +56,6 @@ public final class FrameUniforms implements AutoCloseable {
         o = vec4(o, v.sunColor().x(), v.sunColor().y(), v.sunColor().z(), 0);
         o = vec4(o, v.ambient().x(), v.ambient().y(), v.ambient().z(), 0);
         o = vec4(o, v.exposure(), 0, 0, 0);
-        o = vec4(o, v.clipPlane().x(), v.clipPlane().y(), v.clipPlane().z(), v.clipPlane().w());
         o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
         vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
         buffer.update(data);

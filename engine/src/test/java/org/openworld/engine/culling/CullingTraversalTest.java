@@ -20,6 +20,7 @@ import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility.Containment;
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.Framebuffer;
 
 /**
  * The hierarchical traversal against the brute-force test of every node on its own, without GL: since a child's box
@@ -29,6 +30,8 @@ import org.openworld.engine.gl.DrawStats;
 class CullingTraversalTest {
 
     private static final long SEED = 24;
+    /** Culling draws nothing in these passes (no frozen frustum to outline), so it needs no framebuffer. */
+    private static final Framebuffer NO_TARGET = null;
     /** Side of the root box, metres: a terrain tile of a few kilometres. */
     private static final float WORLD = 4000;
     private static final int MAX_DEPTH = 6;
@@ -51,7 +54,7 @@ class CullingTraversalTest {
             boolean shadow = c % 4 == 3;
             ViewCamera camera = shadow ? sunCamera(random) : randomViewer(random);
             Pass pass = shadow ? Pass.SHADOW : Pass.MAIN;
-            culling.render(pass, new RenderContext(world, camera, new DrawStats(), 320, 180));
+            culling.render(pass, new RenderContext(world, camera, new DrawStats(), NO_TARGET));
 
             Visibility visibility = world.get(entity, Visibility.class).orElseThrow();
             if (first == null) {
@@ -85,9 +88,9 @@ class CullingTraversalTest {
         int entity = world.spawn();
         world.add(entity, new Cullable(randomTree(new Random(SEED)), OFFSETS));
         ViewCamera camera = ViewCamera.perspective(new CameraPose(0, 100, 0, 0, 0, 60), 16 / 9f, 0.5f, 40_000);
-        culling.render(Pass.MAIN, new RenderContext(world, camera, new DrawStats(), 320, 180));
+        culling.render(Pass.MAIN, new RenderContext(world, camera, new DrawStats(), NO_TARGET));
         assertTrue(world.get(entity, Visibility.class).isPresent());
-        culling.render(Pass.OVERLAY, new RenderContext(world, camera, new DrawStats(), 320, 180));
+        culling.render(Pass.OVERLAY, new RenderContext(world, camera, new DrawStats(), NO_TARGET));
         assertTrue(world.get(entity, Visibility.class).isEmpty(),
                 "a Visibility left after the frame would be read, stale, if culling were switched off");
     }
@@ -135,7 +138,7 @@ class CullingTraversalTest {
         Matrix4f view = new Matrix4f().lookAt(eye, centre, new Vector3f(0, 0, -1));
         float half = 200 + 1000 * random.nextFloat();
         Matrix4f projection = new Matrix4f().ortho(-half, half, -half, half, 0, 4000);
-        return new ViewCamera(view, projection, eye, 0, 4000, ViewCamera.NO_CLIP);
+        return new ViewCamera(view, projection, eye, 0, 4000);
     }
 
     /**

@@ -14,14 +14,13 @@ import org.joml.Vector3d;
 import org.joml.Vector3f;
 import org.joml.Vector4d;
 import org.joml.Vector4f;
-import org.joml.Vector4fc;
 import org.junit.jupiter.api.Test;
-import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.water.MirrorCamera;
 import org.openworld.engine.culling.Visibility.Containment;
 
 /**
- * The box test against its ground truth, the clip inequalities {@code −w ≤ x, y, z ≤ w} (and the clip plane), over
- * random perspective, orthographic and mirrored cameras. Ground truth is computed in double precision from the same
+ * The box test against its ground truth, the clip inequalities {@code −w ≤ x, y, z ≤ w}, over random perspective,
+ * orthographic, mirrored and oblique (the water's clipped reflection) cameras. Ground truth is computed in double precision from the same
  * matrix; a point within {@link #MARGIN} of a plane counts as on it, the width of float rounding in the planes.
  */
 class FrustumTest {
@@ -36,7 +35,7 @@ class FrustumTest {
     private static final double MARGIN = 1e-4;
 
     /** One random camera: its matrix for the frustum and, in double, for the ground truth. */
-    private record Camera(Matrix4f viewProjection, Vector4f clipPlane, Matrix4d exact, String kind) {
+    private record Camera(Matrix4f viewProjection, Matrix4d exact, String kind) {
     }
 
     @Test
@@ -47,7 +46,7 @@ class FrustumTest {
         float[] box = new float[6];
         for (int c = 0; c < CAMERAS; c++) {
             Camera camera = randomCamera(random, c);
-            frustum.set(camera.viewProjection, camera.clipPlane);
+            frustum.set(camera.viewProjection);
             for (int b = 0; b < BOXES_PER_CAMERA; b++) {
                 randomBoxNearFrustum(random, camera, box);
                 Containment containment = frustum.test(box, 0, 0, 0);
@@ -72,7 +71,7 @@ class FrustumTest {
         float[] box = new float[6];
         for (int c = 0; c < CAMERAS; c++) {
             Camera camera = randomCamera(random, c);
-            frustum.set(camera.viewProjection, camera.clipPlane);
+            frustum.set(camera.viewProjection);
             for (int b = 0; b < BOXES_PER_CAMERA; b++) {
                 Vector3d point = randomVisiblePoint(random, camera);
                 double extent = scale(camera, point) * Math.pow(10, -3 + 3 * random.nextDouble());
@@ -96,7 +95,7 @@ class FrustumTest {
         int decided = 0;
         for (int c = 0; c < CAMERAS; c++) {
             Camera camera = randomCamera(random, c);
-            frustum.set(camera.viewProjection, camera.clipPlane);
+            frustum.set(camera.viewProjection);
             for (int b = 0; b < BOXES_PER_CAMERA; b++) {
                 randomBoxNearFrustum(random, camera, box);
                 Boolean oneRejectingPlane = allCornersOutsideOnePlane(camera, box);
@@ -112,14 +111,17 @@ class FrustumTest {
 
     @Test
     void offsetsMoveTheBox() {
-        Frustum frustum = new Frustum().set(new Matrix4f().ortho(-10, 10, -10, 10, -10, 10), ViewCamera.NO_CLIP);
+        Frustum frustum = new Frustum().set(new Matrix4f().ortho(-10, 10, -10, 10, -10, 10));
         float[] box = {-1, -1, -1, 1, 1, 1};
         assertEquals(Containment.INSIDE, frustum.test(box, 0, 0, 0));
         assertEquals(Containment.PARTIAL, frustum.test(box, 0, 10, 0));
         assertEquals(Containment.OUTSIDE, frustum.test(box, 0, 0, -12));
     }
 
-    /** Perspective or orthographic, a random pose, sometimes mirrored in a horizontal plane or clipped by one. */
+    /**
+     * Perspective or orthographic, a random pose, sometimes mirrored in a horizontal plane, sometimes (perspective)
+     * with an oblique near plane through the middle of the view.
+     */
     private static Camera randomCamera(Random random, int index) {
         Vector3f eye = new Vector3f(sym(random, 100), sym(random, 100), sym(random, 100));
         Vector3f direction = new Vector3f(sym(random, 1), sym(random, 1), sym(random, 1)).normalize();
@@ -145,16 +147,17 @@ class FrustumTest {
             view.translate(0, h, 0).scale(1, -1, 1).translate(0, -h, 0);
             kind += ", mirrored";
         }
-        Matrix4f viewProjection = new Matrix4f(projection).mul(view);
-        Vector4f clip = new Vector4f(ViewCamera.NO_CLIP);
-        if (index % 5 == 0) {
-            // a plane of any direction through the middle of the view, so it cuts the frustum about in half
+        if (!orthographic && index % 5 == 0) {
+            // a view-space plane of any direction through the middle of the view, the eye behind it
             Vector3f n = new Vector3f(sym(random, 1), sym(random, 1), sym(random, 1)).normalize();
-            Vector3d middle = new Matrix4d(viewProjection).invert().transformProject(new Vector3d(0, 0, 0));
-            clip.set(n, (float) -(n.x * middle.x + n.y * middle.y + n.z * middle.z));
-            kind += ", clip plane";
+            Vector3f middle = new Matrix4f(projection).invert().transformProject(new Vector3f(0, 0, 0));
+            float d = -n.dot(middle);
+            Vector4f plane = d < 0 ? new Vector4f(n, d) : new Vector4f(n.negate(), -d);
+            projection = MirrorCamera.obliqueNearPlane(projection, plane);
+            kind += ", oblique";
         }
-        return new Camera(viewProjection, clip, new Matrix4d(viewProjection), kind);
+        Matrix4f viewProjection = new Matrix4f(projection).mul(view);
+        return new Camera(viewProjection, new Matrix4d(viewProjection), kind);
     }
 
     /** A box whose centre is near the frustum (its clip coordinates within ±1.5) and of a size from tiny to large. */
@@ -169,7 +172,7 @@ class FrustumTest {
         }
     }
 
-    /** A point strictly inside the frustum and on the kept side of the clip plane. */
+    /** A point strictly inside the frustum. */
     private static Vector3d randomVisiblePoint(Random random, Camera camera) {
         for (int attempt = 0; attempt < 1000; attempt++) {
             Vector3d p = unproject(camera, sym(random, 0.99), sym(random, 0.99), sym(random, 0.99));
@@ -177,7 +180,7 @@ class FrustumTest {
                 return p;
             }
         }
-        throw new IllegalStateException(camera.kind + ": the clip plane leaves nothing visible");
+        throw new IllegalStateException(camera.kind + ": nothing is visible");
     }
 
     /** Normalised device coordinates back to world space. */
@@ -192,18 +195,14 @@ class FrustumTest {
     }
 
     /**
-     * Whether a point is drawn: {@code −w ≤ x, y, z ≤ w} and on the kept side of the clip plane, each with a slack of
+     * Whether a point is drawn: {@code −w ≤ x, y, z ≤ w}, each with a slack of
      * {@code slack} times the size of the coordinates (positive: points just outside count as visible).
      */
     private static boolean visible(Camera camera, double x, double y, double z, double slack) {
         Vector4d c = camera.exact.transform(new Vector4d(x, y, z, 1));
         double tolerance = slack * (Math.abs(c.x) + Math.abs(c.y) + Math.abs(c.z) + Math.abs(c.w));
-        Vector4fc plane = camera.clipPlane;
-        double clip = plane.x() * x + plane.y() * y + plane.z() * z + plane.w();
-        double clipTolerance = slack * (Math.abs(plane.x() * x) + Math.abs(plane.y() * y) + Math.abs(plane.z() * z)
-                + Math.abs(plane.w()));
         return c.x >= -c.w - tolerance && c.x <= c.w + tolerance && c.y >= -c.w - tolerance && c.y <= c.w + tolerance
-                && c.z >= -c.w - tolerance && c.z <= c.w + tolerance && clip >= -clipTolerance;
+                && c.z >= -c.w - tolerance && c.z <= c.w + tolerance;
     }
 
     private static void requireNoSampleVisible(Camera camera, float[] box) {
@@ -233,12 +232,12 @@ class FrustumTest {
     }
 
     /**
-     * Whether all eight corners are outside one of the seven planes (six clip inequalities and the clip plane), in
+     * Whether all eight corners are outside one of the six planes (the clip inequalities), in
      * double precision; null when a corner lies within the margin of a deciding plane, too close to call.
      */
     private static Boolean allCornersOutsideOnePlane(Camera camera, float[] box) {
         boolean undecided = false;
-        for (int plane = 0; plane < 7; plane++) {
+        for (int plane = 0; plane < 6; plane++) {
             boolean allOut = true;
             boolean anyNear = false;
             for (int corner = 0; corner < 8; corner++) {
@@ -259,12 +258,6 @@ class FrustumTest {
 
     /** A plane's value at a point (positive inside) and the margin around zero within which it is undecided. */
     private static double[] planeValue(Camera camera, int plane, double x, double y, double z) {
-        if (plane == 6) {
-            Vector4fc p = camera.clipPlane;
-            double value = p.x() * x + p.y() * y + p.z() * z + p.w();
-            return new double[] {value, MARGIN * (Math.abs(p.x() * x) + Math.abs(p.y() * y) + Math.abs(p.z() * z)
-                    + Math.abs(p.w()))};
-        }
         Vector4d c = camera.exact.transform(new Vector4d(x, y, z, 1));
         double coordinate = plane / 2 == 0 ? c.x : plane / 2 == 1 ? c.y : c.z;
         double value = plane % 2 == 0 ? c.w + coordinate : c.w - coordinate;
