@@ -13,7 +13,19 @@ vec3 linearToSrgb(vec3 c) {
     return mix(lo, hi, step(vec3(0.0031308), c));
 }
 
+vec3 srgbToLinear(vec3 c) {
+    vec3 lo = c / 12.92;
+    vec3 hi = pow((c + 0.055) / 1.055, vec3(2.4));
+    return mix(lo, hi, step(vec3(0.04045), c));
+}
+
+// Exposed and tone-mapped, before the sRGB encoding: the display's linear light, 0..1. Pictures already in the
+// scene target (the water's reflection and refraction) are mixed in this space, after decoding their sRGB.
+vec3 toneMapped(vec3 linear) {
+    return toneMapAces(linear * frame.exposure.x);
+}
+
 // Exposed, tone-mapped and sRGB-encoded: the last step of every shader that writes the scene colour.
 vec3 displayColor(vec3 linear) {
-    return linearToSrgb(toneMapAces(linear * frame.exposure.x));
+    return linearToSrgb(toneMapped(linear));
 }

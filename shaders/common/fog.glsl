@@ -9,11 +9,16 @@
 
 uniform sampler3D aerialPerspective; // bound by the engine (gl.SharedTexture.AERIAL_PERSPECTIVE)
 
-// The colour seen at wsPos after the air between it and the eye.
-vec3 applyFog(vec3 linearColor, vec3 wsPos) {
+// The air between the eye and wsPos: rgb the light it scatters towards the eye, a its transmittance.
+vec4 airTo(vec3 wsPos) {
     vec3 toPoint = wsPos - cameraPos();
     float distance = length(toPoint);
     vec4 table = texture(aerialPerspective, aerialPerspectiveUvw(toPoint / max(distance, 1e-3), sunDir(), distance));
-    vec4 air = mix(vec4(0.0, 0.0, 0.0, 1.0), table, aerialPerspectiveWeight(distance));
+    return mix(vec4(0.0, 0.0, 0.0, 1.0), table, aerialPerspectiveWeight(distance));
+}
+
+// The colour seen at wsPos after the air between it and the eye.
+vec3 applyFog(vec3 linearColor, vec3 wsPos) {
+    vec4 air = airTo(wsPos);
     return linearColor * air.a + air.rgb;
 }

@@ -18,3 +18,12 @@ layout(std140) uniform FrameBlock {
 
 vec3 cameraPos() { return frame.cameraPosNear.xyz; }
 vec3 sunDir() { return frame.sunDirFar.xyz; }
+
+// The world-space direction of the view ray through a point of the screen (ndc.xy in -1..1), unnormalised. Built
+// from the view's rotation and the projection's x and y scales, not by unprojecting a depth: that stays right for a
+// mirrored view and for the water's oblique projection, whose near and far planes are tilted.
+vec3 viewRay(vec2 ndc) {
+    vec3 vsDir = vec3((ndc.x + frame.projection[2][0]) / frame.projection[0][0],
+                      (ndc.y + frame.projection[2][1]) / frame.projection[1][1], -1.0);
+    return transpose(mat3(frame.view)) * vsDir;
+}

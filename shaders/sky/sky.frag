@@ -17,6 +17,8 @@ uniform sampler3D aerialPerspective; // engine-bound: in-scattering and transmit
 uniform int uCubeFace;             // 0: the camera's view; 1: a face of the environment map, through uFaceAxes
 uniform mat3 uFaceAxes;            // the face's s, t and outward axes (CubeMapTexture.faceAxes)
 uniform float uGroundAlbedo;       // the ground seen below the horizon (AtmosphereSettings.groundAlbedo)
+uniform int uSunDisc;              // 1: draw the sun's disc; 0 in the water's reflection, whose shader adds the sun's
+                                   // glitter on the ripples itself (the disc's mirror image would count it twice)
 
 // The sun's angular radius, radians (0.2666 degrees, seen from Earth).
 const float SUN_RADIUS = 0.004654;
@@ -53,13 +55,12 @@ void main() {
     if (uCubeFace == 1) {
         wsDir = normalize(uFaceAxes * vec3(ndc, 1.0));
     } else {
-        vec4 wsFar = frame.invViewProjection * vec4(ndc, 1.0, 1.0);
-        wsDir = normalize(wsFar.xyz / wsFar.w - cameraPos());
+        wsDir = normalize(viewRay(ndc));
     }
     vec3 sky = texture(skyView, skyViewUv(wsDir, sunDir())).rgb;
     if (wsDir.y < 0.0) {
         sky += distantGround(wsDir);
-    } else if (uCubeFace == 0) {
+    } else if (uCubeFace == 0 && uSunDisc == 1) {
         sky += sunDisc(wsDir);
     }
     vec3 level = normalize(vec3(wsDir.x, 0.0, wsDir.z) + vec3(1e-6, 0.0, 0.0));

@@ -7,6 +7,7 @@ import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.water.WaterSystem;
 
 /**
  * The demo's world: which systems it runs. Adding a system to the demo is one line in {@link #systems()}; the
@@ -27,6 +28,7 @@ final class DemoScene {
                 new CameraSystem(),
                 new SkySystem(),
                 new CullingSystem(),
-                new TerrainSystem(line -> System.err.println(line)));
+                new TerrainSystem(line -> System.err.println(line)),
+                new WaterSystem());
     }
 }

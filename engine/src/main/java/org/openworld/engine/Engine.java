@@ -250,7 +250,7 @@ public final class Engine implements AutoCloseable {
     public void render() {
         long frameStart = System.nanoTime();
         stats.reset();
-        ViewCamera viewer = world.resource(Camera.class).view((float) scene.width() / scene.height());
+        PassView viewer = new PassView(world.resource(Camera.class).view((float) scene.width() / scene.height()), scene);
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
             if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
@@ -299,9 +299,9 @@ public final class Engine implements AutoCloseable {
     }
 
     /** MAIN and OVERLAY: the viewer into the scene; SHADOW and REFLECTION: their owner's view, or null to skip. */
-    private PassView view(Pass pass, ViewCamera viewer) {
+    private PassView view(Pass pass, PassView viewer) {
         if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
-            return new PassView(viewer, scene);
+            return viewer;
         }
         EngineSystem owner = owners.get(pass);
         if (owner == null || !isEnabled(owner.spec().name())) {

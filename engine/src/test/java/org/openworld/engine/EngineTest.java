@@ -157,8 +157,8 @@ class EngineTest {
         }
 
         @Override
-        public Optional<PassView> passView(World world, ViewCamera viewer) {
-            return skip ? Optional.empty() : Optional.of(new PassView(camera.apply(viewer), target));
+        public Optional<PassView> passView(World world, PassView viewer) {
+            return skip ? Optional.empty() : Optional.of(new PassView(camera.apply(viewer.camera()), target));
         }
 
         @Override

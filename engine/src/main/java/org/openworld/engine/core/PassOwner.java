@@ -18,8 +18,9 @@ public interface PassOwner {
      * This frame's camera and target for the owned pass.
      *
      * @param world  the shared world
-     * @param viewer the viewer's camera this frame (MAIN's), from which a mirror's camera is made
+     * @param viewer MAIN's view this frame: the viewer's camera, from which a mirror's camera is made, and the scene
+     *               target, whose size a screen-aligned target follows
      * @return the view, or empty to skip the pass this frame
      */
-    Optional<PassView> passView(World world, ViewCamera viewer);
+    Optional<PassView> passView(World world, PassView viewer);
 }

@@ -86,6 +86,7 @@ public final class SkySystem implements EngineSystem {
     private Uniform.Int cubeFace;
     private Uniform.Mat3 faceAxes;
     private Uniform.Float groundAlbedo;
+    private Uniform.Int sunDisc;
     private Uniform.Vec4 cloudParams;
     private Uniform.Vec4 cloudMotion;
     private Mesh fullScreen;
@@ -101,7 +102,7 @@ public final class SkySystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("sky").reads(TimeOfDay.class, Settings.class, Camera.class)
-                .writes(Sun.class, Exposure.class, SkyMaps.class).draws(Pass.MAIN);
+                .writes(Sun.class, Exposure.class, SkyMaps.class).draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -122,6 +123,7 @@ public final class SkySystem implements EngineSystem {
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
         groundAlbedo = program.float1("uGroundAlbedo");
+        sunDisc = program.int1("uSunDisc");
         cloudParams = program.vec4("cloudParams");
         cloudMotion = program.vec4("cloudMotion");
         fullScreen = new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
@@ -231,7 +233,8 @@ public final class SkySystem implements EngineSystem {
         }
         cloudParams.set(c.cloudParams(threshold, new Vector4f()));
         cloudMotion.set(c.cloudMotion(simTime, new Vector4f()));
-        if (environmentDirty || simTime - environmentTime >= ENVIRONMENT_REFRESH) {
+        // the environment is seen from the viewer, so it is drawn in MAIN (the reflection's eye is under the water)
+        if (pass == Pass.MAIN && (environmentDirty || simTime - environmentTime >= ENVIRONMENT_REFRESH)) {
             drawEnvironment(context);
             context.world().resource(Counters.class).put("sky.environment", 1);
         }
@@ -239,6 +242,7 @@ public final class SkySystem implements EngineSystem {
         glDepthFunc(GL_LEQUAL);
         glDepthMask(false);
         cubeFace.set(0);
+        sunDisc.set(pass == Pass.MAIN ? 1 : 0);
         fullScreen.draw(context.stats());
         glDepthMask(true);
         glDepthFunc(GL_LESS);

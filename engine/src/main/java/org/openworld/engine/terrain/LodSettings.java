@@ -1,5 +1,6 @@
 package org.openworld.engine.terrain;
 
+import org.openworld.engine.core.Pass;
 import org.openworld.engine.settings.Setting;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -19,14 +20,18 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       per radian), about 75 000 visible triangles per level; larger is finer and costlier
  * @param mode           quadtree cut (the default, patch count logarithmic in the world size) or the paper's flat
  *                       grid (for figure 6)
+ * @param reflectionCoarsening levels coarser in the water's reflection pass: the reflection is drawn at half
+ *                       resolution and seen wobbling on the ripples, so detail finer than its pixels cannot be seen;
+ *                       each level halves B there, a quarter of the triangles
  */
 public record LodSettings(
         @Setting(doc = "vertices per patch side (33 or 65)", min = 33, max = 65) int patchVertices,
         @Setting(doc = "base resolution B: distance of the first level drop", unit = "m", min = 1, max = 100000)
         double baseResolution,
-        @Setting(doc = "level-of-detail scheme: QUADTREE or FLAT_GRID (the paper's, figure 6)") LodMode mode) {
+        @Setting(doc = "level-of-detail scheme: QUADTREE or FLAT_GRID (the paper's, figure 6)") LodMode mode,
+        @Setting(doc = "levels coarser in the water's reflection pass", min = 0, max = 4) int reflectionCoarsening) {
 
-    public static final LodSettings DEFAULTS = new LodSettings(65, 128, LodMode.QUADTREE);
+    public static final LodSettings DEFAULTS = new LodSettings(65, 128, LodMode.QUADTREE, 1);
 
     public static final SettingsGroup<LodSettings> SETTINGS = SettingsGroup.of("lod", LodSettings.class, DEFAULTS);
 
@@ -40,6 +45,12 @@ public record LodSettings(
         if (mode == null) {
             throw new IllegalArgumentException("level-of-detail mode missing");
         }
+    }
+
+    /** B in a pass: coarser by {@link #reflectionCoarsening()} levels in the water's reflection. */
+    public double baseResolution(Pass pass) {
+        return pass == Pass.REFLECTION ? baseResolution / (1 << reflectionCoarsening)
+                : baseResolution;
     }
 
     /** Cells per patch side, N = {@link #patchVertices()} − 1. */

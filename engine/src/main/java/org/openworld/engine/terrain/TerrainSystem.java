@@ -82,7 +82,8 @@ public final class TerrainSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class).draws(Pass.MAIN);
+        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class)
+                .draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -177,7 +178,7 @@ public final class TerrainSystem implements EngineSystem {
             frozenEye = null;
         }
         long t0 = System.nanoTime();
-        selection.select(eye, copyOffsets, lod.baseResolution(), lod.mode(), visibility, patches);
+        selection.select(eye, copyOffsets, lod.baseResolution(pass), lod.mode(), visibility, patches);
         double selectMs = (System.nanoTime() - t0) / 1e6;
         Counters counters = world.resource(Counters.class);
         String prefix = "terrain." + pass.label() + ".";

@@ -1,0 +1,302 @@
+package org.openworld.engine.water;
+
+import static org.lwjgl.opengl.GL11C.*;
+import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
+import static org.lwjgl.opengl.GL30C.*;
+
+import java.nio.FloatBuffer;
+import java.util.List;
+import java.util.Optional;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassOwner;
+import org.openworld.engine.core.PassView;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.TextureArray;
+import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.water.WaterSettings.Method;
+
+/**
+ * The water (paper section 3.3): a plane at {@code water.level} to the horizon, drawn by the paper's stencil method
+ * or, by default, by two pictures mixed by the Fresnel term. See the package documentation for both.
+ *
+ * <p>Frame by frame: as the owner of {@link Pass#REFLECTION} it gives the engine the mirrored camera and its
+ * reflection target (nothing while the eye is under the water); the terrain and the sky draw into it. In
+ * {@link Pass#MAIN}, after them, it copies the scene's colour and depth (what lies behind the water) and draws the
+ * water over the whole screen, one ray–plane intersection per pixel.
+ */
+public final class WaterSystem implements EngineSystem, PassOwner {
+
+    /** Cosines per row of the Fresnel table: the steepest change, near total internal reflection, spans 3 texels. */
+    private static final int FRESNEL_SIZE = 256;
+    /** Ripple texture: texels a side, over a tile of {@link #RIPPLE_TILE} metres (wavelengths 0.5 to 32 m). */
+    private static final int RIPPLE_SIZE = 128;
+    private static final double RIPPLE_TILE = 32;
+    /**
+     * Frames of the ripple loop over {@link #RIPPLE_PERIOD} seconds: 1/8 s apart, so the shortest waves (0.5 m,
+     * a period of 0.57 s) move less than a quarter of their length between the frames the shader blends.
+     */
+    private static final int RIPPLE_FRAMES = 64;
+    private static final double RIPPLE_PERIOD = 8;
+    /**
+     * The share of the Cox–Munk slope variance the ripple texture resolves; the rest is in waves shorter than its
+     * texels (capillary waves, millimetres to centimetres), which only spread the sun's glitter.
+     */
+    static final double RESOLVED_VARIANCE = 0.3;
+    /** Slopes are packed into bytes over ± this many times their RMS: beyond 4σ lies 0.03% of a Gaussian. */
+    private static final double SLOPE_RANGE = 4;
+    /** Texture units of the water's own textures. */
+    private static final int UNIT_REFLECTION = 0;
+    private static final int UNIT_REFRACTION = 1;
+    private static final int UNIT_DEPTH = 2;
+    private static final int UNIT_FRESNEL = 3;
+    private static final int UNIT_RIPPLES = 4;
+
+    private GlContext gl;
+    private Mesh fullScreen;
+    private ShaderProgram fresnelProgram;
+    private ShaderProgram stencilProgram;
+    private Texture2D fresnelTable;
+    private TextureArray ripples;
+    private float rippleSlopeScale;
+    private double rippleWind = Double.NaN;
+    private double rippleDirection = Double.NaN;
+    private Framebuffer reflection;
+    private Framebuffer behind;
+    /** Whether the reflection pass ran this frame (the eye above the water); reset after MAIN. */
+    private boolean reflected;
+    private double simTime;
+    private FresnelUniforms fresnelUniforms;
+    private StencilUniforms stencilUniforms;
+
+    private record FresnelUniforms(Uniform.Float level, Uniform.Int reflected, Uniform.Int underwater,
+                                   Uniform.Vec3 extinction, Uniform.Vec3 body, Uniform.Vec3 inside,
+                                   Uniform.Vec4 ripple,
+                                   Uniform.Float microSlope2) {
+    }
+
+    private record StencilUniforms(Uniform.Float level, Uniform.Int step, Uniform.Float alpha) {
+    }
+
+    @Override
+    public SystemSpec spec() {
+        // after the terrain and (through the sky's maps) the sky: the water is drawn over what lies behind it
+        return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class).after("terrain")
+                .draws(Pass.MAIN);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of(WaterSettings.SETTINGS);
+    }
+
+    @Override
+    public Pass ownedPass() {
+        return Pass.REFLECTION;
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        gl = context.gl();
+        fullScreen = new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
+        fresnelProgram = context.shaders().program("water/water.vert", "water/fresnel.frag");
+        fresnelProgram.sampler("reflection", UNIT_REFLECTION);
+        fresnelProgram.sampler("refraction", UNIT_REFRACTION);
+        fresnelProgram.sampler("depthCopy", UNIT_DEPTH);
+        fresnelProgram.sampler("fresnelTable", UNIT_FRESNEL);
+        fresnelProgram.sampler("ripples", UNIT_RIPPLES);
+        fresnelUniforms = new FresnelUniforms(fresnelProgram.float1("uLevel"), fresnelProgram.int1("uReflected"),
+                fresnelProgram.int1("uUnderwater"), fresnelProgram.vec3("uExtinction"), fresnelProgram.vec3("uBody"),
+                fresnelProgram.vec3("uInside"),
+                fresnelProgram.vec4("uRipple"), fresnelProgram.float1("uMicroSlope2"));
+        stencilProgram = context.shaders().program("water/water.vert", "water/stencil.frag");
+        stencilProgram.sampler("reflection", UNIT_REFLECTION);
+        stencilUniforms = new StencilUniforms(stencilProgram.float1("uLevel"), stencilProgram.int1("uStep"),
+                stencilProgram.float1("uAlpha"));
+        fresnelTable = Texture2D.empty(gl, FRESNEL_SIZE, 2, Texture2D.Format.R16F, Texture2D.Sampling.LINEAR_CLAMP);
+        FloatBuffer table = MemoryUtil.memAllocFloat(2 * FRESNEL_SIZE).put(Fresnel.table(FRESNEL_SIZE)).flip();
+        try {
+            fresnelTable.upload(0, 0, 2, table);
+        } finally {
+            MemoryUtil.memFree(table);
+        }
+        updateRipples(context.settings().get(WaterSettings.class));
+    }
+
+    @Override
+    public void update(World world, double step) {
+        simTime += step;
+    }
+
+    @Override
+    public Optional<PassView> passView(World world, PassView viewer) {
+        WaterSettings s = world.resource(Settings.class).get(WaterSettings.class);
+        if (viewer.camera().position().y() < s.level() + MirrorCamera.MIN_HEIGHT) {
+            return Optional.empty();
+        }
+        int width = s.reflection().of(viewer.target().width());
+        int height = s.reflection().of(viewer.target().height());
+        reflection = fit(reflection, width, height, Texture2D.Format.DEPTH32F, Texture2D.Sampling.LINEAR_CLAMP);
+        reflected = true;
+        // the paper's method draws the mirrored scene whole; the Fresnel method cuts it at the water
+        return Optional.of(new PassView(MirrorCamera.of(viewer.camera(), (float) s.level(), s.method() == Method.FRESNEL),
+                reflection));
+    }
+
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
+        updateRipples(s);
+        Framebuffer scene = context.target();
+        boolean underwater = context.camera().position().y() < s.level();
+        context.world().resource(Counters.class).put("water.underwater", underwater ? 1 : 0);
+        if (underwater || s.method() == Method.FRESNEL) {
+            copyBehind(scene);
+            drawFresnel(s, underwater, context);
+        } else {
+            drawStencil(s, context);
+        }
+        reflected = false;
+    }
+
+    /** What lies behind the water, the scene so far: colour and depth, copied as they are. */
+    private void copyBehind(Framebuffer scene) {
+        behind = fit(behind, scene.width(), scene.height(), Texture2D.Format.DEPTH24_STENCIL8,
+                Texture2D.Sampling.NEAREST_CLAMP);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, behind.id());
+        glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, scene.width(), scene.height(),
+                GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        scene.bind();
+    }
+
+    private void drawFresnel(WaterSettings s, boolean underwater, RenderContext context) {
+        WaterOptics optics = WaterOptics.of(s.clarity());
+        double slopeVariance = s.rmsSlope() * s.rmsSlope();
+        fresnelProgram.use();
+        fresnelUniforms.level().set((float) s.level());
+        fresnelUniforms.reflected().set(reflected ? 1 : 0);
+        fresnelUniforms.underwater().set(underwater ? 1 : 0);
+        fresnelUniforms.extinction().set(optics.extinction());
+        fresnelUniforms.body().set(optics.body());
+        fresnelUniforms.inside().set(optics.inside());
+        fresnelUniforms.ripple().set((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
+                (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale);
+        fresnelUniforms.microSlope2().set((float) (slopeVariance * (1 - RESOLVED_VARIANCE)));
+        if (reflection != null) {
+            reflection.color().bind(UNIT_REFLECTION);
+        }
+        behind.color().bind(UNIT_REFRACTION);
+        behind.depth().bind(UNIT_DEPTH);
+        fresnelTable.bind(UNIT_FRESNEL);
+        ripples.bind(UNIT_RIPPLES);
+        // every pixel's own depth test, against the copy: the shader writes the water's depth where it is seen
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(true);
+        fullScreen.draw(context.stats());
+        glDepthFunc(GL_LESS);
+    }
+
+    /**
+     * The paper's four steps; the engine did step 1 (stencil cleared to 0xFF, the terrain and sky wrote 0) and the
+     * reflection pass step 3 (the mirrored scene, front faces culled by the flipped winding, stencil off).
+     */
+    private void drawStencil(WaterSettings s, RenderContext context) {
+        stencilProgram.use();
+        stencilUniforms.level().set((float) s.level());
+        stencilUniforms.alpha().set((float) s.alpha());
+        // 2. the water plane: depth tested, alpha only, 0xFF into the stencil where it passes
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(true);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glColorMask(false, false, false, true);
+        stencilUniforms.step().set(2);
+        fullScreen.draw(context.stats());
+        glColorMask(true, true, true, true);
+        // 4. the mirrored scene over the whole screen, kept where the stencil says water, blended by its alpha
+        if (reflected) {
+            reflection.color().bind(UNIT_REFLECTION);
+            glDisable(GL_DEPTH_TEST);
+            glDepthMask(false);
+            glStencilFunc(GL_EQUAL, 0xFF, 0xFF);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA, GL_ZERO, GL_ONE);
+            stencilUniforms.step().set(4);
+            fullScreen.draw(context.stats());
+            glDisable(GL_BLEND);
+            glDepthMask(true);
+            glEnable(GL_DEPTH_TEST);
+        }
+        // the engine's rule again: whatever is drawn next marks its pixels 0
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    }
+
+    /** (Re)synthesises the ripples when the wind changes (at start-up, or from the settings panel). */
+    private void updateRipples(WaterSettings s) {
+        if (s.wind() == rippleWind && s.windDirection() == rippleDirection) {
+            return;
+        }
+        double resolvedRms = s.rmsSlope() * Math.sqrt(RESOLVED_VARIANCE);
+        RippleField field = RippleField.synthesize(RIPPLE_SIZE, RIPPLE_FRAMES, RIPPLE_TILE, RIPPLE_PERIOD, s.wind(),
+                s.windDirection(), resolvedRms, 2017);
+        rippleSlopeScale = (float) (SLOPE_RANGE * resolvedRms);
+        if (ripples != null) {
+            ripples.close();
+        }
+        ripples = TextureArray.repeatingMipmapped(gl, RIPPLE_SIZE, RIPPLE_SIZE, Texture2D.Format.RGBA8,
+                field.texels(rippleSlopeScale));
+        rippleWind = s.wind();
+        rippleDirection = s.windDirection();
+    }
+
+    /** A colour + depth target of this size: {@code current} if it fits, else a new one. */
+    private Framebuffer fit(Framebuffer current, int width, int height, Texture2D.Format depth,
+                            Texture2D.Sampling sampling) {
+        if (current != null && current.width() == width && current.height() == height) {
+            return current;
+        }
+        if (current != null) {
+            current.close();
+        }
+        return new Framebuffer(gl, width, height, Texture2D.Format.RGBA8, depth, sampling);
+    }
+
+    /** The reflection pass's target, null before the first reflection (tools and tests read it back). */
+    public Framebuffer reflectionTarget() {
+        return reflection;
+    }
+
+    @Override
+    public void close() {
+        for (AutoCloseable c : new AutoCloseable[] {reflection, behind, ripples, fresnelTable, stencilProgram,
+                fresnelProgram, fullScreen}) {
+            if (c != null) {
+                try {
+                    c.close();
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }
+        }
+    }
+}
