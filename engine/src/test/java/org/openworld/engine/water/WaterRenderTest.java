@@ -1,0 +1,299 @@
+package org.openworld.engine.water;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import org.joml.Matrix4f;
+import org.joml.Vector4f;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.Engine;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.terrain.TerrainSystem;
+
+/**
+ * The water on real GL, over imported worlds built for the purpose: a flat sea bed 20 m under the water with a
+ * 32 m square tower rising 80 m out of it, or the bed alone with a bank 2 m under the surface.
+ */
+class WaterRenderTest {
+
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
+
+    static final int W = 320;
+    static final int H = 180;
+    /** Samples per side of the imported maps, 2 m apart: a 512 m world. */
+    static final int SAMPLES = 256;
+
+    @TempDir
+    static Path dir;
+    static Path tower;
+    static Path bank;
+
+    /** Normalised heights: 0 the bed (−20 m with relief 100 and sea fraction 0.2), 1 the tower's top (+80 m). */
+    @BeforeAll
+    static void writeWorlds() throws IOException {
+        tower = write("tower.raw", (x, z) -> x >= 120 && x < 136 && z >= 120 && z < 136 ? 1f : 0f);
+        // the bank: 0.18 = 2 m under the water, 40 to 124 m south of the centre; and one sample at 1 (the south-east
+        // corner, behind every camera here) so the range is 100 m
+        bank = write("bank.raw", (x, z) -> x == SAMPLES - 1 && z == SAMPLES - 1 ? 1f
+                : z >= 150 && z < 190 ? 0.18f : 0f);
+    }
+
+    interface Height {
+        float at(int x, int z);
+    }
+
+    static Path write(String name, Height height) throws IOException {
+        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
+        for (int z = 0; z < SAMPLES; z++) {
+            for (int x = 0; x < SAMPLES; x++) {
+                bytes.putFloat(height.at(x, z));
+            }
+        }
+        return Files.write(dir.resolve(name), bytes.array());
+    }
+
+    static List<String> settings(Path world, String... more) {
+        List<String> s = new ArrayList<>(List.of("terrain.import-file=" + world, "terrain.spacing=2",
+                "terrain.relief=100", "terrain.sea-fraction=0.2", "clouds.cover=0", "water.reflection=FULL",
+                "water.wind=0.5"));
+        s.addAll(List.of(more));
+        return s;
+    }
+
+    /** Looking north at the tower, 150 m away, from 10 m above the water: the waterline crosses the picture. */
+    static final CameraPose AT_THE_TOWER = new CameraPose(0, 10, 150, 0, 0, 60);
+
+    record Frame(Image picture, Image reflection) {
+    }
+
+    static Frame render(List<String> settings, CameraPose pose, Consumer<Engine> before) {
+        WaterSystem water = new WaterSystem();
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings, new SkySystem(), new CullingSystem(),
+                new TerrainSystem(), water)) {
+            engine.world().resource(Camera.class).setPose(pose);
+            before.accept(engine);
+            engine.update();
+            engine.render();
+            Image picture = engine.readImage();
+            Image reflection = water.reflectionTarget() == null ? null : water.reflectionTarget().read();
+            return new Frame(picture, reflection);
+        }
+    }
+
+    static Frame render(List<String> settings, CameraPose pose) {
+        return render(settings, pose, engine -> { });
+    }
+
+    /** The picture row where a world point at this height appears on the tower's front face (pitch 0). */
+    static double row(CameraPose pose, double height) {
+        return rowOf(pose, new Vector4f(0, (float) height, 16, 1));
+    }
+
+    static double difference(Image a, int xa, int ya, Image b, int xb, int yb) {
+        double d = 0;
+        for (int c = 0; c < 3; c++) {
+            d += Math.abs(a.channel(xa, ya, c) - b.channel(xb, yb, c));
+        }
+        return d / 3;
+    }
+
+    @Test
+    void theTowerAppearsMirroredAboutTheWaterline() {
+        Image picture = render(settings(tower, "water.method=STENCIL", "water.alpha=1"), AT_THE_TOWER).picture();
+        int waterline = (int) Math.round(row(AT_THE_TOWER, 0));
+        int column = W / 2;
+        int beside = W / 2 + 60; // well clear of the tower's 32 m at 134 m (about 33 px either side of the centre)
+        double mirrorError = 0;
+        double towerAgainstSky = 0;
+        int rows = 0;
+        for (int k = 3; k <= 40; k++) {
+            mirrorError += difference(picture, column, waterline - k, picture, column, waterline + k);
+            towerAgainstSky += difference(picture, column, waterline + k, picture, beside, waterline + k);
+            rows++;
+        }
+        assertTrue(mirrorError / rows < 12, "the tower's rows and their mirror rows differ by " + mirrorError / rows);
+        assertTrue(towerAgainstSky / rows > 40, "the tower's reflection is not told from the sky's: "
+                + towerAgainstSky / rows);
+    }
+
+    @Test
+    void theFresnelWaterReflectsTheTowerToo() {
+        Image picture = render(settings(tower), AT_THE_TOWER).picture();
+        int waterline = (int) Math.round(row(AT_THE_TOWER, 0));
+        double underTower = picture.meanLuma(W / 2 - 8, waterline + 4, W / 2 + 8, waterline + 30);
+        double besideTower = picture.meanLuma(W / 2 + 60, waterline + 4, W / 2 + 76, waterline + 30);
+        assertTrue(besideTower - underTower > 20, "the dark tower should darken its reflection: under it "
+                + underTower + ", beside it " + besideTower);
+    }
+
+    @Test
+    void stencilAlphaZeroShowsTheGroundAndOneOnlyTheReflection() {
+        Frame dry = render(settings(tower, "water.method=STENCIL"), AT_THE_TOWER,
+                engine -> engine.setEnabled("water", false));
+        Frame clear = render(settings(tower, "water.method=STENCIL", "water.alpha=0"), AT_THE_TOWER);
+        Frame mirror = render(settings(tower, "water.method=STENCIL", "water.alpha=1"), AT_THE_TOWER);
+        int waterline = (int) Math.round(row(AT_THE_TOWER, 0));
+        int farFromTower = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                assertTrue(difference(dry.picture(), x, y, clear.picture(), x, y) <= 1,
+                        "alpha 0 changed (" + x + ", " + y + ")");
+                if (y > waterline + 2 && Math.abs(x - W / 2) > 45) {
+                    farFromTower++;
+                    assertTrue(difference(mirror.picture(), x, y, mirror.reflection(), x, y) <= 2,
+                            "alpha 1 is not the reflection at (" + x + ", " + y + ")");
+                }
+            }
+        }
+        assertTrue(farFromTower > W * H / 4);
+        // and the water is not simply invisible: the mirror's picture differs from the dry one below the waterline
+        assertTrue(Math.abs(mirror.picture().meanLuma(0, waterline + 3, W, H) - dry.picture().meanLuma(0,
+                waterline + 3, W, H)) > 10);
+    }
+
+    /** Looking down at the water over the bank 2 m under it. */
+    static final CameraPose OVER_THE_BANK = new CameraPose(0, 15, 200, 0, -12, 60);
+
+    @Test
+    void nothingUnderTheWaterLeaksIntoTheClippedReflection() {
+        Frame withBank = render(settings(bank), OVER_THE_BANK);
+        Frame withoutTerrain = render(settings(bank), OVER_THE_BANK, e -> e.setEnabled("terrain", false));
+        assertEquals(0, maxDifference(withBank.reflection(), withoutTerrain.reflection()), 1,
+                "the bed and the bank, both under the water, showed in the reflection");
+        // the control: the paper's method does not clip, and there the bed shows
+        Frame unclipped = render(settings(bank, "water.method=STENCIL"), OVER_THE_BANK);
+        Frame unclippedEmpty = render(settings(bank, "water.method=STENCIL"), OVER_THE_BANK,
+                e -> e.setEnabled("terrain", false));
+        assertTrue(maxDifference(unclipped.reflection(), unclippedEmpty.reflection()) > 30);
+    }
+
+    @Test
+    void bothMethodsGiveWaterThatIsNeitherBlackNorUniform() {
+        for (String method : List.of("FRESNEL", "STENCIL")) {
+            Image picture = render(settings(bank, "water.method=" + method, "water.wind=5"), OVER_THE_BANK).picture();
+            double mean = picture.meanLuma(0, H / 2, W, H);
+            double variance = 0;
+            for (int y = H / 2; y < H; y++) {
+                for (int x = 0; x < W; x++) {
+                    variance += Math.pow(picture.luma(x, y) - mean, 2);
+                }
+            }
+            double deviation = Math.sqrt(variance / (W * H / 2.0));
+            assertTrue(mean > 20, method + ": water too dark, mean luma " + mean);
+            assertTrue(deviation > 3, method + ": water uniform, deviation " + deviation);
+        }
+    }
+
+    @Test
+    void theShallowBankShowsThroughTheFresnelWater() {
+        // looking steeply down through the water: over the bank (2 m deep) and over the bed (20 m deep)
+        CameraPose overBank = new CameraPose(0, 15, 84, 0, -70, 60);
+        CameraPose overBed = new CameraPose(0, 15, 220, 0, -70, 60);
+        Image wetBank = render(settings(bank), overBank).picture();
+        Image wetBed = render(settings(bank), overBed).picture();
+        Image dryBank = render(settings(bank), overBank, e -> e.setEnabled("water", false)).picture();
+        double seenBank = wetBank.meanLuma(W / 4, H / 4, 3 * W / 4, 3 * H / 4);
+        double seenBed = wetBed.meanLuma(W / 4, H / 4, 3 * W / 4, 3 * H / 4);
+        double dry = dryBank.meanLuma(W / 4, H / 4, 3 * W / 4, 3 * H / 4);
+        assertTrue(seenBank > seenBed + 10, "the bank " + seenBank + " should show brighter than the deep bed "
+                + seenBed);
+        assertTrue(dry - seenBank > 5, "the water should dim the bank a little: dry " + dry + ", wet " + seenBank);
+        // the ground's texture shows through: the wet bank is far from uniform
+        assertTrue(correlation(wetBank, dryBank) > 0.5, "the bank's pattern should show through the water");
+    }
+
+    /** Pearson correlation of two pictures' luma over their middle. */
+    static double correlation(Image a, Image b) {
+        double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+        int n = 0;
+        for (int y = H / 4; y < 3 * H / 4; y++) {
+            for (int x = W / 4; x < 3 * W / 4; x++) {
+                double p = a.luma(x, y);
+                double q = b.luma(x, y);
+                sa += p;
+                sb += q;
+                saa += p * p;
+                sbb += q * q;
+                sab += p * q;
+                n++;
+            }
+        }
+        double cov = sab / n - sa / n * sb / n;
+        return cov / Math.sqrt((saa / n - sa * sa / n / n) * (sbb / n - sb * sb / n / n));
+    }
+
+    @Test
+    void underTheWaterThePictureIsTintedAndTheReflectionPassRests() {
+        CameraPose diver = new CameraPose(0, -5, 250, 0, 40, 60);
+        List<FrameRecord> records = new ArrayList<>();
+        Image picture;
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings(bank), new SkySystem(),
+                new CullingSystem(), new TerrainSystem(), new WaterSystem())) {
+            engine.world().resource(Camera.class).setPose(diver);
+            engine.update();
+            engine.render();
+            picture = engine.readImage();
+            engine.world().resource(Camera.class).setPose(OVER_THE_BANK);
+            engine.update();
+            engine.render();
+            engine.collectFrames(true, records::add);
+        }
+        double red = 0;
+        double blue = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                red += picture.channel(x, y, 0);
+                blue += picture.channel(x, y, 2);
+            }
+        }
+        assertTrue(blue > 1.5 * red, "under the water red is absorbed first: red " + red + ", blue " + blue);
+        assertTrue(picture.meanLuma(0, 0, W, H) > 15, "not black");
+        assertFalse(records.get(0).passGpuMs().containsKey("reflection.terrain"), records.get(0).passGpuMs().keySet()
+                .toString());
+        assertTrue(records.get(1).passGpuMs().containsKey("reflection.terrain"));
+        assertTrue(records.get(1).passGpuMs().containsKey("reflection.sky"));
+        assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
+    }
+
+    /** The picture row where the water surface at (0, z) appears. */
+    static double rowOfZ(CameraPose pose, double z) {
+        return rowOf(pose, new Vector4f(0, 0, (float) z, 1));
+    }
+
+    static double rowOf(CameraPose pose, Vector4f point) {
+        Camera camera = new Camera();
+        camera.setPose(pose);
+        Vector4f clip = new Matrix4f(camera.view((float) W / H).viewProjection()).transform(point);
+        return (1 - clip.y / clip.w) / 2 * H - 0.5;
+    }
+
+    static double maxDifference(Image a, Image b) {
+        double max = 0;
+        for (int y = 0; y < a.height(); y++) {
+            for (int x = 0; x < a.width(); x++) {
+                max = Math.max(max, difference(a, x, y, b, x, y));
+            }
+        }
+        return max;
+    }
+}
