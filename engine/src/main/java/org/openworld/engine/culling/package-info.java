@@ -3,7 +3,8 @@
  * not sent to the GPU.
  *
  * <p><b>Technique.</b> A {@link org.openworld.engine.culling.Frustum} holds the camera's six planes, extracted from the
- * view-projection matrix (Gribb and Hartmann), plus the pass's clip plane. A box is rejected only when all eight of
+ * view-projection matrix (Gribb and Hartmann); the water's reflection camera has its near plane in the water
+ * surface (an oblique projection), so the same six planes cull what lies under the water. A box is rejected only when all eight of
  * its corners lie outside one plane: with {@code p⁺} the corner furthest along the plane normal {@code n},
  * {@code n · p⁺ + d < 0}. That is the paper's conservative test: a box outside the frustum may pass (near its
  * corners), a box inside never fails.
@@ -15,7 +16,7 @@
  * every pass that draws (main, light, mirror) with that pass's camera, before the drawers, and leaves a
  * {@link org.openworld.engine.culling.Visibility} for them to read top-down.
  *
- * <p><b>Cost.</b> At most 14 dot products per box tested; about 26 µs per pass for a 5461-node tree in 9 copies on the
+ * <p><b>Cost.</b> At most 12 dot products per box tested; about 26 µs per pass for a 5461-node tree in 9 copies on the
  * 2-core reference machine. Per-pass counters {@code culling.<pass>.tested/outside/inside} appear in {@code bench}.
  *
  * <p><b>Debug.</b> {@code culling.freeze=on} keeps each pass's frustum where it was; the frozen main frustum is drawn as
