@@ -42,9 +42,10 @@ import org.openworld.engine.settings.SettingsGroup;
  * <p>Per update: the sun's direction from the clock ({@link SolarPosition}); when it or the eye's altitude moved
  * enough to matter ({@link SunTables#staleFor}) new tables, on a worker thread while the sun drifts with the day
  * cycle (the sky keeps the old ones until they are ready) and at once when it jumped (a new {@code --time}, a
- * scrub), so a picture never shows the tables of another hour. Per frame in MAIN: new tables are uploaded, the
- * environment map is redrawn when they changed or the clouds drifted for {@link #ENVIRONMENT_REFRESH} seconds, and the
- * sky is drawn on the far plane.
+ * scrub), so a picture never shows the tables of another hour. Per frame, in the first pass it draws: new tables are
+ * uploaded; in MAIN the environment map is redrawn when they changed or the clouds drifted for
+ * {@link #ENVIRONMENT_REFRESH} seconds; in both the water's REFLECTION (without the sun's disc, which the water adds as
+ * glitter) and MAIN the sky is drawn on the far plane.
  *
  * <p>Counters: {@code sky.tables-ms} (CPU time of tables that arrived this frame), {@code sky.environment} (1 when
  * the environment map was redrawn).
