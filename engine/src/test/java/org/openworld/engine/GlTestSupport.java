@@ -27,7 +27,7 @@ public final class GlTestSupport {
 
     /** One triangle that covers the whole viewport, corners in clip space at attribute 0 (vec2). */
     public static Mesh fullScreenTriangle(GlContext gl) {
-        return new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
+        return Mesh.fullScreenTriangle(gl);
     }
 
     /** A quad of two triangles over the lower-left quarter of the viewport, attribute 0 (vec2). */

@@ -56,6 +56,14 @@ public final class Mesh implements AutoCloseable {
         glBindVertexArray(0);
     }
 
+    /**
+     * One triangle covering the whole viewport, corners (−1, −1), (3, −1), (−1, 3) in clip space at attribute 0
+     * (vec2): what full-screen passes (sky, water) draw, without the seam of two triangles.
+     */
+    public static Mesh fullScreenTriangle(GlContext gl) {
+        return new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Attribute(0, 2));
+    }
+
     public int triangleCount() {
         return indexCount / 3;
     }

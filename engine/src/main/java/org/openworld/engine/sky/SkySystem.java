@@ -127,7 +127,7 @@ public final class SkySystem implements EngineSystem {
         sunDisc = program.int1("uSunDisc");
         cloudParams = program.vec4("cloudParams");
         cloudMotion = program.vec4("cloudMotion");
-        fullScreen = new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
+        fullScreen = Mesh.fullScreenTriangle(gl);
         skyView = Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Texture2D.Format.RGB16F,
                 Texture2D.Sampling.LINEAR_CLAMP);
         air = Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT, AerialPerspective.DEPTH,

@@ -112,7 +112,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     @Override
     public void init(EngineContext context) {
         gl = context.gl();
-        fullScreen = new Mesh(gl, new float[] {-1, -1, 3, -1, -1, 3}, new int[] {0, 1, 2}, new Mesh.Attribute(0, 2));
+        fullScreen = Mesh.fullScreenTriangle(gl);
         fresnelProgram = context.shaders().program("water/water.vert", "water/fresnel.frag");
         fresnelProgram.sampler("reflection", UNIT_REFLECTION);
         fresnelProgram.sampler("refraction", UNIT_REFRACTION);
