@@ -3,7 +3,7 @@ package org.openworld.engine.sky;
 import java.util.Arrays;
 import java.util.SplittableRandom;
 import org.jtransforms.fft.DoubleFFT_3D;
-import org.visnow.jlargearrays.ConcurrencyUtils;
+import org.openworld.engine.core.FftThreads;
 
 /**
  * The clouds' density field (paper 2.1: "the clouds density map with a 3D-DFT (2 spatial, 1 temporal)"): a
@@ -36,7 +36,7 @@ import org.visnow.jlargearrays.ConcurrencyUtils;
  * <h2>Determinism</h2>
  * As in {@link org.openworld.engine.terrain.SpectralSynthesis}: phases from one {@link SplittableRandom} in index
  * order, drawn as points of the unit disc by rejection (no sin/cos), amplitudes by {@link StrictMath}, and the
- * transform with JTransforms' thread count pinned to {@link #FFT_THREADS} under a lock, so a seed gives the same field
+ * transform with JTransforms' thread count pinned by {@link FftThreads} under a lock, so a seed gives the same field
  * bit for bit on any number of cores.
  */
 public final class CloudField {
@@ -49,9 +49,6 @@ public final class CloudField {
      * (at 8: 0.7 and the fine grain flickers).
      */
     static final double TIME_WEIGHT = 16;
-
-    /** JTransforms' thread count during the transform, fixed for determinism (see the class comment). */
-    static final int FFT_THREADS = 2;
 
     /** Distinguishes the clouds' random stream from the other users of the world seed. */
     private static final long STREAM = 0xC10D_F1E1_D000_0003L;
@@ -162,16 +159,8 @@ public final class CloudField {
 
     /** The in-place inverse transform with JTransforms' thread count pinned (see the class comment). */
     private static void inverseTransform(double[] a, int n, int m) {
-        synchronized (ConcurrencyUtils.class) {
-            int saved = ConcurrencyUtils.getNumberOfThreads();
-            ConcurrencyUtils.setNumberOfThreads(FFT_THREADS);
-            try {
-                // No 1/N scaling: the normalisation rescales anyway.
-                new DoubleFFT_3D(m, n, n).complexInverse(a, false);
-            } finally {
-                ConcurrencyUtils.setNumberOfThreads(saved);
-            }
-        }
+        // No 1/N scaling: the normalisation rescales anyway.
+        FftThreads.pinned(() -> new DoubleFFT_3D(m, n, n).complexInverse(a, false));
     }
 
     /** The real parts, shifted and scaled to mean 0 and standard deviation 1. */

@@ -3,7 +3,7 @@ package org.openworld.engine.terrain;
 import java.util.SplittableRandom;
 import java.util.stream.IntStream;
 import org.jtransforms.fft.FloatFFT_2D;
-import org.visnow.jlargearrays.ConcurrencyUtils;
+import org.openworld.engine.core.FftThreads;
 
 /**
  * Height maps by spectral synthesis (paper 2.1): a spectrum with random phases and amplitude 1/ω^β, transformed to
@@ -39,7 +39,7 @@ import org.visnow.jlargearrays.ConcurrencyUtils;
  *       circle drawn by rejection from the square (needs {@link Math#sqrt}, exact in IEEE arithmetic, not sin/cos)
  *       and amplitudes use {@link StrictMath#exp} and {@link StrictMath#log}, specified bit for bit;</li>
  *   <li>JTransforms picks different code paths by its thread count, so the transform runs with that count
- *       <em>pinned</em> to {@link #FFT_THREADS} and restored afterwards (under a lock, as the count is global).</li>
+ *       <em>pinned</em> by {@link FftThreads} and restored afterwards (under a lock, as the count is global).</li>
  * </ul>
  * One caveat: JTransforms computes its twiddle factors with {@link Math#sin}/{@link Math#cos}, which Java lets
  * differ by an ulp between JVM platforms; on one platform (all x86-64 HotSpot JVMs, say) results are identical.
@@ -47,12 +47,6 @@ import org.visnow.jlargearrays.ConcurrencyUtils;
 public final class SpectralSynthesis {
 
     /**
-     * JTransforms' thread count during the transform: fixed, so the result does not depend on the machine's cores
-     * (see the class comment). Two threads use both cores of a small machine; more buy little for a one-off
-     * transform of at most 8192².
-     */
-    static final int FFT_THREADS = 2;
-
     /** Distinguishes the synthesis' random stream from the other users of the world seed (the snow map). */
     private static final long STREAM = 0x5EED_7E44_A1B5_0001L;
 
@@ -127,16 +121,8 @@ public final class SpectralSynthesis {
 
     /** The in-place inverse transform with JTransforms' thread count pinned (see the class comment). */
     private static void inverseTransform(float[] a, int n) {
-        synchronized (ConcurrencyUtils.class) {
-            int saved = ConcurrencyUtils.getNumberOfThreads();
-            ConcurrencyUtils.setNumberOfThreads(FFT_THREADS);
-            try {
-                // No 1/n² scaling: the normalisation rescales anyway.
-                new FloatFFT_2D(n, n).realInverse(a, false);
-            } finally {
-                ConcurrencyUtils.setNumberOfThreads(saved);
-            }
-        }
+        // No 1/n² scaling: the normalisation rescales anyway.
+        FftThreads.pinned(() -> new FloatFFT_2D(n, n).realInverse(a, false));
     }
 
     /** h = relief · (f' − seaFraction), where f' is f scaled to [0, 1] by the field's own minimum and maximum. */

@@ -4,9 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.Random;
-import java.util.function.Supplier;
 import org.jtransforms.fft.FloatFFT_2D;
-import org.visnow.jlargearrays.ConcurrencyUtils;
+import org.openworld.engine.core.FftThreads;
 
 /**
  * The water's ripples: a periodic tile of wind-driven waves that loops in time, synthesised once on the CPU as
@@ -66,7 +65,7 @@ import org.visnow.jlargearrays.ConcurrencyUtils;
  * (twice: once for the amplitude, once for the frame) and two complex N² transforms. Nothing per rendered frame:
  * the shader only looks the slopes up. 128² texels × 32 frames take 0.10 to 0.15 s (0.26 s on a cold JVM) on a
  * 2-core machine, plus 11 ms for {@link #texels}, and hold 6 MiB of floats. JTransforms' thread count is pinned
- * to {@link #FFT_THREADS} during the transforms, as in the terrain's SpectralSynthesis, so the result cannot depend
+ * by {@link FftThreads} during the transforms, as for the terrain and the clouds, so the result cannot depend
  * on the machine; below 256² texels (its threshold for 2D transforms) JTransforms runs on the calling thread
  * anyway.
  *
@@ -100,11 +99,6 @@ final class RippleField {
     /** ℓ / L: waves shorter than this fraction of the largest wind wave L are suppressed (Tessendorf's choice). */
     static final double SMALL_WAVE_FRACTION = 1e-3;
 
-    /**
-     * JTransforms' thread count during the transforms, fixed so the result does not depend on the machine's cores
-     * (JTransforms picks different code paths by thread count). Two use both cores of a small machine.
-     */
-    static final int FFT_THREADS = 2;
 
     /** Smallest tile side, texels: fewer leaves hardly any waves between the mean and the Nyquist frequency. */
     static final int MIN_SIZE = 8;
@@ -191,7 +185,7 @@ final class RippleField {
         }
 
         // 2. the frames, t = f · period / frames
-        this.layers = withPinnedThreads(() -> {
+        this.layers = FftThreads.pinned(() -> {
             FloatFFT_2D fft = new FloatFFT_2D(size, size);
             List<Frame> made = new ArrayList<>(frames);
             for (int f = 0; f < frames; f++) {
@@ -392,26 +386,13 @@ final class RippleField {
         return new Frame(size, slopes, heights);
     }
 
-    /** Runs {@code work} with JTransforms' global thread count pinned to {@link #FFT_THREADS}, then restores it. */
-    private static <T> T withPinnedThreads(Supplier<T> work) {
-        synchronized (ConcurrencyUtils.class) {
-            int saved = ConcurrencyUtils.getNumberOfThreads();
-            ConcurrencyUtils.setNumberOfThreads(FFT_THREADS);
-            try {
-                return work.get();
-            } finally {
-                ConcurrencyUtils.setNumberOfThreads(saved);
-            }
-        }
-    }
-
     /**
      * The field at any time {@code seconds}, not only on the frame grid: the same waves, so
      * {@code fieldAt(f · periodSeconds / frames)} is frame f and {@code fieldAt(t + periodSeconds)} is
      * {@code fieldAt(t)}. For tests and tools; the renderer uses the frames.
      */
     Frame fieldAt(double seconds) {
-        return withPinnedThreads(() -> transform(seconds / periodSeconds, new FloatFFT_2D(size, size)));
+        return FftThreads.pinned(() -> transform(seconds / periodSeconds, new FloatFFT_2D(size, size)));
     }
 
     /** Texels per side. */
