@@ -33,6 +33,7 @@ import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.CubeMapTexture;
@@ -45,6 +46,7 @@ import org.openworld.engine.gl.GpuTimers;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
+import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Texture3D;
@@ -85,6 +87,7 @@ public final class Engine implements AutoCloseable {
     private GpuTimers timers;
     private FrameThrottle throttle;
     private SkyMaps neutralSky;
+    private SunShadow noShadow;
     private double simTime;
     private long lastFrameEnd;
     private double unsimulated;
@@ -134,6 +137,7 @@ public final class Engine implements AutoCloseable {
             timers = new GpuTimers(gl);
             throttle = new FrameThrottle(gl);
             neutralSky = neutralSky(gl);
+            noShadow = SunShadow.none(gl);
             EngineContext context = new EngineContext(gl, world, this.shaders, settings);
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
@@ -256,30 +260,32 @@ public final class Engine implements AutoCloseable {
             if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
                 continue;
             }
-            PassView view = view(pass, viewer);
-            if (view == null) {
-                continue;
-            }
-            // 1. the pass's camera and the world's light into the frame block; the sky's textures to their units
-            frameUniforms.write(frameValues(view));
-            bindSharedTextures();
-            // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
-            view.target().bind();
-            glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
-            if (pass != Pass.OVERLAY) {
-                clear(pass);
-            }
-            // 3. the systems draw, each timed on the GPU as one span labelled pass.system
-            RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
-            for (EngineSystem system : drawing) {
-                if (!isEnabled(system.spec().name())) {
-                    continue;
+            List<PassView> views = views(pass, viewer);
+            for (int v = 0; v < views.size(); v++) {
+                PassView view = views.get(v);
+                // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
+                frameUniforms.write(frameValues(view));
+                bindShared(pass);
+                // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
+                view.target().bind();
+                glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
+                if (pass != Pass.OVERLAY) {
+                    clear(pass);
                 }
-                long t0 = System.nanoTime();
-                timers.begin(pass.label() + "." + system.spec().name());
-                system.render(pass, context);
-                timers.end();
-                systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
+                // 3. the systems draw, each timed on the GPU as one span labelled pass.system, or passN.system
+                //    for the N-th of several views (shadow0.terrain, shadow1.terrain, ... one per cascade)
+                String label = pass.label() + (views.size() > 1 ? String.valueOf(v) : "") + ".";
+                RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
+                for (EngineSystem system : drawing) {
+                    if (!isEnabled(system.spec().name())) {
+                        continue;
+                    }
+                    long t0 = System.nanoTime();
+                    timers.begin(label + system.spec().name());
+                    system.render(pass, context);
+                    timers.end();
+                    systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
+                }
             }
         }
         glFrontFace(GL_CCW);
@@ -298,16 +304,16 @@ public final class Engine implements AutoCloseable {
         frame++;
     }
 
-    /** MAIN and OVERLAY: the viewer into the scene; SHADOW and REFLECTION: their owner's view, or null to skip. */
-    private PassView view(Pass pass, PassView viewer) {
+    /** MAIN and OVERLAY: the viewer into the scene; SHADOW and REFLECTION: their owner's views, none to skip. */
+    private List<PassView> views(Pass pass, PassView viewer) {
         if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
-            return viewer;
+            return List.of(viewer);
         }
         EngineSystem owner = owners.get(pass);
         if (owner == null || !isEnabled(owner.spec().name())) {
-            return null;
+            return List.of();
         }
-        return ((PassOwner) owner).passView(world, viewer).orElse(null);
+        return ((PassOwner) owner).passViews(world, viewer);
     }
 
     /**
@@ -343,11 +349,18 @@ public final class Engine implements AutoCloseable {
                 view.target().height());
     }
 
-    /** Binds the sky's shared textures, or the neutral stand-ins when no system models the sky. */
-    private void bindSharedTextures() {
+    /**
+     * Binds the shared textures and blocks: the sky's, or neutral stand-ins when no system models the sky; the sun's
+     * shadow, or none when no system casts one, and none while the SHADOW pass draws the maps (a map being drawn must
+     * not be bound for reading).
+     */
+    private void bindShared(Pass pass) {
         SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
         maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
         maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
+        SunShadow shadow = pass == Pass.SHADOW ? noShadow : world.findResource(SunShadow.class).orElse(noShadow);
+        shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
+        shadow.block().bindBase(SharedBlock.SHADOW.binding());
     }
 
     /** Light for a world with no system that models the sky: a high white sun. */
@@ -419,6 +432,9 @@ public final class Engine implements AutoCloseable {
         if (neutralSky != null) {
             neutralSky.environment().close();
             neutralSky.aerialPerspective().close();
+        }
+        if (noShadow != null) {
+            noShadow.close();
         }
         if (throttle != null) {
             throttle.close();

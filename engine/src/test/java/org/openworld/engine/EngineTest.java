@@ -14,7 +14,6 @@ import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
 import org.joml.Matrix4f;
@@ -136,6 +135,8 @@ class EngineTest {
         final UnaryOperator<ViewCamera> camera;
         Framebuffer target;
         boolean skip;
+        /** How many views (cascades) the pass is drawn with; the i-th gets the owner's camera moved up by i metres. */
+        int views = 1;
 
         Owner(SystemSpec spec, Pass owned, UnaryOperator<ViewCamera> camera, List<String> log, List<Call> calls,
               Function<GlContext, Mesh> meshFactory, float... color) {
@@ -157,8 +158,17 @@ class EngineTest {
         }
 
         @Override
-        public Optional<PassView> passView(World world, PassView viewer) {
-            return skip ? Optional.empty() : Optional.of(new PassView(camera.apply(viewer.camera()), target));
+        public List<PassView> passViews(World world, PassView viewer) {
+            if (skip) {
+                return List.of();
+            }
+            List<PassView> list = new ArrayList<>();
+            for (int i = 0; i < views; i++) {
+                ViewCamera c = camera.apply(viewer.camera());
+                list.add(new PassView(i == 0 ? c : new ViewCamera(c.view(), c.projection(),
+                        new Vector3f(c.position()).add(0, i, 0), c.near(), c.far()), target));
+            }
+            return list;
         }
 
         @Override
@@ -289,6 +299,26 @@ class EngineTest {
             log.clear();
             engine.render();
             assertEquals(List.of("shadow shadow", "main terrain", "main decals", "overlay hud"), log);
+        }
+    }
+
+    @Test
+    void aPassRunsOncePerViewOfItsOwnerTimedApart() {
+        try (Engine engine = engineWithAllPasses()) {
+            shadow.views = 3;
+            engine.update();
+            log.clear();
+            engine.render();
+            assertEquals(List.of("shadow shadow", "shadow shadow", "shadow shadow", "reflection mirror"),
+                    log.subList(0, 4));
+            List<Float> heights = calls.stream().filter(c -> c.pass() == Pass.SHADOW)
+                    .map(c -> c.camera().position().y()).toList();
+            assertEquals(List.of(500f, 501f, 502f), heights, "the views in the owner's order");
+            List<Map<String, Double>> spans = new ArrayList<>();
+            engine.collectFrames(true, frame -> spans.add(frame.passGpuMs()));
+            assertEquals(1, spans.size());
+            assertTrue(spans.get(0).keySet().containsAll(List.of("shadow0.shadow", "shadow1.shadow",
+                    "shadow2.shadow", "reflection.mirror", "main.terrain")), spans.get(0).keySet().toString());
         }
     }
 

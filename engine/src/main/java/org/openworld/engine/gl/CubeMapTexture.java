@@ -21,18 +21,14 @@ import org.lwjgl.system.MemoryUtil;
  * global GL state that no other texture is affected by, so enabling it at every bind is harmless and keeps the
  * requirement next to its reason.
  */
-public final class CubeMapTexture implements AutoCloseable {
+public final class CubeMapTexture extends GlTexture {
 
-    private final GlContext gl;
     private final int size;
-    private int id;
     private int framebuffer;
 
     private CubeMapTexture(GlContext gl, int size) {
-        this.gl = gl;
+        super(gl, GL_TEXTURE_CUBE_MAP);
         this.size = size;
-        this.id = glGenTextures();
-        gl.objects().created(GlObjects.Kind.TEXTURE);
     }
 
     /**
@@ -47,7 +43,6 @@ public final class CubeMapTexture implements AutoCloseable {
             throw new IllegalArgumentException("cube map face size must be positive, got " + size);
         }
         CubeMapTexture t = new CubeMapTexture(gl, size);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, t.id);
         t.setSampling();
         FloatBuffer face = MemoryUtil.memAllocFloat(3 * size * size);
         try {
@@ -81,7 +76,6 @@ public final class CubeMapTexture implements AutoCloseable {
             throw new IllegalArgumentException("cube map face size must be a power of two, got " + size);
         }
         CubeMapTexture t = new CubeMapTexture(gl, size);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, t.id);
         t.setSampling();
         for (int f = 0; f < 6; f++) {
             for (int level = 0, s = size; s >= 1; level++, s /= 2) {
@@ -109,12 +103,12 @@ public final class CubeMapTexture implements AutoCloseable {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(0, 0, size, size);
         for (int f = 0; f < 6; f++) {
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, id, 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, id(), 0);
             drawFace.accept(f);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, previous);
         glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, id);
+        bindForUpdate();
         glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
     }
 
@@ -155,12 +149,7 @@ public final class CubeMapTexture implements AutoCloseable {
     /** Binds to texture unit {@code unit} and makes cube filtering seamless across the faces' edges. */
     public void bind(int unit) {
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, id);
-    }
-
-    public int id() {
-        return id;
+        super.bind(unit);
     }
 
     public int size() {
@@ -174,10 +163,6 @@ public final class CubeMapTexture implements AutoCloseable {
             gl.objects().deleted(GlObjects.Kind.FRAMEBUFFER);
             framebuffer = 0;
         }
-        if (id != 0) {
-            glDeleteTextures(id);
-            gl.objects().deleted(GlObjects.Kind.TEXTURE);
-            id = 0;
-        }
+        super.close();
     }
 }

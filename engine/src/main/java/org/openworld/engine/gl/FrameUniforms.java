@@ -10,16 +10,11 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * The per-pass uniform block every shader includes from {@code shaders/common/frame.glsl}: one std140 buffer,
- * bound once at {@link #BINDING}, rewritten before each pass. The Java field order here and the GLSL block must
- * match; std140 makes that simple because every member is a vec4 or a mat4 (16-byte aligned, no padding rules to
- * remember).
+ * bound at {@link SharedBlock#FRAME}'s point, rewritten before each pass. The Java field order here and the GLSL
+ * block must match; std140 makes that simple because every member is a vec4 or a mat4 (16-byte aligned, no padding
+ * rules to remember).
  */
 public final class FrameUniforms implements AutoCloseable {
-
-    /** The block's name in GLSL. */
-    public static final String BLOCK_NAME = "FrameBlock";
-    /** The uniform buffer binding point of the block. */
-    public static final int BINDING = 0;
 
     private static final int MAT4 = 64;
     private static final int VEC4 = 16;
@@ -39,7 +34,7 @@ public final class FrameUniforms implements AutoCloseable {
     public FrameUniforms(GlContext gl) {
         buffer = new GpuBuffer(gl, GL_UNIFORM_BUFFER);
         buffer.allocate(SIZE, GL_DYNAMIC_DRAW);
-        buffer.bindBase(BINDING);
+        buffer.bindBase(SharedBlock.FRAME.binding());
     }
 
     /** Writes the block for one pass (std140: each mat4 is 64 bytes column-major, each vec4 16 bytes). */
@@ -59,7 +54,7 @@ public final class FrameUniforms implements AutoCloseable {
         o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
         vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
         buffer.update(data);
-        buffer.bindBase(BINDING);
+        buffer.bindBase(SharedBlock.FRAME.binding());
     }
 
     private int vec4(int offset, float x, float y, float z, float w) {

@@ -6,14 +6,17 @@ import java.nio.ByteBuffer;
 import org.lwjgl.system.MemoryUtil;
 
 /**
- * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil). The engine's
- * scene target is RGBA8 + depth24/stencil8; the shadow map is depth only; the water's reflection is colour + depth.
+ * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil), which it owns;
+ * or one layer of a {@link DepthTextureArray}, which it borrows. The engine's scene target is RGBA8 +
+ * depth24/stencil8; the water's reflection is colour + depth; each shadow cascade is a depth layer.
  */
 public final class Framebuffer implements AutoCloseable {
 
     private final GlContext gl;
     private final Texture2D color;
     private final Texture2D depth;
+    private final int width;
+    private final int height;
     private int id;
 
     /**
@@ -23,6 +26,8 @@ public final class Framebuffer implements AutoCloseable {
     public Framebuffer(GlContext gl, int width, int height, Texture2D.Format colorFormat, Texture2D.Format depthFormat,
                        Texture2D.Sampling sampling) {
         this.gl = gl;
+        this.width = width;
+        this.height = height;
         this.id = glGenFramebuffers();
         gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, id);
@@ -38,6 +43,34 @@ public final class Framebuffer implements AutoCloseable {
             int attachment = depthFormat == Texture2D.Format.DEPTH24_STENCIL8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
             glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, depth.id(), 0);
         }
+        checkComplete();
+    }
+
+    /** A depth-only target drawing into one layer of {@code depth}, which stays the caller's to close. */
+    private Framebuffer(GlContext gl, DepthTextureArray depth, int layer) {
+        this.gl = gl;
+        this.width = depth.size();
+        this.height = depth.size();
+        this.color = null;
+        this.depth = null;
+        this.id = glGenFramebuffers();
+        gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth.id(), 0, layer);
+        checkComplete();
+    }
+
+    /** A target for one layer of a depth array, e.g. one shadow cascade; closing it leaves the array alone. */
+    public static Framebuffer onLayer(GlContext gl, DepthTextureArray depth, int layer) {
+        if (layer < 0 || layer >= depth.layers()) {
+            throw new IllegalArgumentException("layer " + layer + " of a " + depth.layers() + "-layer array");
+        }
+        return new Framebuffer(gl, depth, layer);
+    }
+
+    private void checkComplete() {
         int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -64,17 +97,18 @@ public final class Framebuffer implements AutoCloseable {
     }
 
     public int width() {
-        return color != null ? color.width() : depth.width();
+        return width;
     }
 
     public int height() {
-        return color != null ? color.height() : depth.height();
+        return height;
     }
 
     public Texture2D color() {
         return color;
     }
 
+    /** The owned depth attachment; null for a depth-only target on a layer of a {@link DepthTextureArray}. */
     public Texture2D depth() {
         return depth;
     }

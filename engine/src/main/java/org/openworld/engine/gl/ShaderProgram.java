@@ -17,8 +17,8 @@ import java.util.function.Consumer;
  *
  * <p>Uniforms are typed handles resolved at link time: {@code Uniform.Mat4 model = program.mat4("uModel")} fails
  * at once, naming the program, when the uniform does not exist (or the compiler removed it as unused). If the
- * program declares the {@code FrameBlock} uniform block of {@code common/frame.glsl}, it is bound to
- * {@link FrameUniforms#BINDING}; samplers named like a {@link SharedTexture} are set to its unit.
+ * program declares a {@link SharedBlock} (the frame's, the shadow's), it is bound to its binding point; samplers named
+ * like a {@link SharedTexture} are set to its unit.
  *
  * <p>{@link #reload()} rebuilds from the current sources (dev mode, F5): on failure the old program stays in use and
  * the error is thrown for the caller to print.
@@ -141,9 +141,11 @@ public final class ShaderProgram implements AutoCloseable {
                 deleteProgram(program);
                 throw new ShaderException(this + ": link failed:\n" + log.strip());
             }
-            int frameBlock = glGetUniformBlockIndex(program, FrameUniforms.BLOCK_NAME);
-            if (frameBlock != GL_INVALID_INDEX) {
-                glUniformBlockBinding(program, frameBlock, FrameUniforms.BINDING);
+            for (SharedBlock shared : SharedBlock.values()) {
+                int block = glGetUniformBlockIndex(program, shared.block());
+                if (block != GL_INVALID_INDEX) {
+                    glUniformBlockBinding(program, block, shared.binding());
+                }
             }
             glUseProgram(program);
             for (SharedTexture shared : SharedTexture.values()) {

@@ -6,6 +6,8 @@ package org.openworld.engine.gl;
  * from the top of the 16 a fragment shader is guaranteed, so systems' own units (from 0) never meet them.
  */
 public enum SharedTexture {
+    /** {@code sampler2DArrayShadow shadowMap}: the sun's shadow cascades ({@code shaders/common/shadow.glsl}). */
+    SHADOW_MAP("shadowMap", 13),
     /** {@code samplerCube environmentMap}: the sky around the scene ({@code shaders/common/environment.glsl}). */
     ENVIRONMENT("environmentMap", 14),
     /** {@code sampler3D aerialPerspective}: the air's in-scattering and transmittance ({@code common/fog.glsl}). */

@@ -10,7 +10,7 @@ import java.nio.FloatBuffer;
  * A 2D texture with its size and format: created empty (a render target, or storage filled level by level with
  * {@link #upload}), optionally with a mip chain.
  */
-public final class Texture2D implements AutoCloseable {
+public final class Texture2D extends GlTexture {
 
     /** Sampling and wrap, chosen per use. */
     public record Sampling(int minFilter, int magFilter, int wrap) {
@@ -44,23 +44,15 @@ public final class Texture2D implements AutoCloseable {
         public static final Format R8 = new Format(GL_R8, GL_RED, GL_UNSIGNED_BYTE);
     }
 
-    private final GlContext gl;
     private final int width;
     private final int height;
     private final Format format;
-    private int id;
 
     private Texture2D(GlContext gl, int width, int height, Format format, Sampling sampling) {
-        if (width <= 0 || height <= 0) {
-            throw new IllegalArgumentException("texture size must be positive, got " + width + "x" + height);
-        }
-        this.gl = gl;
+        super(gl, GL_TEXTURE_2D);
         this.width = width;
         this.height = height;
         this.format = format;
-        this.id = glGenTextures();
-        gl.objects().created(GlObjects.Kind.TEXTURE);
-        glBindTexture(GL_TEXTURE_2D, id);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, sampling.minFilter());
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, sampling.magFilter());
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, sampling.wrap());
@@ -69,6 +61,7 @@ public final class Texture2D implements AutoCloseable {
 
     /** Storage without data, e.g. a render target. */
     public static Texture2D empty(GlContext gl, int width, int height, Format format, Sampling sampling) {
+        requirePositive(width, height);
         Texture2D t = new Texture2D(gl, width, height, format, sampling);
         glTexImage2D(GL_TEXTURE_2D, 0, format.internalFormat(), width, height, 0, format.format(), format.type(),
                 (ByteBuffer) null);
@@ -80,6 +73,7 @@ public final class Texture2D implements AutoCloseable {
      * {@link #upload} level by level, or level 0 then {@link #generateMipmaps()}.
      */
     public static Texture2D withMips(GlContext gl, int width, int height, Format format, Sampling sampling) {
+        requirePositive(width, height);
         Texture2D t = new Texture2D(gl, width, height, format, sampling);
         int levels = 32 - Integer.numberOfLeadingZeros(Math.max(width, height));
         for (int level = 0; level < levels; level++) {
@@ -90,13 +84,19 @@ public final class Texture2D implements AutoCloseable {
         return t;
     }
 
+    private static void requirePositive(int width, int height) {
+        if (width <= 0 || height <= 0) {
+            throw new IllegalArgumentException("texture size must be positive, got " + width + "x" + height);
+        }
+    }
+
     /**
      * Writes rows {@code y .. y + rows - 1} of one mip level; {@code data} holds {@code rows} full rows in this
      * texture's {@link Format#format()} and {@link Format#type()} (floats or bytes). Large maps upload in strips, so
      * the staging buffer stays small.
      */
     public void upload(int level, int y, int rows, Buffer data) {
-        glBindTexture(GL_TEXTURE_2D, id);
+        bindForUpdate();
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         int levelWidth = Math.max(1, width >> level);
         if (data instanceof FloatBuffer floats) {
@@ -111,18 +111,8 @@ public final class Texture2D implements AutoCloseable {
 
     /** Fills levels 1.. from level 0 by averaging (the GL's box filter). */
     public void generateMipmaps() {
-        glBindTexture(GL_TEXTURE_2D, id);
+        bindForUpdate();
         glGenerateMipmap(GL_TEXTURE_2D);
-    }
-
-    /** Binds to texture unit {@code unit}. */
-    public void bind(int unit) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, id);
-    }
-
-    public int id() {
-        return id;
     }
 
     public int width() {
@@ -135,14 +125,5 @@ public final class Texture2D implements AutoCloseable {
 
     public Format format() {
         return format;
-    }
-
-    @Override
-    public void close() {
-        if (id != 0) {
-            glDeleteTextures(id);
-            gl.objects().deleted(GlObjects.Kind.TEXTURE);
-            id = 0;
-        }
     }
 }

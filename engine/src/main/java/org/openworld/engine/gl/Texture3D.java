@@ -9,7 +9,7 @@ import java.nio.FloatBuffer;
  * volume sampled with trilinear filtering, such as the clouds' density over two axes of space and one of time, or a
  * table over three parameters. No mip chain: both uses are sampled at about one texel per pixel or coarser per axis.
  */
-public final class Texture3D implements AutoCloseable {
+public final class Texture3D extends GlTexture {
 
     /** Filtering and wrap, the same on all three axes (s, t, r). */
     public record Sampling3D(int minFilter, int magFilter, int wrap) {
@@ -19,22 +19,17 @@ public final class Texture3D implements AutoCloseable {
         public static final Sampling3D LINEAR_CLAMP = new Sampling3D(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
     }
 
-    private final GlContext gl;
     private final int width;
     private final int height;
     private final int depth;
     private final Texture2D.Format format;
-    private int id;
 
     private Texture3D(GlContext gl, int width, int height, int depth, Texture2D.Format format, Sampling3D sampling) {
-        this.gl = gl;
+        super(gl, GL_TEXTURE_3D);
         this.width = width;
         this.height = height;
         this.depth = depth;
         this.format = format;
-        this.id = glGenTextures();
-        gl.objects().created(GlObjects.Kind.TEXTURE);
-        glBindTexture(GL_TEXTURE_3D, id);
         glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, sampling.minFilter());
         glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, sampling.magFilter());
         glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, sampling.wrap());
@@ -72,7 +67,7 @@ public final class Texture3D implements AutoCloseable {
     /** Replaces every texel; {@code data} as in {@link #of}. */
     public void upload(FloatBuffer data) {
         checkSize(width, height, depth, format, data);
-        glBindTexture(GL_TEXTURE_3D, id);
+        bindForUpdate();
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, width, height, depth, format.format(), format.type(), data);
     }
@@ -96,16 +91,6 @@ public final class Texture3D implements AutoCloseable {
         };
     }
 
-    /** Binds to texture unit {@code unit}. */
-    public void bind(int unit) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_3D, id);
-    }
-
-    public int id() {
-        return id;
-    }
-
     public int width() {
         return width;
     }
@@ -120,14 +105,5 @@ public final class Texture3D implements AutoCloseable {
 
     public Texture2D.Format format() {
         return format;
-    }
-
-    @Override
-    public void close() {
-        if (id != 0) {
-            glDeleteTextures(id);
-            gl.objects().deleted(GlObjects.Kind.TEXTURE);
-            id = 0;
-        }
     }
 }

@@ -13,7 +13,7 @@ import org.lwjgl.system.MemoryUtil;
  * {@code texture(sampler2DArray, vec3(uv, layer))}, so one texture unit holds a whole family of images, e.g. the
  * terrain materials. Made with {@link #repeatingMipmapped}: uploaded once, mipmapped by {@code glGenerateMipmap}.
  */
-public final class TextureArray implements AutoCloseable {
+public final class TextureArray extends GlTexture {
 
     /** sRGB-encoded colour with linear alpha: sampling decodes to linear light, mipmaps average in linear light. */
     public static final Texture2D.Format SRGB8_ALPHA8 = new Texture2D.Format(GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE);
@@ -27,19 +27,15 @@ public final class TextureArray implements AutoCloseable {
     private static final int GL_TEXTURE_MAX_ANISOTROPY = 0x84FE;
     private static final int GL_MAX_TEXTURE_MAX_ANISOTROPY = 0x84FF;
 
-    private final GlContext gl;
     private final int width;
     private final int height;
     private final int layers;
-    private int id;
 
     private TextureArray(GlContext gl, int width, int height, int layers) {
-        this.gl = gl;
+        super(gl, GL_TEXTURE_2D_ARRAY);
         this.width = width;
         this.height = height;
         this.layers = layers;
-        this.id = glGenTextures();
-        gl.objects().created(GlObjects.Kind.TEXTURE);
     }
 
     /**
@@ -57,7 +53,6 @@ public final class TextureArray implements AutoCloseable {
         }
         int layerBytes = 4 * width * height;
         TextureArray t = new TextureArray(gl, width, height, texels.size());
-        glBindTexture(GL_TEXTURE_2D_ARRAY, t.id);
         ByteBuffer all = MemoryUtil.memAlloc(layerBytes * texels.size());
         try {
             for (byte[] layer : texels) {
@@ -101,16 +96,6 @@ public final class TextureArray implements AutoCloseable {
         return renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swrast");
     }
 
-    /** Binds to texture unit {@code unit}. */
-    public void bind(int unit) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, id);
-    }
-
-    public int id() {
-        return id;
-    }
-
     public int width() {
         return width;
     }
@@ -121,14 +106,5 @@ public final class TextureArray implements AutoCloseable {
 
     public int layers() {
         return layers;
-    }
-
-    @Override
-    public void close() {
-        if (id != 0) {
-            glDeleteTextures(id);
-            gl.objects().deleted(GlObjects.Kind.TEXTURE);
-            id = 0;
-        }
     }
 }

@@ -6,7 +6,6 @@ import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.FloatBuffer;
 import java.util.List;
-import java.util.Optional;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
@@ -143,17 +142,17 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     }
 
     @Override
-    public Optional<PassView> passView(World world, PassView viewer) {
+    public List<PassView> passViews(World world, PassView viewer) {
         WaterSettings s = world.resource(Settings.class).get(WaterSettings.class);
         if (viewer.camera().position().y() < s.level() + MirrorCamera.MIN_HEIGHT) {
-            return Optional.empty();
+            return List.of();
         }
         int width = s.reflection().of(viewer.target().width());
         int height = s.reflection().of(viewer.target().height());
         reflection = fit(reflection, width, height, Texture2D.Format.DEPTH32F, Texture2D.Sampling.LINEAR_CLAMP);
         reflected = true;
         // the paper's method draws the mirrored scene whole; the Fresnel method cuts it at the water
-        return Optional.of(new PassView(MirrorCamera.of(viewer.camera(), (float) s.level(), s.method() == Method.FRESNEL),
+        return List.of(new PassView(MirrorCamera.of(viewer.camera(), (float) s.level(), s.method() == Method.FRESNEL),
                 reflection));
     }
 

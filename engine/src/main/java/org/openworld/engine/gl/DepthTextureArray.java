@@ -1,0 +1,68 @@
+package org.openworld.engine.gl;
+
+import static org.lwjgl.opengl.GL30C.*;
+
+import java.nio.FloatBuffer;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * Square depth layers sampled by comparison ({@code sampler2DArrayShadow} in GLSL): the sun's shadow maps, one layer
+ * per cascade. A lookup {@code texture(map, vec4(uv, layer, depth))} answers 1 where the stored depth is at least
+ * {@code depth} (nothing between the point and the sun) and 0 where it is nearer; nearest filtering, so each lookup
+ * is one texel's yes or no and any softening is the reader's own filter (the paper's PCF). Outside the map the
+ * border depth 1 answers "lit". Each layer is drawn through its own {@link Framebuffer#onLayer}.
+ */
+public final class DepthTextureArray extends GlTexture {
+
+    private final int size;
+    private final int layers;
+
+    private DepthTextureArray(GlContext gl, int size, int layers, FloatBuffer depths) {
+        super(gl, GL_TEXTURE_2D_ARRAY);
+        this.size = size;
+        this.layers = layers;
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT,
+                GL_FLOAT, depths);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, new float[] {1, 1, 1, 1});
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    }
+
+    /**
+     * Storage for {@code layers} maps of {@code size}² 32-bit float depths, to be drawn into.
+     *
+     * @param size   texels per side
+     * @param layers maps, one per cascade
+     */
+    public static DepthTextureArray of(GlContext gl, int size, int layers) {
+        if (size <= 0 || layers <= 0) {
+            throw new IllegalArgumentException("depth array needs a positive size and layer count, got " + size
+                    + "² × " + layers);
+        }
+        return new DepthTextureArray(gl, size, layers, null);
+    }
+
+    /** One texel at the far plane (depth 1): a map with nothing in it, under which everything is lit. */
+    public static DepthTextureArray empty(GlContext gl) {
+        FloatBuffer far = MemoryUtil.memAllocFloat(1).put(0, 1f);
+        try {
+            return new DepthTextureArray(gl, 1, 1, far);
+        } finally {
+            MemoryUtil.memFree(far);
+        }
+    }
+
+    public int size() {
+        return size;
+    }
+
+    public int layers() {
+        return layers;
+    }
+}

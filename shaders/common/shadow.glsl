@@ -1,0 +1,88 @@
+// The sun's shadow (paper 3.2; engine: org.openworld.engine.shadow.ShadowSystem, which writes this block and draws
+// the maps). Any lit shader multiplies its direct sunlight by
+//
+//   float sunVisibility(vec3 wsPos, vec3 wsNormal)   1 where the sun is seen from wsPos, 0 where it is hidden
+//
+// How: each cascade is an orthographic depth picture of the world seen from the sun. A point is looked up in the
+// finest cascade whose picture holds it; it is shadowed where the picture recorded something nearer the sun than
+// the point itself, by more than a bias:
+//   margin       the paper's Z-buffer margin, in depth-buffer units (a fraction of the box's depth)
+//   slope bias   metres of depth per texel of the map, times tan(angle of the sun to the normal): a tilted surface
+//                covers a depth range within one texel, and its own nearer part must not shadow its farther part.
+//                Scaled by the PCF kernel's reach, since the outer taps read the surface further away
+//   normal offset the point moved along its normal by a fraction of a texel times sin(angle): off the surface, so
+//                the lookup lands where the surface's own depth is behind it
+// The paper's PCF filter averages N x N such tests a texel apart: a soft edge N texels wide. Near the border of a
+// cascade the next one is blended in, and at the shadow distance shadows fade out.
+#include "common/frame.glsl"
+
+layout(std140) uniform ShadowBlock {
+    mat4 lightViewProjection[4]; // world -> each cascade's clip space (orthographic)
+    vec4 cascadeTexel;           // metres per texel, per cascade
+    vec4 cascadeDepth;           // metres from each box's sunward plane to its far plane (depth 0 .. 1)
+    vec4 shadowParams;           // x: cascades (0: no shadow map, everything lit); y: PCF side N; z: margin; w: blend band
+    vec4 biasParams;             // x: normal offset (texels); y: slope bias (texels); z: fade start, w: shadow distance
+                                 //    (metres from the viewer; w = 0: no fade)
+    vec4 viewerPos;              // xyz: the viewer's eye (the same in every pass, also the mirrored one)
+} shadow;
+
+uniform sampler2DArrayShadow shadowMap;
+
+// The point in cascade i's map: xy texture coordinates, z its depth less the biases.
+vec3 shadowCoords(int i, vec3 wsPos, vec3 wsNormal, float cosSun) {
+    float texel = shadow.cascadeTexel[i];
+    float sinSun = sqrt(max(1.0 - cosSun * cosSun, 0.0));
+    vec3 offsetPos = wsPos + wsNormal * (shadow.biasParams.x * texel * sinSun);
+    vec4 clip = shadow.lightViewProjection[i] * vec4(offsetPos, 1.0);
+    vec3 coords = clip.xyz * 0.5 + 0.5;
+    float reach = 1.0 + 0.5 * (shadow.shadowParams.y - 1.0);
+    float tanSun = min(sinSun / max(cosSun, 1e-3), 10.0);
+    float slope = shadow.biasParams.y * texel * tanSun * reach / shadow.cascadeDepth[i];
+    coords.z -= shadow.shadowParams.z + slope;
+    return coords;
+}
+
+// The paper's percentage-closer filter: the mean of N x N depth tests a texel apart around the point.
+float percentageCloser(int i, vec3 coords) {
+    int n = int(shadow.shadowParams.y);
+    float step = 1.0 / float(textureSize(shadowMap, 0).x);
+    vec2 origin = coords.xy - 0.5 * float(n - 1) * step;
+    float lit = 0.0;
+    for (int y = 0; y < n; y++) {
+        for (int x = 0; x < n; x++) {
+            lit += texture(shadowMap, vec4(origin + vec2(x, y) * step, float(i), coords.z));
+        }
+    }
+    return lit / float(n * n);
+}
+
+// How far inside cascade i's map the coordinates lie, as a fraction of its side (negative: outside).
+float insideness(vec3 coords) {
+    vec2 edge = min(coords.xy, 1.0 - coords.xy);
+    return coords.z > 1.0 ? -1.0 : min(edge.x, edge.y);
+}
+
+float sunVisibility(vec3 wsPos, vec3 wsNormal) {
+    int count = int(shadow.shadowParams.x);
+    float distance = length(wsPos - shadow.viewerPos.xyz);
+    float far = shadow.biasParams.w;
+    if (count == 0 || (far > 0.0 && distance >= far)) {
+        return 1.0;
+    }
+    float cosSun = clamp(dot(wsNormal, sunDir()), 0.0, 1.0);
+    for (int i = 0; i < count; i++) {
+        vec3 coords = shadowCoords(i, wsPos, wsNormal, cosSun);
+        float inside = insideness(coords);
+        if (inside < 0.0) {
+            continue;
+        }
+        float lit = percentageCloser(i, coords);
+        float band = shadow.shadowParams.w;
+        if (inside < band && i + 1 < count) {
+            vec3 next = shadowCoords(i + 1, wsPos, wsNormal, cosSun);
+            lit = mix(percentageCloser(i + 1, next), lit, inside / band);
+        }
+        return far > 0.0 ? mix(lit, 1.0, smoothstep(shadow.biasParams.z, far, distance)) : lit;
+    }
+    return 1.0;
+}
