@@ -15,6 +15,7 @@
 //      the environment map (the sky system's), both scaled by the gloss map
 #include "common/frame.glsl"
 #include "common/environment.glsl"
+#include "common/shadow.glsl"
 
 uniform sampler2DArray uMatAlbedo; // layers MAT_GRASS, MAT_ROCK, MAT_SNOW; sRGB-stored colour, sampled linear
 uniform sampler2DArray uMatDetail; // rg: tangent-space normal xy * 0.5 + 0.5; b: relief 0..1; a: gloss 0..1
@@ -204,8 +205,9 @@ vec3 shadeTerrain(TerrainSurface s) {
         n = normalize(s.wsTangent * ts.x + s.wsBitangent * ts.y + n0 * ts.z);
     }
 
-    // 5. light
+    // 5. light: the sun only where it is seen (the shadow maps)
     float sunFacing = smoothstep(-0.05, 0.1, dot(n0, l)); // bumps cannot be lit from behind the terrain itself
+    sunFacing *= sunVisibility(s.wsPos, n0);
     float nl = max(dot(n, l), 0.0) * sunFacing;
     vec3 sky = frame.ambientColor.rgb * (0.6 + 0.4 * n.y);
     vec3 color = surface.albedo * (frame.sunColor.rgb * nl + sky);

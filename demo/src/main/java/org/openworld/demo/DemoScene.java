@@ -7,6 +7,7 @@ import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.shadow.ShadowSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
@@ -29,6 +30,7 @@ final class DemoScene {
                 new SkySystem(),
                 new CullingSystem(),
                 new TerrainSystem(line -> System.err.println(line)),
+                new ShadowSystem(),
                 new WaterSystem());
     }
 }

@@ -255,6 +255,7 @@ public final class Engine implements AutoCloseable {
         long frameStart = System.nanoTime();
         stats.reset();
         PassView viewer = new PassView(world.resource(Camera.class).view((float) scene.width() / scene.height()), scene);
+        boolean shadowDrawn = false;
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
             if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
@@ -265,7 +266,7 @@ public final class Engine implements AutoCloseable {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
                 frameUniforms.write(frameValues(view));
-                bindShared(pass);
+                bindShared(pass, shadowDrawn);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 view.target().bind();
                 glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
@@ -287,6 +288,7 @@ public final class Engine implements AutoCloseable {
                     systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
                 }
             }
+            shadowDrawn |= pass == Pass.SHADOW && !views.isEmpty();
         }
         glFrontFace(GL_CCW);
         glDisable(GL_STENCIL_TEST);
@@ -341,7 +343,7 @@ public final class Engine implements AutoCloseable {
 
     private FrameUniforms.Values frameValues(PassView view) {
         ViewCamera camera = view.camera();
-        Sun sun = world.findResource(Sun.class).orElse(NOON);
+        Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
@@ -351,28 +353,25 @@ public final class Engine implements AutoCloseable {
 
     /**
      * Binds the shared textures and blocks: the sky's, or neutral stand-ins when no system models the sky; the sun's
-     * shadow, or none when no system casts one, and none while the SHADOW pass draws the maps (a map being drawn must
-     * not be bound for reading).
+     * shadow once this frame's maps are drawn, else none (no system casts shadows, it is switched off or the sun is
+     * down; and a map being drawn must not be bound for reading).
      */
-    private void bindShared(Pass pass) {
+    private void bindShared(Pass pass, boolean shadowDrawn) {
         SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
         maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
         maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
-        SunShadow shadow = pass == Pass.SHADOW ? noShadow : world.findResource(SunShadow.class).orElse(noShadow);
+        SunShadow shadow = shadowDrawn ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
         shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
         shadow.block().bindBase(SharedBlock.SHADOW.binding());
     }
 
-    /** Light for a world with no system that models the sky: a high white sun. */
-    private static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1), new Vector3f(0.3f));
-
-    /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as NOON's ambient light. */
+    /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */
     private static SkyMaps neutralSky(GlContext gl) {
         FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
         try {
             Texture3D air = Texture3D.of(gl, 1, 1, 1, Texture2D.Format.RGBA16F, Texture3D.Sampling3D.LINEAR_CLAMP,
                     clearAir);
-            return new SkyMaps(air, CubeMapTexture.fromDirections(gl, 1, d -> NOON.ambient()));
+            return new SkyMaps(air, CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient()));
         } finally {
             MemoryUtil.memFree(clearAir);
         }

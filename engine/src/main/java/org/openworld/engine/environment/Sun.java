@@ -14,6 +14,9 @@ import org.joml.Vector3fc;
  */
 public record Sun(Vector3fc direction, Vector3fc color, Vector3fc ambient) {
 
+    /** The sun of a world with no system that models the sky: high (65°) towards the north-east, white. */
+    public static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1), new Vector3f(0.3f));
+
     public Sun {
         direction = new Vector3f(direction).normalize();
         color = new Vector3f(color);

@@ -23,15 +23,19 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param reflectionCoarsening levels coarser in the water's reflection pass: the reflection is drawn at half
  *                       resolution and seen wobbling on the ripples, so detail finer than its pixels cannot be seen;
  *                       each level halves B there, a quarter of the triangles
+ * @param shadowCoarsening levels coarser in the sun's shadow pass, with distances from the viewer's eye: a shadow is
+ *                       seen through the map's texels and the PCF filter, which blur detail finer than a few texels,
+ *                       and a coarser caster moves its shadow's edge by less than that; each level halves B there
  */
 public record LodSettings(
         @Setting(doc = "vertices per patch side (33 or 65)", min = 33, max = 65) int patchVertices,
         @Setting(doc = "base resolution B: distance of the first level drop", unit = "m", min = 1, max = 100000)
         double baseResolution,
         @Setting(doc = "level-of-detail scheme: QUADTREE or FLAT_GRID (the paper's, figure 6)") LodMode mode,
-        @Setting(doc = "levels coarser in the water's reflection pass", min = 0, max = 4) int reflectionCoarsening) {
+        @Setting(doc = "levels coarser in the water's reflection pass", min = 0, max = 4) int reflectionCoarsening,
+        @Setting(doc = "levels coarser in the sun's shadow pass", min = 0, max = 4) int shadowCoarsening) {
 
-    public static final LodSettings DEFAULTS = new LodSettings(65, 128, LodMode.QUADTREE, 1);
+    public static final LodSettings DEFAULTS = new LodSettings(65, 128, LodMode.QUADTREE, 1, 1);
 
     public static final SettingsGroup<LodSettings> SETTINGS = SettingsGroup.of("lod", LodSettings.class, DEFAULTS);
 
@@ -47,10 +51,14 @@ public record LodSettings(
         }
     }
 
-    /** B in a pass: coarser by {@link #reflectionCoarsening()} levels in the water's reflection. */
+    /** B in a pass: coarser by {@link #reflectionCoarsening()} levels in the water's reflection, by
+     *  {@link #shadowCoarsening()} in the sun's shadow pass. */
     public double baseResolution(Pass pass) {
-        return pass == Pass.REFLECTION ? baseResolution / (1 << reflectionCoarsening)
-                : baseResolution;
+        return switch (pass) {
+            case REFLECTION -> baseResolution / (1 << reflectionCoarsening);
+            case SHADOW -> baseResolution / (1 << shadowCoarsening);
+            default -> baseResolution;
+        };
     }
 
     /** Cells per patch side, N = {@link #patchVertices()} − 1. */

@@ -61,6 +61,8 @@ public final class TerrainSystem implements EngineSystem {
     private TerrainMaterials materials;
     private PatchRenderer renderer;
     private ShaderProgram program;
+    /** The same patches for the sun's shadow pass: the vertex stage alone, writing depth. */
+    private ShaderProgram depthProgram;
     private Uniform.Int colouring;
     private TerrainMaterials.Uniforms materialUniforms;
     private int entity;
@@ -83,7 +85,7 @@ public final class TerrainSystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class)
-                .draws(Pass.REFLECTION, Pass.MAIN);
+                .draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -117,19 +119,26 @@ public final class TerrainSystem implements EngineSystem {
         maps = new TerrainMaps(context.gl(), data.pyramid(), data.snow());
         materials = new TerrainMaterials(context.gl(), seed);
         renderer = new PatchRenderer(context.gl(), patterns);
+        depthProgram = context.shaders().program("terrain/terrain.vert", "terrain/depth.frag");
+        setPatchUniforms(depthProgram, base, cells);
         program = context.shaders().program("terrain/terrain.vert", "terrain/terrain.frag");
-        program.use();
-        program.sampler("heights", UNIT_HEIGHTS);
+        setPatchUniforms(program, base, cells);
         program.sampler("gradients", UNIT_GRADIENTS);
         program.sampler("snowMap", UNIT_SNOW);
-        program.int1("mapSize").set(base.size());
-        program.float1("spacing").set((float) base.spacing());
-        program.int1("cells").set(cells);
-        program.int1("periodic").set(base.periodic() ? 1 : 0);
         program.float1("extent").set((float) base.extent());
         program.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
         colouring = program.int1("colouring");
         materialUniforms = TerrainMaterials.uniforms(program);
+    }
+
+    /** The vertex stage's uniforms: where the heights are and how the patch grid maps onto them. */
+    private static void setPatchUniforms(ShaderProgram p, HeightMap base, int cells) {
+        p.use();
+        p.sampler("heights", UNIT_HEIGHTS);
+        p.int1("mapSize").set(base.size());
+        p.float1("spacing").set((float) base.spacing());
+        p.int1("cells").set(cells);
+        p.int1("periodic").set(base.periodic() ? 1 : 0);
     }
 
     @Override
@@ -170,7 +179,9 @@ public final class TerrainSystem implements EngineSystem {
         // 1. the cut: the paper's level rule over the quadtree (or its flat grid), visible patches only
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
-        Vector3fc eye = context.camera().position();
+        // levels follow the eye of the pass's camera; in the sun's pass that is the viewer's (a light box has none),
+        // so the shadows are cast by the ground the viewer sees, only coarser where that cannot be seen
+        Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
         if (debug.freezeLod()) {
             frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
             eye = frozenEye;
@@ -185,23 +196,37 @@ public final class TerrainSystem implements EngineSystem {
         counters.add(prefix + "patches", patches.size());
         counters.add(prefix + "culled", selection.culledPatches());
         counters.add(prefix + "select-ms", selectMs);
-        // 2. the maps, the materials and the view options
-        program.use();
+        // 2. the maps, the materials and the view options (in the sun's pass the heights alone)
         maps.heights.bind(UNIT_HEIGHTS);
+        if (pass == Pass.SHADOW) {
+            depthProgram.use();
+            drawPatches(context, false);
+            return;
+        }
+        program.use();
         maps.gradients.bind(UNIT_GRADIENTS);
         maps.snow.bind(UNIT_SNOW);
         materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
         colouring.set(debug.colouring().ordinal());
-        // 3. the patches, front faces only
+        drawPatches(context, debug.wireframe());
+    }
+
+    /** 3. the patches, front faces only. */
+    private void drawPatches(RenderContext context, boolean wireframe) {
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         glEnable(GL_CULL_FACE);
-        if (debug.wireframe()) {
+        if (wireframe) {
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         }
         renderer.draw(patches, copyOffsets, context.stats());
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         glDisable(GL_CULL_FACE);
+    }
+
+    private static Vector3f viewerEye(World world) {
+        var pose = world.resource(Camera.class).pose();
+        return new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
     }
 
     /** The generated or imported data, once initialised (tests and tools read the heights the terrain draws). */
@@ -211,7 +236,7 @@ public final class TerrainSystem implements EngineSystem {
 
     @Override
     public void close() {
-        for (AutoCloseable c : new AutoCloseable[] {program, renderer, materials, maps}) {
+        for (AutoCloseable c : new AutoCloseable[] {program, depthProgram, renderer, materials, maps}) {
             if (c != null) {
                 try {
                     c.close();

@@ -1,0 +1,190 @@
+package org.openworld.engine.shadow;
+
+import static org.lwjgl.opengl.GL15C.GL_DYNAMIC_DRAW;
+import static org.lwjgl.opengl.GL31C.GL_UNIFORM_BUFFER;
+
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import org.joml.Vector3fc;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassOwner;
+import org.openworld.engine.core.PassView;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.core.World;
+import org.openworld.engine.culling.Cullable;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.SunShadow;
+import org.openworld.engine.gl.DepthTextureArray;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.shadow.ShadowSettings.Method;
+
+/**
+ * The sun's shadows (paper 3.2): owns the {@link Pass#SHADOW} pass, which it runs once per cascade with an
+ * orthographic camera looking along the sunlight into that cascade's depth layer, and publishes the maps with the
+ * block that says how to read them as the world's {@link SunShadow}, which every lit shader reads through
+ * {@code shaders/common/shadow.glsl}.
+ *
+ * <p>Each frame, before the pass ({@link #passViews}): the view is cut into slices ({@link CascadeSplits}), each
+ * slice gets its light box ({@link LightFit#stable}, or the paper's {@link LightFit#covering}), the box reaches
+ * towards the sun as far as a caster can stand (the height span of everything culling knows of, over the sine of the
+ * sun's elevation), and the block is rewritten. The casters (the terrain, drawing depth only) are culled against each
+ * box by the culling system, like any pass camera.
+ *
+ * <p>No views, and so no shadows, while the sun is below the horizon: its light is then nil anyway.
+ */
+public final class ShadowSystem implements EngineSystem, PassOwner {
+
+    /** Fraction of a cascade's side, at its border, over which the next cascade is blended in. */
+    static final float BLEND_BAND = 0.1f;
+    /** Fraction of the shadow distance, at its end, over which shadows fade out. */
+    static final float FADE = 0.1f;
+    /**
+     * The lowest sun elevation the casters' reach is computed for, as a sine (1°): at a grazing sun a caster's
+     * shadow is endless, and the box must stop somewhere.
+     */
+    static final double MIN_SUN_SINE = Math.sin(Math.toRadians(1));
+
+    private GlContext gl;
+    private DepthTextureArray maps;
+    private final List<Framebuffer> layers = new ArrayList<>();
+    private GpuBuffer block;
+    private final ByteBuffer blockData = MemoryUtil.memCalloc(SunShadow.BLOCK_SIZE);
+    private List<LightBox> boxes = List.of();
+
+    @Override
+    public SystemSpec spec() {
+        return SystemSpec.named("shadow").reads(Settings.class, Camera.class, Sun.class, Cullable.class)
+                .writes(SunShadow.class);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of(ShadowSettings.SETTINGS);
+    }
+
+    @Override
+    public Pass ownedPass() {
+        return Pass.SHADOW;
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        gl = context.gl();
+        block = new GpuBuffer(gl, GL_UNIFORM_BUFFER);
+        block.allocate(SunShadow.BLOCK_SIZE, GL_DYNAMIC_DRAW);
+        fitMaps(context.settings().get(ShadowSettings.class), context.world());
+    }
+
+    /** (Re)makes the depth layers when the resolution or the number of maps changed: once, not every frame. */
+    private void fitMaps(ShadowSettings s, World world) {
+        if (maps != null && maps.size() == s.resolution() && maps.layers() == s.maps()) {
+            return;
+        }
+        closeMaps();
+        maps = DepthTextureArray.of(gl, s.resolution(), s.maps());
+        for (int i = 0; i < s.maps(); i++) {
+            layers.add(Framebuffer.onLayer(gl, maps, i));
+        }
+        world.setResource(new SunShadow(maps, block));
+    }
+
+    @Override
+    public List<PassView> passViews(World world, PassView viewer) {
+        ShadowSettings s = world.resource(Settings.class).get(ShadowSettings.class);
+        fitMaps(s, world);
+        Vector3fc toSun = world.findResource(Sun.class).orElse(Sun.NOON).direction();
+        if (toSun.y() <= 0) {
+            boxes = List.of();
+            return List.of();
+        }
+        ViewCamera eye = viewer.camera();
+        double reach = casterHeightSpan(world) / Math.max(toSun.y(), MIN_SUN_SINE);
+        double[] splits = s.method() == Method.PAPER ? new double[] {eye.near(), s.distance()}
+                : CascadeSplits.distances(eye.near(), s.distance(), s.cascades(), s.splitBlend());
+        List<LightBox> fitted = new ArrayList<>();
+        List<PassView> views = new ArrayList<>();
+        for (int i = 0; i + 1 < splits.length; i++) {
+            LightBox box = s.method() == Method.PAPER
+                    ? LightFit.covering(eye.view(), eye.projection(), splits[i], splits[i + 1], toSun, reach,
+                            s.resolution())
+                    : LightFit.stable(eye.view(), eye.projection(), splits[i], splits[i + 1], toSun, reach,
+                            s.resolution());
+            fitted.add(box);
+            views.add(new PassView(new ViewCamera(box.view(), box.projection(), box.sunwardCentre(), 0,
+                    box.depthRange()), layers.get(i)));
+        }
+        boxes = List.copyOf(fitted);
+        writeBlock(s, eye.position());
+        return views;
+    }
+
+    /** Metres from the lowest to the highest point of everything the culling system knows (the casters). */
+    private static double casterHeightSpan(World world) {
+        double[] span = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        world.each(Cullable.class, (entity, cullable) -> {
+            float[] root = cullable.tree().boxes();
+            span[0] = Math.min(span[0], root[1]);
+            span[1] = Math.max(span[1], root[4]);
+        });
+        return span[1] > span[0] ? span[1] - span[0] : 0;
+    }
+
+    /** The std140 {@code ShadowBlock} of {@code shaders/common/shadow.glsl}. */
+    private void writeBlock(ShadowSettings s, Vector3fc viewer) {
+        int n = boxes.size();
+        boolean paper = s.method() == Method.PAPER;
+        for (int i = 0; i < 4; i++) {
+            (i < n ? boxes.get(i).viewProjection() : new org.joml.Matrix4f()).get(i * 64, blockData);
+        }
+        int o = 4 * 64;
+        for (int i = 0; i < 4; i++) {
+            blockData.putFloat(o + 4 * i, i < n ? boxes.get(i).texelSize() : 0);
+            blockData.putFloat(o + 16 + 4 * i, i < n ? boxes.get(i).depthRange() : 1);
+        }
+        o += 32;
+        o = vec4(o, n, s.kernel(), (float) s.margin(), BLEND_BAND);
+        float far = (float) s.distance();
+        o = vec4(o, paper ? 0 : (float) s.normalOffset(), paper ? 0 : (float) s.slopeBias(),
+                paper ? far : far * (1 - FADE), paper ? 0 : far);
+        vec4(o, viewer.x(), viewer.y(), viewer.z(), 0);
+        block.update(blockData);
+    }
+
+    private int vec4(int offset, float x, float y, float z, float w) {
+        blockData.putFloat(offset, x).putFloat(offset + 4, y).putFloat(offset + 8, z).putFloat(offset + 12, w);
+        return offset + 16;
+    }
+
+    /** This frame's light boxes, one per map (for tests and tools); empty while the sun is down. */
+    public List<LightBox> boxes() {
+        return boxes;
+    }
+
+    private void closeMaps() {
+        layers.forEach(Framebuffer::close);
+        layers.clear();
+        if (maps != null) {
+            maps.close();
+            maps = null;
+        }
+    }
+
+    @Override
+    public void close() {
+        closeMaps();
+        if (block != null) {
+            block.close();
+        }
+        MemoryUtil.memFree(blockData);
+    }
+}
