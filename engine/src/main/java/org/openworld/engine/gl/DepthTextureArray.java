@@ -58,6 +58,24 @@ public final class DepthTextureArray extends GlTexture {
         }
     }
 
+    /**
+     * Reads every layer back (waits for the GPU): {@code size² · layers} depths in 0 .. 1, row by row from v = 0,
+     * layer after layer. For tests and tools.
+     */
+    public float[] read() {
+        FloatBuffer depths = MemoryUtil.memAllocFloat(size * size * layers);
+        try {
+            bindForUpdate();
+            glPixelStorei(GL_PACK_ALIGNMENT, 4);
+            glGetTexImage(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+            float[] out = new float[depths.remaining()];
+            depths.get(out);
+            return out;
+        } finally {
+            MemoryUtil.memFree(depths);
+        }
+    }
+
     public int size() {
         return size;
     }

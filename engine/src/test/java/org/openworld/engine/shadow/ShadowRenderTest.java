@@ -1,0 +1,300 @@
+package org.openworld.engine.shadow;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import org.joml.Matrix4fc;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.Engine;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.SunShadow;
+import org.openworld.engine.gl.GlObjects;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.terrain.TerrainSystem;
+
+/**
+ * The sun's shadows on real GL, over an imported world built for the purpose: flat ground at −20 m and a wall 100 m
+ * high and 16 m thick running north–south just west of the centre (x from −16 to 0 m), lit by a sun in the east 35°
+ * up, so the wall's shadow lies on the ground west of it, 100 / tan 35° = 143 m long (x from −159 to −16 m).
+ */
+class ShadowRenderTest {
+
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
+
+    static final int W = 320;
+    static final int H = 180;
+    /** Samples per side of the imported map, 2 m apart: a 512 m world from −256 to 256 m. */
+    static final int SAMPLES = 256;
+    static final double GROUND = -20;
+    static final double ELEVATION = Math.toRadians(35);
+    static final Sun EAST_SUN = new Sun(new Vector3f((float) Math.cos(ELEVATION), (float) Math.sin(ELEVATION), 0),
+            new Vector3f(1), new Vector3f(0.25f));
+    /** Above the shadow, looking almost straight down, north up. */
+    static final CameraPose ABOVE = new CameraPose(-60, 230, 0, 0, -89, 60);
+
+    @TempDir
+    static Path dir;
+    static Path wall;
+
+    @BeforeAll
+    static void writeWorld() throws IOException {
+        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
+        for (int z = 0; z < SAMPLES; z++) {
+            for (int x = 0; x < SAMPLES; x++) {
+                bytes.putFloat(x >= 120 && x < 128 ? 1f : 0f);
+            }
+        }
+        wall = Files.write(dir.resolve("wall.raw"), bytes.array());
+    }
+
+    static List<String> settings(String... more) {
+        List<String> s = new ArrayList<>(List.of("terrain.import-file=" + wall, "terrain.spacing=2",
+                "terrain.relief=100", "terrain.sea-fraction=0.2", "shadow.resolution=512", "shadow.distance=600"));
+        s.addAll(List.of(more));
+        return s;
+    }
+
+    static Image render(List<String> settings, Consumer<Engine> before) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings, new CullingSystem(),
+                new TerrainSystem(), new ShadowSystem())) {
+            engine.world().setResource(EAST_SUN);
+            engine.world().resource(Camera.class).setPose(ABOVE);
+            before.accept(engine);
+            engine.update();
+            engine.render();
+            return engine.readImage();
+        }
+    }
+
+    static Image render(String... settings) {
+        return render(settings(settings), engine -> { });
+    }
+
+    static Image unshadowed() {
+        return render(settings(), engine -> engine.setEnabled("shadow", false));
+    }
+
+    /** The pixel a ground point at (x, z) appears at, or null when it is off the picture. */
+    static int[] pixel(double x, double z) {
+        Matrix4fc viewProjection = ViewCamera.perspective(ABOVE, (float) W / H, Camera.NEAR, Camera.FAR)
+                .viewProjection();
+        Vector4f clip = viewProjection.transform(new Vector4f((float) x, (float) GROUND, (float) z, 1));
+        double px = (clip.x / clip.w * 0.5 + 0.5) * W;
+        double py = (0.5 - clip.y / clip.w * 0.5) * H;
+        return px < 0 || px >= W || py < 0 || py >= H ? null : new int[] {(int) px, (int) py};
+    }
+
+    /** Mean luma over the ground from x0 to x1 (metres, west to east), z from −40 to 40 m. */
+    static double groundLuma(Image image, double x0, double x1) {
+        int[] a = pixel(x0, -40);
+        int[] b = pixel(x1, 40);
+        return image.meanLuma(Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[0], b[0]),
+                Math.max(a[1], b[1]));
+    }
+
+    @Test
+    void theWallShadowsTheGroundWestOfItAndNotEast() {
+        Image image = render();
+        double shadowed = groundLuma(image, -130, -40);
+        double litWest = groundLuma(image, -240, -190);
+        double litEast = groundLuma(image, 50, 120); // clear of the wall's top, which leans out of the picture
+        assertTrue(shadowed < 0.6 * litWest && shadowed < 0.6 * litEast, "in the wall's shadow " + shadowed
+                + ", lit west of it " + litWest + ", east of it " + litEast);
+        assertEquals(litWest, litEast, 0.15 * litEast, "lit ground on both sides alike");
+        Image none = unshadowed();
+        assertEquals(groundLuma(none, -130, -40), groundLuma(none, -240, -190), 0.15 * litWest,
+                "without the shadow system the same ground is lit alike");
+    }
+
+    /** Pixels, along the row through z = 0, over which the luma climbs from 20 % to 80 % of the way out of shadow. */
+    static int edgeWidth(Image image) {
+        int[] from = pixel(-200, 0);
+        int[] to = pixel(-120, 0);
+        double lit = groundLuma(image, -240, -190);
+        double dark = groundLuma(image, -130, -60);
+        int row = from[1];
+        int inBetween = 0;
+        for (int x = Math.min(from[0], to[0]); x <= Math.max(from[0], to[0]); x++) {
+            double t = (image.luma(x, row) - dark) / (lit - dark);
+            if (t > 0.2 && t < 0.8) {
+                inBetween++;
+            }
+        }
+        return inBetween;
+    }
+
+    @Test
+    void theShadowEdgeWidensWithTheFilterKernel() {
+        int sharp = edgeWidth(render("shadow.method=PAPER", "shadow.margin=0.01", "shadow.kernel=1"));
+        int soft = edgeWidth(render("shadow.method=PAPER", "shadow.margin=0.01", "shadow.kernel=7"));
+        assertTrue(soft >= sharp + 4 && soft >= 2 * sharp, "edge " + sharp + " px at 1×1, " + soft + " px at 7×7");
+    }
+
+    /** Fraction of lit ground (both sides of the shadow) drawn darker than unshadowed ground: shadow acne. */
+    static double acne(Image image, Image unshadowed) {
+        int dark = 0;
+        int all = 0;
+        for (double[] span : new double[][] {{-240, -180}, {20, 140}}) {
+            int[] a = pixel(span[0], -60);
+            int[] b = pixel(span[1], 60);
+            for (int y = Math.min(a[1], b[1]); y <= Math.max(a[1], b[1]); y++) {
+                for (int x = Math.min(a[0], b[0]); x <= Math.max(a[0], b[0]); x++) {
+                    all++;
+                    if (image.luma(x, y) < 0.85 * unshadowed.luma(x, y)) {
+                        dark++;
+                    }
+                }
+            }
+        }
+        return (double) dark / all;
+    }
+
+    @Test
+    void acneFallsAsTheMarginGrows() {
+        Image reference = unshadowed();
+        double[] margins = {0, 0.001, 0.01, 0.1};
+        double[] acne = new double[margins.length];
+        for (int i = 0; i < margins.length; i++) {
+            acne[i] = acne(render("shadow.method=PAPER", "shadow.kernel=1", "shadow.resolution=256",
+                    "shadow.margin=" + margins[i]), reference);
+        }
+        String series = java.util.Arrays.toString(acne);
+        assertTrue(acne[0] > 0.2, "no margin: the ground shadows itself " + series);
+        assertTrue(acne[0] > acne[1] && acne[1] > acne[2], "acne falls with the margin " + series);
+        assertTrue(acne[2] < 0.01 && acne[3] < 0.01, "0.01 and above: no acne " + series);
+        assertTrue(acne(render(), reference) < 0.01, "the cascades' slope and normal biases: no acne");
+    }
+
+    /** This frame's maps and boxes, after rendering at a pose. */
+    record Maps(float[] depths, List<LightBox> boxes, int size) {
+    }
+
+    static Maps maps(Engine engine, ShadowSystem shadow, CameraPose pose) {
+        engine.world().resource(Camera.class).setPose(pose);
+        engine.update();
+        engine.render();
+        SunShadow sun = engine.world().resource(SunShadow.class);
+        return new Maps(sun.map().read(), shadow.boxes(), sun.map().size());
+    }
+
+    /**
+     * Fraction of texels of each map that differ from the other frame's, compared where each world point lies: the
+     * second frame's map shifted back by the whole texels its box moved. Texels within two of the border are left
+     * out, as is a map whose box did not move by whole texels (then every texel counts as changed).
+     */
+    static double changed(Maps a, Maps b) {
+        int n = a.size();
+        int differ = 0;
+        int all = 0;
+        for (int layer = 0; layer < a.boxes().size(); layer++) {
+            // a world point's texel moves by the change of the box's clip translation, in texels
+            Vector4f ta = a.boxes().get(layer).viewProjection().transform(new Vector4f(0, 0, 0, 1));
+            Vector4f tb = b.boxes().get(layer).viewProjection().transform(new Vector4f(0, 0, 0, 1));
+            double sx = (tb.x - ta.x) * n / 2;
+            double sy = (tb.y - ta.y) * n / 2;
+            long dx = Math.round(sx);
+            long dy = Math.round(sy);
+            boolean whole = Math.abs(sx - dx) < 1e-3 && Math.abs(sy - dy) < 1e-3;
+            for (int y = 2; y < n - 2; y++) {
+                for (int x = 2; x < n - 2; x++) {
+                    long xb = x + dx;
+                    long yb = y + dy;
+                    if (xb < 2 || yb < 2 || xb >= n - 2 || yb >= n - 2) {
+                        continue;
+                    }
+                    all++;
+                    float da = a.depths()[layer * n * n + y * n + x];
+                    float db = b.depths()[(int) (layer * n * n + yb * n + xb)];
+                    // the depth of one world point may differ by the box's depth snap: far below a millimetre
+                    if (!whole || Math.abs(da - db) * a.boxes().get(layer).depthRange() > 1e-3) {
+                        differ++;
+                    }
+                }
+            }
+        }
+        return (double) differ / all;
+    }
+
+    static double changeUnderSmallMove(String... settings) {
+        ShadowSystem shadow = new ShadowSystem();
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings(settings), new CullingSystem(),
+                new TerrainSystem(), shadow)) {
+            engine.world().setResource(EAST_SUN);
+            CameraPose low = new CameraPose(-60, 40, 150, 0, -20, 60);
+            Maps before = maps(engine, shadow, low);
+            // sideways (east) by a third of the finest map's texel
+            double step = before.boxes().get(0).texelSize() / 3;
+            Maps after = maps(engine, shadow, new CameraPose(low.x() + step, low.y(), low.z(), low.yaw(),
+                    low.pitch(), low.fov()));
+            return changed(before, after);
+        }
+    }
+
+    @Test
+    void aSubTexelSidewaysMoveLeavesSnappedCascadesUnchangedButMovesThePapersMap() {
+        double snapped = changeUnderSmallMove("shadow.cascades=2", "shadow.resolution=256");
+        double paper = changeUnderSmallMove("shadow.method=PAPER", "shadow.resolution=256");
+        assertTrue(snapped < 0.001, "snapped cascades changed at " + snapped + " of their texels");
+        assertTrue(paper > 0.05, "the paper's map, refitted, changed at only " + paper + " of its texels");
+    }
+
+    @Test
+    void changingTheResolutionOrCascadeCountRebuildsTheMapsOnce() {
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings("shadow.cascades=3"),
+                new CullingSystem(), new TerrainSystem(), new ShadowSystem())) {
+            engine.world().setResource(EAST_SUN);
+            engine.update();
+            engine.render();
+            SunShadow first = engine.world().resource(SunShadow.class);
+            assertEquals(3, first.map().layers());
+            int textures = GL.context().objects().live(GlObjects.Kind.TEXTURE);
+            int framebuffers = GL.context().objects().live(GlObjects.Kind.FRAMEBUFFER);
+            engine.settings().set("shadow.resolution", "128");
+            engine.settings().set("shadow.cascades", "2");
+            engine.render();
+            SunShadow second = engine.world().resource(SunShadow.class);
+            assertEquals(128, second.map().size());
+            assertEquals(2, second.map().layers());
+            assertEquals(textures, GL.context().objects().live(GlObjects.Kind.TEXTURE), "one map for another");
+            assertEquals(framebuffers - 1, GL.context().objects().live(GlObjects.Kind.FRAMEBUFFER),
+                    "one layer's framebuffer fewer");
+            engine.render();
+            assertTrue(second == engine.world().resource(SunShadow.class), "not rebuilt again");
+        }
+    }
+
+    @Test
+    void withTheSunDownNothingIsShadowed() {
+        Sun down = new Sun(new Vector3f(0.9f, -0.1f, 0), new Vector3f(1), new Vector3f(0.25f));
+        Image night = render(settings(), engine -> engine.world().setResource(down));
+        Image off = render(settings(), engine -> {
+            engine.world().setResource(down);
+            engine.setEnabled("shadow", false);
+        });
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                assertEquals(off.luma(x, y), night.luma(x, y), 1e-9, "no map, no shadow: (" + x + ", " + y + ")");
+            }
+        }
+    }
+}
