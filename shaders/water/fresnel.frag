@@ -13,6 +13,7 @@
 #include "common/color.glsl"
 #include "common/fog.glsl"
 #include "common/environment.glsl"
+#include "common/shadow.glsl"
 #include "water/surface.glsl"
 
 in vec2 ndc;
@@ -81,9 +82,10 @@ vec3 picture(sampler2D image, vec2 uv) {
     return srgbToLinear(texture(image, uv).rgb);
 }
 
-// The sun and sky light entering the water, dimmed on its way down to `depth` metres (scene units).
-vec3 lightAtDepth(float depth) {
-    vec3 entering = frame.sunColor.rgb * max(sunDir().y, 0.0) + frame.ambientColor.rgb;
+// The sun and sky light entering the water, dimmed on its way down to `depth` metres (scene units); `sunSeen` is
+// how much of the sun reaches the surface there (0 in a shadow).
+vec3 lightAtDepth(float depth, float sunSeen) {
+    vec3 entering = frame.sunColor.rgb * max(sunDir().y, 0.0) * sunSeen + frame.ambientColor.rgb;
     return entering * exp(-uExtinction * max(depth, 0.0));
 }
 
@@ -108,6 +110,7 @@ vec3 aboveWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     vec3 toEye = -dir;
     float f = fresnel(dot(n, toEye), false);
     vec4 air = airTo(p);
+    float sunSeen = sunVisibility(p, vec3(0.0, 1.0, 0.0)); // a mountain's shadow on the water takes the sun's share
     // 1. the reflection: the mirrored scene where the ripple-bent ray points, else the sky's cube map
     vec3 r = reflect(dir, n);
     r.y = max(r.y, 1e-3);
@@ -132,15 +135,16 @@ vec3 aboveWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     bottom = scenePoint(uvT, depthT);
     float through = distance(eye, bottom) - t + (uLevel - bottom.y);
     vec3 transmittance = depthT >= 1.0 ? vec3(0.0) : exp(-uExtinction * through);
-    vec3 body = toneMapped(lightAtDepth(0.0) * uBody * air.a + air.rgb);
+    vec3 body = toneMapped(lightAtDepth(0.0, sunSeen) * uBody * air.a + air.rgb);
     vec3 seen = transmittance * picture(refraction, uvT) + (1.0 - transmittance) * body;
     // 3. the mix, and the sun
-    return f * reflected + (1.0 - f) * seen + toneMapped(glitter(n, toEye) * air.a);
+    return f * reflected + (1.0 - f) * seen + toneMapped(glitter(n, toEye) * sunSeen * air.a);
 }
 
 vec3 underWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     float depth = uLevel - eye.y;
-    vec3 body = toneMapped(lightAtDepth(depth) * uInside);
+    vec3 body = toneMapped(lightAtDepth(depth, sunVisibility(vec3(eye.x, uLevel, eye.z), vec3(0.0, 1.0, 0.0)))
+                           * uInside);
     float sceneDistance = sceneDepth >= 1.0 ? 1e9 : distance(eye, scenePoint(uv, sceneDepth));
     vec3 seen;
     float path;

@@ -30,6 +30,7 @@ import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.GlObjects;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.water.WaterSystem;
 
 /**
  * The sun's shadows on real GL, over an imported world built for the purpose: flat ground at −20 m and a wall 100 m
@@ -124,6 +125,25 @@ class ShadowRenderTest {
         Image none = unshadowed();
         assertEquals(groundLuma(none, -130, -40), groundLuma(none, -240, -190), 0.15 * litWest,
                 "without the shadow system the same ground is lit alike");
+    }
+
+    @Test
+    void theWaterReceivesTheShadowToo() {
+        // the sea at 0 m over the ground at -20 m: 20 m of water, through which the shadowed bed hardly shows
+        List<String> withWater = settings("water.level=0", "water.clarity=4");
+        Image image;
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, withWater, new CullingSystem(),
+                new TerrainSystem(), new ShadowSystem(), new WaterSystem())) {
+            engine.world().setResource(EAST_SUN);
+            engine.world().resource(Camera.class).setPose(ABOVE);
+            engine.update();
+            engine.render();
+            image = engine.readImage();
+        }
+        // the wall stands 80 m out of the water: its shadow on the surface reaches 114 m west, to x = -130 m
+        double shadowed = groundLuma(image, -110, -40);
+        double lit = groundLuma(image, -240, -190);
+        assertTrue(shadowed < 0.8 * lit, "water in the wall's shadow " + shadowed + ", in the sun " + lit);
     }
 
     /** Pixels, along the row through z = 0, over which the luma climbs from 20 % to 80 % of the way out of shadow. */
