@@ -14,6 +14,7 @@ import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
+import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
@@ -60,11 +61,12 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
     private GpuBuffer block;
     private final ByteBuffer blockData = MemoryUtil.memCalloc(SunShadow.BLOCK_SIZE);
     private List<LightBox> boxes = List.of();
+    private ShadowProbe probe;
 
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("shadow").reads(Settings.class, Camera.class, Sun.class, Cullable.class)
-                .writes(SunShadow.class);
+                .writes(SunShadow.class).draws(Pass.OVERLAY);
     }
 
     @Override
@@ -82,6 +84,7 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         gl = context.gl();
         block = new GpuBuffer(gl, GL_UNIFORM_BUFFER);
         block.allocate(SunShadow.BLOCK_SIZE, GL_DYNAMIC_DRAW);
+        probe = new ShadowProbe(gl, context.shaders());
         fitMaps(context.settings().get(ShadowSettings.class), context.world());
     }
 
@@ -108,7 +111,7 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
             return List.of();
         }
         ViewCamera eye = viewer.camera();
-        double reach = casterHeightSpan(world) / Math.max(toSun.y(), MIN_SUN_SINE);
+        double reach = CasterHeights.of(world).span() / Math.max(toSun.y(), MIN_SUN_SINE);
         double[] splits = s.method() == Method.PAPER ? new double[] {eye.near(), s.distance()}
                 : CascadeSplits.distances(eye.near(), s.distance(), s.cascades(), s.splitBlend());
         List<LightBox> fitted = new ArrayList<>();
@@ -126,17 +129,6 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         boxes = List.copyOf(fitted);
         writeBlock(s, eye.position());
         return views;
-    }
-
-    /** Metres from the lowest to the highest point of everything the culling system knows (the casters). */
-    private static double casterHeightSpan(World world) {
-        double[] span = {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        world.each(Cullable.class, (entity, cullable) -> {
-            float[] root = cullable.tree().boxes();
-            span[0] = Math.min(span[0], root[1]);
-            span[1] = Math.max(span[1], root[4]);
-        });
-        return span[1] > span[0] ? span[1] - span[0] : 0;
     }
 
     /** The std140 {@code ShadowBlock} of {@code shaders/common/shadow.glsl}. */
@@ -170,6 +162,14 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         return boxes;
     }
 
+    /** With {@code shadow.measure} on: the flicker and acne of the finished picture, into the counters. */
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        if (context.world().resource(Settings.class).get(ShadowSettings.class).measure()) {
+            probe.measure(context);
+        }
+    }
+
     private void closeMaps() {
         layers.forEach(Framebuffer::close);
         layers.clear();
@@ -181,6 +181,9 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
 
     @Override
     public void close() {
+        if (probe != null) {
+            probe.close();
+        }
         closeMaps();
         if (block != null) {
             block.close();

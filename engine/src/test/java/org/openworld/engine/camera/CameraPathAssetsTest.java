@@ -27,6 +27,21 @@ class CameraPathAssetsTest {
     }
 
     @Test
+    void driftIsSlowEnoughForFlickerMeasures() throws CameraPathFormatException {
+        CameraPath drift = CameraPathParser.parseResource("assets/paths/drift.path");
+        double step = 1.0 / 60; // bench: one fixed step per frame
+        CameraPose previous = drift.sample(0, HeightField.FLAT);
+        for (double t = step; t <= drift.duration(); t += step) {
+            CameraPose pose = drift.sample(t, HeightField.FLAT);
+            double moved = Math.hypot(Math.hypot(pose.x() - previous.x(), pose.y() - previous.y()),
+                    pose.z() - previous.z());
+            assertTrue(moved < 0.1, "moved " + moved + " m in one frame at t=" + t);
+            assertTrue(Math.abs(pose.yaw() - previous.yaw()) < 0.05, "turned too fast at t=" + t);
+            previous = pose;
+        }
+    }
+
+    @Test
     void walkStaysAtEyeHeightAtWalkingPace() throws CameraPathFormatException {
         CameraPath walk = CameraPathParser.parseResource("assets/paths/walk.path");
         assertEquals(HeightReference.GROUND, walk.heights());

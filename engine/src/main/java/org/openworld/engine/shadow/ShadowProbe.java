@@ -1,0 +1,146 @@
+package org.openworld.engine.shadow;
+
+import static org.lwjgl.opengl.GL11C.*;
+import static org.lwjgl.opengl.GL30C.*;
+
+import java.nio.FloatBuffer;
+import org.joml.Vector3fc;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.ShaderLibrary;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Texture2D;
+
+/**
+ * Measures the sun's shadows in the finished picture ({@code shadow.measure}): per pixel, the visibility every lit
+ * shader sees and the world point it is seen at, read back and judged by {@link ShadowStatistics} into the counters
+ * {@code shadow.flicker}, {@code shadow.flicker-pixels}, {@code shadow.acne} and {@code shadow.acne-pixels}.
+ *
+ * <p>Called once per frame in the OVERLAY pass, when the scene target holds the picture and its depth. The read-back
+ * stalls the GPU and the acne's ray marches cost milliseconds: a tool for quality runs, not for timings.
+ *
+ * <p>Limits: the world point is rebuilt from the 24-bit depth, whose rounding grows with the square of the distance
+ * (6 cm at 1 km, 1.5 m at 5 km with the camera's 0.5 m near plane); the statistics' tolerances grow with distance
+ * for that reason. Pixels on a silhouette take a normal from two surfaces. With no {@link HeightField} in the world
+ * the ground is taken as flat at sea level.
+ */
+final class ShadowProbe implements AutoCloseable {
+
+    /** Four floats per texel, read back exactly: the visibility and a world point in metres. */
+    private static final Texture2D.Format RGBA32F = new Texture2D.Format(GL_RGBA32F, GL_RGBA, GL_FLOAT);
+    /** The texture unit of the copied depth. */
+    private static final int UNIT_DEPTH = 0;
+
+    private final GlContext gl;
+    private final Mesh fullScreen;
+    private final ShaderProgram program;
+    private final ShadowStatistics statistics = new ShadowStatistics();
+    /** The scene's depth, copied: the scene's own is attached to the framebuffer bound in OVERLAY. */
+    private Framebuffer depthCopy;
+    /** The probe's output, one RGBA32F texel per pixel of the picture. */
+    private Framebuffer probed;
+    private FloatBuffer readBack;
+    private float[] pixels;
+
+    ShadowProbe(GlContext gl, ShaderLibrary shaders) {
+        this.gl = gl;
+        fullScreen = Mesh.fullScreenTriangle(gl);
+        program = shaders.program("shadow/probe.vert", "shadow/probe.frag");
+        program.sampler("sceneDepth", UNIT_DEPTH);
+    }
+
+    /** Measures this frame's picture into the world's {@link Counters}; leaves the scene target bound. */
+    void measure(RenderContext context) {
+        Framebuffer scene = context.target();
+        fit(scene.width(), scene.height());
+        // 1. the scene's depth into our own texture (nearest: depth is not to be blended)
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, depthCopy.id());
+        glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, scene.width(), scene.height(),
+                GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        // 2. per pixel: visibility and world point (probe.frag), every pixel written
+        probed.bind();
+        glDisable(GL_DEPTH_TEST);
+        program.use();
+        depthCopy.depth().bind(UNIT_DEPTH);
+        fullScreen.draw(context.stats());
+        // 3. read back, bottom row first
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, probed.id());
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glReadPixels(0, 0, probed.width(), probed.height(), GL_RGBA, GL_FLOAT, readBack);
+        readBack.get(0, pixels);
+        // 4. judged against the previous frame and the height field, into the counters
+        count(context);
+        // 5. the scene target again, with the state the engine expects after any system
+        scene.bind();
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(true);
+        glUseProgram(0);
+    }
+
+    private void count(RenderContext context) {
+        World world = context.world();
+        Counters counters = world.resource(Counters.class);
+        Vector3fc eye = context.camera().position();
+        Vector3fc toSun = world.findResource(Sun.class).orElse(Sun.NOON).direction();
+        HeightField ground = world.findResource(HeightField.class).orElse(HeightField.FLAT);
+        ShadowStatistics.Measures measures = statistics.measure(pixels, probed.width(), eye, toSun, ground,
+                highestCaster(CasterHeights.of(world)));
+        measures.flicker().ifPresent(flicker -> {
+            counters.put("shadow.flicker", flicker.mean());
+            counters.put("shadow.flicker-pixels", flicker.pixels());
+        });
+        counters.put("shadow.acne", measures.acne().fraction());
+        counters.put("shadow.acne-pixels", measures.acne().pixels());
+    }
+
+    /**
+     * The highest point of everything the culling system knows (the tops of the bounds trees), metres; above it the
+     * sun's ray is free. Unbounded when nothing is known: the march then runs its whole reach.
+     */
+    private static double highestCaster(CasterHeights casters) {
+        return casters.high() > Double.NEGATIVE_INFINITY ? casters.high() : Double.POSITIVE_INFINITY;
+    }
+
+    /** (Re)makes the targets and the read-back buffer when the picture's size changed: not every frame. */
+    private void fit(int width, int height) {
+        if (probed != null && probed.width() == width && probed.height() == height) {
+            return;
+        }
+        closeTargets();
+        depthCopy = new Framebuffer(gl, width, height, null, Texture2D.Format.DEPTH24_STENCIL8,
+                Texture2D.Sampling.NEAREST_CLAMP);
+        probed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
+        readBack = MemoryUtil.memAllocFloat(width * height * ShadowStatistics.CHANNELS);
+        pixels = new float[width * height * ShadowStatistics.CHANNELS];
+    }
+
+    private void closeTargets() {
+        if (probed != null) {
+            probed.close();
+            probed = null;
+        }
+        if (depthCopy != null) {
+            depthCopy.close();
+            depthCopy = null;
+        }
+        if (readBack != null) {
+            MemoryUtil.memFree(readBack);
+            readBack = null;
+        }
+    }
+
+    @Override
+    public void close() {
+        closeTargets();
+        program.close();
+        fullScreen.close();
+    }
+}
