@@ -17,6 +17,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Uniform;
 
 /**
  * Measures the sun's shadows in the finished picture ({@code shadow.measure}): per pixel, the visibility every lit
@@ -35,25 +36,34 @@ final class ShadowProbe implements AutoCloseable {
 
     /** Four floats per texel, read back exactly: the visibility and a world point in metres. */
     private static final Texture2D.Format RGBA32F = new Texture2D.Format(GL_RGBA32F, GL_RGBA, GL_FLOAT);
-    /** The texture unit of the copied depth. */
+    /** Texture units: the copied depth, the previous frame's points. */
     private static final int UNIT_DEPTH = 0;
+    private static final int UNIT_POINTS = 1;
 
     private final GlContext gl;
     private final Mesh fullScreen;
     private final ShaderProgram program;
+    private final Uniform.Int revisit;
     private final ShadowStatistics statistics = new ShadowStatistics();
     /** The scene's depth, copied: the scene's own is attached to the framebuffer bound in OVERLAY. */
     private Framebuffer depthCopy;
-    /** The probe's output, one RGBA32F texel per pixel of the picture. */
+    /** The probe's output, one RGBA32F texel per pixel of the picture: this frame's, and the last frame's. */
     private Framebuffer probed;
+    private Framebuffer lastProbed;
+    /** This frame's visibility at the last frame's points. */
+    private Framebuffer revisited;
+    private boolean haveLast;
     private FloatBuffer readBack;
     private float[] pixels;
+    private float[] revisitedPixels;
 
     ShadowProbe(GlContext gl, ShaderLibrary shaders) {
         this.gl = gl;
         fullScreen = Mesh.fullScreenTriangle(gl);
         program = shaders.program("shadow/probe.vert", "shadow/probe.frag");
         program.sampler("sceneDepth", UNIT_DEPTH);
+        program.sampler("points", UNIT_POINTS);
+        revisit = program.int1("revisit");
     }
 
     /** Measures this frame's picture into the world's {@link Counters}; leaves the scene target bound. */
@@ -65,19 +75,22 @@ final class ShadowProbe implements AutoCloseable {
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, depthCopy.id());
         glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, scene.width(), scene.height(),
                 GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-        // 2. per pixel: visibility and world point (probe.frag), every pixel written
-        probed.bind();
+        // 2. per pixel: visibility and world point (probe.frag), every pixel written, read back bottom row first
         glDisable(GL_DEPTH_TEST);
         program.use();
         depthCopy.depth().bind(UNIT_DEPTH);
-        fullScreen.draw(context.stats());
-        // 3. read back, bottom row first
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, probed.id());
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glReadPixels(0, 0, probed.width(), probed.height(), GL_RGBA, GL_FLOAT, readBack);
-        readBack.get(0, pixels);
-        // 4. judged against the previous frame and the height field, into the counters
-        count(context);
+        draw(probed, false, context, pixels);
+        // 3. the last frame's points under this frame's maps: what changed there is the maps' flicker
+        if (haveLast) {
+            lastProbed.color().bind(UNIT_POINTS);
+            draw(revisited, true, context, revisitedPixels);
+        }
+        // 4. judged against the last frame and the height field, into the counters
+        count(context, haveLast ? revisitedPixels : null);
+        Framebuffer swap = lastProbed;
+        lastProbed = probed;
+        probed = swap;
+        haveLast = true;
         // 5. the scene target again, with the state the engine expects after any system
         scene.bind();
         glDisable(GL_DEPTH_TEST);
@@ -85,14 +98,24 @@ final class ShadowProbe implements AutoCloseable {
         glUseProgram(0);
     }
 
-    private void count(RenderContext context) {
+    private void draw(Framebuffer target, boolean revisiting, RenderContext context, float[] out) {
+        target.bind();
+        revisit.set(revisiting ? 1 : 0);
+        fullScreen.draw(context.stats());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target.id());
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+        glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_FLOAT, readBack);
+        readBack.get(0, out);
+    }
+
+    private void count(RenderContext context, float[] lastPointsNow) {
         World world = context.world();
         Counters counters = world.resource(Counters.class);
         Vector3fc eye = context.camera().position();
         Vector3fc toSun = world.findResource(Sun.class).orElse(Sun.NOON).direction();
         HeightField ground = world.findResource(HeightField.class).orElse(HeightField.FLAT);
-        ShadowStatistics.Measures measures = statistics.measure(pixels, probed.width(), eye, toSun, ground,
-                highestCaster(CasterHeights.of(world)));
+        ShadowStatistics.Measures measures = statistics.measure(pixels, lastPointsNow, probed.width(), eye, toSun,
+                ground, highestCaster(CasterHeights.of(world)));
         measures.flicker().ifPresent(flicker -> {
             counters.put("shadow.flicker", flicker.mean());
             counters.put("shadow.flicker-pixels", flicker.pixels());
@@ -118,15 +141,23 @@ final class ShadowProbe implements AutoCloseable {
         depthCopy = new Framebuffer(gl, width, height, null, Texture2D.Format.DEPTH24_STENCIL8,
                 Texture2D.Sampling.NEAREST_CLAMP);
         probed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
+        lastProbed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
+        revisited = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
+        haveLast = false;
         readBack = MemoryUtil.memAllocFloat(width * height * ShadowStatistics.CHANNELS);
         pixels = new float[width * height * ShadowStatistics.CHANNELS];
+        revisitedPixels = new float[pixels.length];
     }
 
     private void closeTargets() {
-        if (probed != null) {
-            probed.close();
-            probed = null;
+        for (Framebuffer target : new Framebuffer[] {probed, lastProbed, revisited}) {
+            if (target != null) {
+                target.close();
+            }
         }
+        probed = null;
+        lastProbed = null;
+        revisited = null;
         if (depthCopy != null) {
             depthCopy.close();
             depthCopy = null;

@@ -87,15 +87,19 @@ final class ShadowStatistics {
      * Measures one frame against the one before, then keeps a copy of it for the next.
      *
      * @param now       this frame's buffer (see the class documentation)
+     * @param lastPointsNow the last frame's world points with this frame's visibility there (the probe asks this
+     *                  frame's maps about them), or null on a first frame: compared with the last frame's buffer,
+     *                  the change is the maps' alone, none of it the camera's motion
      * @param width     pixels per row
      * @param eye       the viewer's eye, world space
      * @param toSun     unit vector towards the sun
      * @param ground    the ground's height field
      * @param maxHeight metres: no ground is higher, so the sun's ray is free once above it
      */
-    Measures measure(float[] now, int width, Vector3fc eye, Vector3fc toSun, HeightField ground, double maxHeight) {
-        Optional<Flicker> flicker = previous != null && previous.length == now.length && previousWidth == width
-                ? Optional.of(flicker(now, previous, eye)) : Optional.empty();
+    Measures measure(float[] now, float[] lastPointsNow, int width, Vector3fc eye, Vector3fc toSun,
+                     HeightField ground, double maxHeight) {
+        Optional<Flicker> flicker = lastPointsNow != null && previous != null && previous.length == now.length
+                && previousWidth == width ? Optional.of(flicker(lastPointsNow, previous, eye)) : Optional.empty();
         Acne acne = acne(now, width, eye, toSun, ground, maxHeight);
         if (previous == null || previous.length != now.length) {
             previous = new float[now.length];

@@ -6,6 +6,7 @@ import static org.lwjgl.opengl.GL31C.GL_UNIFORM_BUFFER;
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
+import org.joml.Matrix4f;
 import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.camera.Camera;
@@ -45,6 +46,8 @@ import org.openworld.engine.shadow.ShadowSettings.Method;
  */
 public final class ShadowSystem implements EngineSystem, PassOwner {
 
+    /** The most cascades: the length of the block's matrix array ({@code ShadowSettings.cascades}' maximum). */
+    static final int MAX_CASCADES = 4;
     /** Fraction of a cascade's side, at its border, over which the next cascade is blended in. */
     static final float BLEND_BAND = 0.1f;
     /** Fraction of the shadow distance, at its end, over which shadows fade out. */
@@ -131,24 +134,27 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         return views;
     }
 
-    /** The std140 {@code ShadowBlock} of {@code shaders/common/shadow.glsl}. */
+    /**
+     * The std140 {@code ShadowBlock} of {@code shaders/common/shadow.glsl}, member by member. The paper's method has
+     * the margin alone (no slope or normal bias) and no fade: its map simply ends at the shadow distance.
+     */
     private void writeBlock(ShadowSettings s, Vector3fc viewer) {
         int n = boxes.size();
         boolean paper = s.method() == Method.PAPER;
-        for (int i = 0; i < 4; i++) {
-            (i < n ? boxes.get(i).viewProjection() : new org.joml.Matrix4f()).get(i * 64, blockData);
+        for (int i = 0; i < MAX_CASCADES; i++) {                    // lightViewProjection[4]
+            (i < n ? boxes.get(i).viewProjection() : new Matrix4f()).get(i * 64, blockData);
         }
-        int o = 4 * 64;
-        for (int i = 0; i < 4; i++) {
-            blockData.putFloat(o + 4 * i, i < n ? boxes.get(i).texelSize() : 0);
-            blockData.putFloat(o + 16 + 4 * i, i < n ? boxes.get(i).depthRange() : 1);
+        int o = MAX_CASCADES * 64;
+        for (int i = 0; i < MAX_CASCADES; i++) {
+            blockData.putFloat(o + 4 * i, i < n ? boxes.get(i).texelSize() : 0);          // cascadeTexel
+            blockData.putFloat(o + 16 + 4 * i, i < n ? boxes.get(i).depthRange() : 1);    // cascadeDepth
         }
         o += 32;
-        o = vec4(o, n, s.kernel(), (float) s.margin(), BLEND_BAND);
+        o = vec4(o, n, s.kernel(), (float) s.margin(), BLEND_BAND);                    // shadowParams
         float far = (float) s.distance();
         o = vec4(o, paper ? 0 : (float) s.normalOffset(), paper ? 0 : (float) s.slopeBias(),
-                paper ? far : far * (1 - FADE), paper ? 0 : far);
-        vec4(o, viewer.x(), viewer.y(), viewer.z(), 0);
+                far * (1 - FADE), paper ? 0 : far);                                     // biasParams
+        vec4(o, viewer.x(), viewer.y(), viewer.z(), 0);                                  // viewerPos
         block.update(blockData);
     }
 

@@ -173,22 +173,27 @@ class ShadowStatisticsTest {
     }
 
     @Test
-    void theFirstFrameHasNoFlickerAndTheSecondComparesWithIt() {
+    void theFirstFrameHasNoFlickerAndTheNextComparesTheLastPointsRevisited() {
         ShadowStatistics statistics = new ShadowStatistics();
         float[] frame = plain(0, (x, y) -> 1);
-        ShadowStatistics.Measures first = statistics.measure(frame, W, EYE, TO_NORTH_SUN, HeightField.FLAT,
+        ShadowStatistics.Measures first = statistics.measure(frame, null, W, EYE, TO_NORTH_SUN, HeightField.FLAT,
                 MAX_HEIGHT);
         assertTrue(first.flicker().isEmpty());
         assertEquals(TESTED, first.acne().pixels());
         // the statistics keep a copy: changing the caller's buffer afterwards changes nothing remembered
         Arrays.fill(frame, 0f);
-        float[] second = plain(0, (x, y) -> 0.5f);
-        ShadowStatistics.Flicker flicker = statistics.measure(second, W, EYE, TO_NORTH_SUN, HeightField.FLAT,
-                MAX_HEIGHT).flicker().orElseThrow();
+        // this frame shows other visibilities (0.25, its own points), but the last frame's points now read 0.5:
+        // the flicker is the change at the same points, 1 - 0.5
+        float[] second = plain(0, (x, y) -> 0.25f);
+        float[] lastPointsNow = plain(0, (x, y) -> 0.5f);
+        ShadowStatistics.Flicker flicker = statistics.measure(second, lastPointsNow, W, EYE, TO_NORTH_SUN,
+                HeightField.FLAT, MAX_HEIGHT).flicker().orElseThrow();
         assertEquals(0.5, flicker.mean(), 1e-6);
-        // a picture of another size starts over
-        float[] wider = new float[2 * second.length];
-        assertTrue(statistics.measure(wider, 2 * W, EYE, TO_NORTH_SUN, HeightField.FLAT, MAX_HEIGHT).flicker()
+        // without the revisited points, or for a picture of another size, there is no flicker to give
+        assertTrue(statistics.measure(second, null, W, EYE, TO_NORTH_SUN, HeightField.FLAT, MAX_HEIGHT).flicker()
                 .isEmpty());
+        float[] wider = new float[2 * second.length];
+        assertTrue(statistics.measure(wider, wider, 2 * W, EYE, TO_NORTH_SUN, HeightField.FLAT, MAX_HEIGHT)
+                .flicker().isEmpty());
     }
 }
