@@ -266,7 +266,7 @@ public final class Engine implements AutoCloseable {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
                 frameUniforms.write(frameValues(view));
-                bindShared(pass, shadowDrawn);
+                bindShared(shadowDrawn);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 view.target().bind();
                 glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
@@ -356,7 +356,7 @@ public final class Engine implements AutoCloseable {
      * shadow once this frame's maps are drawn, else none (no system casts shadows, it is switched off or the sun is
      * down; and a map being drawn must not be bound for reading).
      */
-    private void bindShared(Pass pass, boolean shadowDrawn) {
+    private void bindShared(boolean shadowDrawn) {
         SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
         maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
         maps.environment().bind(SharedTexture.ENVIRONMENT.unit());

@@ -13,10 +13,9 @@ import org.openworld.engine.core.HeightField;
  * ({@code sunVisibility}, 1 lit, 0 shadowed) at the pixel's world point, in metres; a pixel showing the sky holds
  * {@link #SKY} as its visibility. Any pixel order, as long as rows are {@code width} pixels long.
  * <ul>
- *   <li><b>Flicker</b>: the mean absolute change of the visibility from one frame to the next, over the pixels whose
- *       world point stayed put ({@link #flicker}). A still camera over a still world should give 0; a moving
- *       camera gives what the shadow maps' refitting changes on surfaces that did not move, which is the flicker
- *       the eye sees.</li>
+ *   <li><b>Flicker</b>: the mean absolute change of the visibility from one frame to the next, at the same world
+ *       points ({@link #flicker}): the probe asks this frame's maps about the last frame's points, so the camera's
+ *       motion is taken out, and what a moving camera leaves is the maps' refitting, the flicker the eye sees.</li>
  *   <li><b>Acne</b>: among ground points that the sun truly reaches, found by marching a ray through the height
  *       field towards the sun, the fraction that the maps shadow anyway ({@link #acne}): a surface shadowing
  *       itself, the artefact too small a margin or bias gives.</li>
@@ -28,17 +27,6 @@ final class ShadowStatistics {
     static final float SKY = -1;
     /** Floats per pixel: visibility, x, y, z. */
     static final int CHANNELS = 4;
-
-    /**
-     * A pixel's world point counts as still when it moved less than this, metres, plus {@link #STILL_PER_METRE}:
-     * 5 cm, well above the depth buffer's rounding near the eye, well below the smallest shadow-map texel.
-     */
-    static final double STILL_METRES = 0.05;
-    /**
-     * ... plus this many metres per metre of distance from the eye: the depth buffer's rounding grows with
-     * distance, and a far pixel covers metres of ground (2 m at 1 km), across which a point slides as the view turns.
-     */
-    static final double STILL_PER_METRE = 0.002;
 
     /** Acne is tested at every 4th pixel in x and y: a sixteenth of the ray marches, still thousands of points. */
     static final int ACNE_STRIDE = 4;
@@ -99,7 +87,7 @@ final class ShadowStatistics {
     Measures measure(float[] now, float[] lastPointsNow, int width, Vector3fc eye, Vector3fc toSun,
                      HeightField ground, double maxHeight) {
         Optional<Flicker> flicker = lastPointsNow != null && previous != null && previous.length == now.length
-                && previousWidth == width ? Optional.of(flicker(lastPointsNow, previous, eye)) : Optional.empty();
+                && previousWidth == width ? Optional.of(flicker(lastPointsNow, previous)) : Optional.empty();
         Acne acne = acne(now, width, eye, toSun, ground, maxHeight);
         if (previous == null || previous.length != now.length) {
             previous = new float[now.length];
@@ -110,11 +98,11 @@ final class ShadowStatistics {
     }
 
     /**
-     * The mean absolute change of the visibility between two frames, over the pixels showing ground in both whose
-     * world point moved less than {@link #STILL_METRES} + {@link #STILL_PER_METRE} × its distance from the eye.
-     * A mean over no pixels is 0.
+     * The mean absolute change of the visibility at the same world points: {@code previous} is the last frame's
+     * buffer, {@code now} this frame's maps asked about its points. Over the pixels that show ground in both; a mean
+     * over no pixels is 0.
      */
-    static Flicker flicker(float[] now, float[] previous, Vector3fc eye) {
+    static Flicker flicker(float[] now, float[] previous) {
         if (now.length != previous.length) {
             throw new IllegalArgumentException("frames of " + now.length / CHANNELS + " and "
                     + previous.length / CHANNELS + " pixels");
@@ -125,12 +113,8 @@ final class ShadowStatistics {
             if (now[i] == SKY || previous[i] == SKY) {
                 continue;
             }
-            double moved = distance(now, i, previous[i + 1], previous[i + 2], previous[i + 3]);
-            double fromEye = distance(now, i, eye.x(), eye.y(), eye.z());
-            if (moved < STILL_METRES + STILL_PER_METRE * fromEye) {
-                sum += Math.abs(now[i] - previous[i]);
-                pixels++;
-            }
+            sum += Math.abs(now[i] - previous[i]);
+            pixels++;
         }
         return new Flicker(pixels == 0 ? 0 : sum / pixels, pixels);
     }
