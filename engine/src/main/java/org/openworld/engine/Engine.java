@@ -217,7 +217,13 @@ public final class Engine implements AutoCloseable {
         for (EngineSystem system : order.systems()) {
             if (isEnabled(system.spec().name())) {
                 long t0 = System.nanoTime();
-                system.update(world, step);
+                if (system.spec().isUpdatedOnGpu()) {
+                    timers.begin("update." + system.spec().name());
+                    system.update(world, step);
+                    timers.end();
+                } else {
+                    system.update(world, step);
+                }
                 systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
             }
         }

@@ -323,6 +323,25 @@ class EngineTest {
     }
 
     @Test
+    void anUpdateThatWorksOnTheGpuIsTimedAsItsOwnSpanSummedOverTheFramesSteps() {
+        Drawing simulated = new Drawing(SystemSpec.named("snow").updatesOnGpu().draws(Pass.MAIN), log, calls,
+                GlTestSupport::fullScreenTriangle, 1, 1, 1);
+        Drawing plain = new Drawing(SystemSpec.named("ground").draws(Pass.MAIN), log, calls,
+                GlTestSupport::fullScreenTriangle, 0, 1, 0);
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, simulated, plain)) {
+            engine.update();
+            engine.update();
+            engine.render();
+            List<Map<String, Double>> spans = new ArrayList<>();
+            engine.collectFrames(true, frame -> spans.add(frame.passGpuMs()));
+            assertEquals(1, spans.size());
+            assertTrue(spans.get(0).containsKey("update.snow"), spans.get(0).keySet().toString());
+            assertFalse(spans.get(0).containsKey("update.ground"), "a CPU-only update has no GPU span");
+            assertEquals(2, simulated.updates);
+        }
+    }
+
+    @Test
     void aPassHasAtMostOneOwnerAndTheViewersPassesNone() {
         Owner second = new Owner(SystemSpec.named("second-mirror").draws(Pass.REFLECTION), Pass.REFLECTION,
                 viewer -> viewer, log, calls, GlTestSupport::fullScreenTriangle, 1, 1, 1);

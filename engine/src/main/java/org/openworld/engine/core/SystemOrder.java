@@ -3,6 +3,7 @@ package org.openworld.engine.core;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Comparator;
+import java.util.EnumSet;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -18,7 +19,8 @@ import java.util.stream.Collectors;
  * <p>Edges, each "runs before":
  * <ul>
  *   <li>{@code after("x")}: x before the declaring system;</li>
- *   <li>data: a system that writes a type runs before every system that only reads it.</li>
+ *   <li>data: a system that writes a type runs before every system that only reads it;</li>
+ *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one.</li>
  * </ul>
  * Two systems that write the same type must be ordered by {@code after} (directly or through other
  * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
@@ -54,6 +56,19 @@ public final class SystemOrder {
             }
         }
         requireOrderedWriters(systems, graph);
+        for (EngineSystem blended : systems) {
+            SystemSpec t = blended.spec();
+            for (EngineSystem opaque : systems) {
+                SystemSpec o = opaque.spec();
+                Set<Pass> shared = EnumSet.noneOf(Pass.class);
+                shared.addAll(t.passes());
+                shared.retainAll(o.passes());
+                if (t.isTransparent() && !o.isTransparent() && !shared.isEmpty()) {
+                    graph.edge(o.name(), t.name(), t.name() + " is transparent, blended over what " + o.name()
+                            + " draws in " + shared.iterator().next().label());
+                }
+            }
+        }
         for (EngineSystem writer : systems) {
             for (Class<?> type : writer.spec().writes()) {
                 for (EngineSystem reader : systems) {

@@ -21,6 +21,8 @@ public final class SystemSpec {
     private final Set<String> after = new LinkedHashSet<>();
     private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
     private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
+    private boolean transparent;
+    private boolean updatesOnGpu;
 
     private SystemSpec(String name) {
         if (!name.matches("[a-z][a-z0-9-]*")) {
@@ -66,6 +68,24 @@ public final class SystemSpec {
         return this;
     }
 
+    /**
+     * Its drawing is blended over the finished opaque picture (particles): it follows every other system that draws in
+     * one of its passes, without naming them, so it stays last whichever systems a scene has.
+     */
+    public SystemSpec transparent() {
+        transparent = true;
+        return this;
+    }
+
+    /**
+     * Its update issues GPU work (a transform-feedback step): the engine times each update on the GPU as a span
+     * labelled {@code update.name}, beside the passes' spans.
+     */
+    public SystemSpec updatesOnGpu() {
+        updatesOnGpu = true;
+        return this;
+    }
+
     public String name() {
         return name;
     }
@@ -85,6 +105,14 @@ public final class SystemSpec {
     /** The passes this system draws in. */
     public Set<Pass> passes() {
         return passes;
+    }
+
+    public boolean isTransparent() {
+        return transparent;
+    }
+
+    public boolean isUpdatedOnGpu() {
+        return updatesOnGpu;
     }
 
     /** The passes this system prepares without drawing. */

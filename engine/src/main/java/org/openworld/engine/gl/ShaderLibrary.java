@@ -20,7 +20,22 @@ public final class ShaderLibrary {
 
     /** Compiles and links stage files, e.g. {@code program("sky/sky.vert", "sky/sky.frag")}. */
     public ShaderProgram program(String... stageFiles) {
-        ShaderProgram program = ShaderProgram.build(gl, sources, stageFiles, live::remove);
+        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), live::remove));
+    }
+
+    /**
+     * A vertex-only program for transform feedback: each vertex's {@code captured} outputs are written, interleaved
+     * in this order, into the buffer bound to {@code GL_TRANSFORM_FEEDBACK_BUFFER} index 0 (draw it with
+     * {@code GL_RASTERIZER_DISCARD} on: nothing is rasterised).
+     */
+    public ShaderProgram feedbackProgram(String vertexStage, String... captured) {
+        if (!vertexStage.endsWith(".vert") || captured.length == 0) {
+            throw new IllegalArgumentException("a feedback program is one .vert stage and at least one captured output");
+        }
+        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), live::remove));
+    }
+
+    private ShaderProgram track(ShaderProgram program) {
         live.add(program);
         return program;
     }

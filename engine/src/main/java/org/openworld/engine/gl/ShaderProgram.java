@@ -1,6 +1,8 @@
 package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL20C.*;
+import static org.lwjgl.opengl.GL30C.GL_INTERLEAVED_ATTRIBS;
+import static org.lwjgl.opengl.GL30C.glTransformFeedbackVaryings;
 import static org.lwjgl.opengl.GL31C.GL_INVALID_INDEX;
 import static org.lwjgl.opengl.GL31C.glGetUniformBlockIndex;
 import static org.lwjgl.opengl.GL31C.glUniformBlockBinding;
@@ -28,21 +30,29 @@ public final class ShaderProgram implements AutoCloseable {
     private final GlContext gl;
     private final ShaderSources sources;
     private final List<String> stages;
+    private final List<String> captured;
     private final List<Uniform> uniforms = new ArrayList<>();
     private final Consumer<ShaderProgram> onClose;
     private int id;
 
-    private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages, Consumer<ShaderProgram> onClose) {
+    private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages, List<String> captured,
+                          Consumer<ShaderProgram> onClose) {
         this.gl = gl;
         this.sources = sources;
         this.stages = List.copyOf(stages);
+        this.captured = List.copyOf(captured);
         this.onClose = onClose;
         this.id = link();
     }
 
-    /** Compiles and links stage files; systems get programs from {@link ShaderLibrary#program}. */
-    static ShaderProgram build(GlContext gl, ShaderSources sources, String[] stageFiles, Consumer<ShaderProgram> onClose) {
-        return new ShaderProgram(gl, sources, List.of(stageFiles), onClose);
+    /**
+     * Compiles and links stage files; systems get programs from {@link ShaderLibrary#program}.
+     *
+     * @param captured the outputs transform feedback records, interleaved in this order (empty: none)
+     */
+    static ShaderProgram build(GlContext gl, ShaderSources sources, List<String> stageFiles, List<String> captured,
+                               Consumer<ShaderProgram> onClose) {
+        return new ShaderProgram(gl, sources, stageFiles, captured, onClose);
     }
 
     public void use() {
@@ -135,6 +145,9 @@ public final class ShaderProgram implements AutoCloseable {
             int program = glCreateProgram();
             gl.objects().created(GlObjects.Kind.PROGRAM);
             shaders.forEach(s -> glAttachShader(program, s));
+            if (!captured.isEmpty()) {
+                glTransformFeedbackVaryings(program, captured.toArray(CharSequence[]::new), GL_INTERLEAVED_ATTRIBS);
+            }
             glLinkProgram(program);
             if (glGetProgrami(program, GL_LINK_STATUS) != GL_TRUE) {
                 String log = glGetProgramInfoLog(program);

@@ -1,6 +1,7 @@
 package org.openworld.engine.sky;
 
 import org.joml.Vector2d;
+import org.joml.Vector3f;
 import org.joml.Vector4f;
 import org.openworld.engine.settings.Setting;
 import org.openworld.engine.settings.SettingsGroup;
@@ -93,10 +94,15 @@ public record CloudSettings(
      * x and z), each axis wrapped into [0, tileSize) since the field repeats by the tile.
      */
     public Vector2d windOffset(double seconds, Vector2d dest) {
+        Vector3f velocity = windVelocity(new Vector3f());
+        return dest.set(wrap(velocity.x * seconds, tileSize), wrap(velocity.z * seconds, tileSize));
+    }
+
+    /** The wind as a world-space velocity, m/s: horizontal, {@code windSpeed} long, towards {@code windDirection}. */
+    public Vector3f windVelocity(Vector3f dest) {
         double yaw = Math.toRadians(windDirection);
         // yaw clockwise from north (−Z): east is +X, so the direction is (sin yaw, −cos yaw) in (x, z)
-        double distance = windSpeed * seconds;
-        return dest.set(wrap(distance * Math.sin(yaw), tileSize), wrap(-distance * Math.cos(yaw), tileSize));
+        return dest.set((float) (windSpeed * Math.sin(yaw)), 0, (float) (-windSpeed * Math.cos(yaw)));
     }
 
     /**

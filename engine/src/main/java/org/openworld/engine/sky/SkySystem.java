@@ -24,6 +24,7 @@ import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.environment.Wind;
 import org.openworld.engine.gl.CubeMapTexture;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
@@ -103,7 +104,7 @@ public final class SkySystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("sky").reads(TimeOfDay.class, Settings.class, Camera.class)
-                .writes(Sun.class, Exposure.class, SkyMaps.class).draws(Pass.REFLECTION, Pass.MAIN);
+                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -175,6 +176,7 @@ public final class SkySystem implements EngineSystem {
         SkyLight light = tables.light();
         world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient())));
         world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
+        world.setResource(new Wind(settings.get(CloudSettings.class).windVelocity(new Vector3f())));
     }
 
     /** New tables for a sun and an eye, reusing those of {@code current} (may be null) that the air shares. */

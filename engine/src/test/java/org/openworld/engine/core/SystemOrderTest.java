@@ -70,6 +70,27 @@ class SystemOrderTest {
     }
 
     @Test
+    void aTransparentSystemFollowsEveryOpaqueOneThatDrawsInItsPassesAndNoOther() {
+        // Alphabetically "flakes" would go before "sky" and "water"; it must follow every opaque drawer of MAIN.
+        List<Fake> systems = List.of(
+                system(SystemSpec.named("water").draws(Pass.MAIN)),
+                system(SystemSpec.named("flakes").transparent().draws(Pass.MAIN)),
+                system(SystemSpec.named("sky").draws(Pass.MAIN, Pass.REFLECTION)),
+                system(SystemSpec.named("zz-shadow").draws(Pass.SHADOW)),
+                system(SystemSpec.named("hud").draws(Pass.OVERLAY)));
+
+        SystemOrder order = SystemOrder.resolve(systems);
+
+        List<String> names = names(order);
+        assertTrue(names.indexOf("flakes") > names.indexOf("water") && names.indexOf("flakes") > names.indexOf("sky"),
+                names.toString());
+        assertTrue(names.indexOf("flakes") < names.indexOf("zz-shadow"), "no edge from a system of another pass: "
+                + names);
+        assertTrue(order.describe().contains("flakes is transparent, blended over what water draws in main"),
+                order.describe());
+    }
+
+    @Test
     void cycleThroughAfterNamesItsSystemsAndReasons() {
         List<Fake> systems = List.of(
                 system(SystemSpec.named("water").after("sky")),
