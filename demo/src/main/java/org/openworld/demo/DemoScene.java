@@ -5,9 +5,10 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.sky.SkySystem;
-import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.shadow.ShadowSystem;
+import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
@@ -31,6 +32,7 @@ final class DemoScene {
                 new CullingSystem(),
                 new TerrainSystem(line -> System.err.println(line)),
                 new ShadowSystem(),
-                new WaterSystem());
+                new WaterSystem(),
+                new ParticleSystem());
     }
 }

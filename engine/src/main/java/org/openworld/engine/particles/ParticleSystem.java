@@ -1,0 +1,296 @@
+package org.openworld.engine.particles;
+
+import static org.lwjgl.opengl.GL11C.*;
+import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
+import static org.lwjgl.opengl.GL15C.GL_DYNAMIC_COPY;
+import static org.lwjgl.opengl.GL15C.glBufferSubData;
+import static org.lwjgl.opengl.GL15C.glGetBufferSubData;
+import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
+import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
+import static org.lwjgl.opengl.GL30C.*;
+import static org.lwjgl.opengl.GL31C.glDrawArraysInstanced;
+import static org.lwjgl.opengl.GL33C.glVertexAttribDivisor;
+
+import java.nio.FloatBuffer;
+import java.util.List;
+import org.joml.Vector3f;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.Wind;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.gl.VertexArray;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * Snowfall (paper section 4, figure 14): flakes updated on the GPU by transform feedback and drawn as instanced
+ * billboards. See the package documentation for the technique.
+ *
+ * <p>Two buffers hold the flakes' state ({@link SnowMotion#FLOATS} floats each) and take turns: each update step
+ * reads one and writes the other. They are built, and the flakes spread through the air, when it first snows, and
+ * again only when {@code particles.count} changes. The ground under the cube is a {@link GroundPatch}, sampled again
+ * when the eye nears its edge. The flakes are drawn last in {@link Pass#MAIN}, blended over everything else.
+ */
+public final class ParticleSystem implements EngineSystem {
+
+    /** Samples a side of the ground patch: 0.6 m apart under the default 40 m cube (the patch spans two cubes). */
+    private static final int GROUND_SAMPLES = 128;
+    /** The smallest radius a flake is drawn with, pixels: smaller ones would flicker between pixels. */
+    private static final float MIN_RADIUS_PIXELS = 1;
+    /** A flake's albedo: fresh snow reflects 80–90% of visible light. */
+    private static final float ALBEDO = 0.85f;
+    /** Texture unit of the ground patch in the update program. */
+    private static final int UNIT_GROUND = 0;
+    /**
+     * An eye that moved more than this share of the cube's side between two steps jumped: 1/4 of the default 40 m
+     * in 1/60 s is 600 m/s, beyond any flight.
+     */
+    private static final double CUT = 0.25;
+    private static final int POSITION = 0;
+    private static final int VELOCITY = 1;
+
+    private GlContext gl;
+    private ShaderProgram updateProgram;
+    private ShaderProgram drawProgram;
+    private UpdateUniforms updateUniforms;
+    private Uniform.Vec4 flakeUniform;
+    /** The two state buffers and, for each, a vertex array to update from and one to draw from. */
+    private final GpuBuffer[] states = new GpuBuffer[2];
+    private final VertexArray[] updateFrom = new VertexArray[2];
+    private final VertexArray[] drawFrom = new VertexArray[2];
+    private int current;
+    private int count;
+    private int builds;
+    private long steps;
+    private GroundPatch ground;
+    /** The eye at the last step or frame, to tell a jump from a flight. */
+    private final Vector3f lastEye = new Vector3f(Float.NaN);
+    private Texture2D groundTexture;
+
+    private record UpdateUniforms(Uniform.Vec4 forces, Uniform.Vec3 wind, Uniform.Vec4 volume, Uniform.Int stepKey,
+                                  Uniform.Vec4 ground) {
+    }
+
+    @Override
+    public SystemSpec spec() {
+        return SystemSpec.named("particles").reads(Settings.class, Camera.class, HeightField.class, Wind.class)
+                .updatesOnGpu().transparent().draws(Pass.MAIN);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of(ParticleSettings.SETTINGS);
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        gl = context.gl();
+        updateProgram = context.shaders().feedbackProgram("particles/update.vert", "outPosition", "outVelocity");
+        updateProgram.sampler("ground", UNIT_GROUND);
+        updateUniforms = new UpdateUniforms(updateProgram.vec4("uForces"), updateProgram.vec3("uWind"),
+                updateProgram.vec4("uVolume"), updateProgram.int1("uStepKey"), updateProgram.vec4("uGround"));
+        drawProgram = context.shaders().program("particles/flake.vert", "particles/flake.frag");
+        flakeUniform = drawProgram.vec4("uFlake");
+        groundTexture = Texture2D.empty(gl, GROUND_SAMPLES, GROUND_SAMPLES, Texture2D.Format.R32F,
+                Texture2D.Sampling.NEAREST_CLAMP);
+    }
+
+    @Override
+    public void update(World world, double step) {
+        ParticleSettings s = world.resource(Settings.class).get(ParticleSettings.class);
+        if (!s.enabled()) {
+            return;
+        }
+        prepare(world, s);
+        Vector3f wind = windAtGround(world, s);
+        float dt = (float) step;
+        updateProgram.use();
+        updateUniforms.forces().set((float) s.gravity(), (float) s.drag(), (float) (s.brownian() * Math.sqrt(step)),
+                dt);
+        updateUniforms.wind().set(wind.x, wind.y, wind.z);
+        updateUniforms.volume().set(lastEye.x, lastEye.y, lastEye.z, (float) s.volume());
+        updateUniforms.stepKey().set(SnowMotion.stepKey(world.resource(Settings.class).get(EngineSettings.class).seed(),
+                steps));
+        updateUniforms.ground().set(ground.originX(), ground.originZ(), 1f / ground.spacing(), ground.samples());
+        groundTexture.bind(UNIT_GROUND);
+
+        updateFrom[current].bind();
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, states[1 - current].id());
+        glEnable(GL_RASTERIZER_DISCARD);
+        glBeginTransformFeedback(GL_POINTS);
+        glDrawArrays(GL_POINTS, 0, count);
+        glEndTransformFeedback();
+        glDisable(GL_RASTERIZER_DISCARD);
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+        current = 1 - current;
+        steps++;
+    }
+
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        World world = context.world();
+        ParticleSettings s = world.resource(Settings.class).get(ParticleSettings.class);
+        if (!s.enabled()) {
+            return;
+        }
+        prepare(world, s);
+        drawProgram.use();
+        flakeUniform.set((float) (0.5 * s.size()), MIN_RADIUS_PIXELS, (float) s.volume(), ALBEDO);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(false);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        drawFrom[current].bind();
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
+        context.stats().add(1, 2L * count);
+        glDisable(GL_BLEND);
+        glDepthMask(true);
+        world.resource(Counters.class).put("particles.count", count);
+    }
+
+    /**
+     * Makes the ground patch cover the cube, and the buffers hold {@code particles.count} flakes: built when it first
+     * snows and when the count changes, spread afresh around the eye also when the eye jumped (a cut in a path, a
+     * shot's pose), since the air it left has another ground and the flakes carry its shape.
+     */
+    private void prepare(World world, ParticleSettings s) {
+        CameraPose pose = world.resource(Camera.class).pose();
+        Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
+        HeightField field = world.findResource(HeightField.class).orElse(HeightField.FLAT);
+        if (ground == null || !ground.covers(field, eye.x, eye.z, 0.5 * s.volume())) {
+            ground = GroundPatch.sample(field, eye.x, eye.z, 2 * s.volume(), GROUND_SAMPLES);
+            FloatBuffer heights = MemoryUtil.memAllocFloat(ground.heights().length).put(ground.heights()).flip();
+            try {
+                groundTexture.upload(0, 0, GROUND_SAMPLES, heights);
+            } finally {
+                MemoryUtil.memFree(heights);
+            }
+        }
+        boolean jumped = lastEye.distance(eye) > CUT * s.volume();
+        lastEye.set(eye);
+        if (count == s.count() && !jumped) {
+            return;
+        }
+        SnowMotion.Volume volume = new SnowMotion.Volume(eye, (float) s.volume());
+        Vector3f steady = windAtGround(world, s).sub(0, (float) SnowMotion.terminalVelocity(s.gravity(), s.drag()), 0);
+        int seed = world.resource(Settings.class).get(EngineSettings.class).seed();
+        float[] state = SnowMotion.seed(s.count(), volume, ground, steady, seed);
+        if (count != s.count()) {
+            build(state);
+        } else {
+            FloatBuffer data = MemoryUtil.memAllocFloat(state.length).put(state).flip();
+            try {
+                states[current].bind();
+                glBufferSubData(GL_ARRAY_BUFFER, 0, data);
+            } finally {
+                MemoryUtil.memFree(data);
+            }
+        }
+    }
+
+    /** The wind where the snow falls: the clouds' wind ({@link Wind}) times {@code particles.wind-share}. */
+    private static Vector3f windAtGround(World world, ParticleSettings s) {
+        return new Vector3f(world.findResource(Wind.class).orElse(Wind.CALM).velocity()).mul((float) s.windShare());
+    }
+
+    /** New state buffers holding {@code state}, in place of the old ones. */
+    private void build(float[] state) {
+        closeBuffers();
+        count = state.length / SnowMotion.FLOATS;
+        FloatBuffer data = MemoryUtil.memAllocFloat(state.length).put(state).flip();
+        try {
+            for (int i = 0; i < 2; i++) {
+                states[i] = new GpuBuffer(gl, GL_ARRAY_BUFFER);
+                states[i].upload(data, GL_DYNAMIC_COPY);
+                updateFrom[i] = layout(states[i], 0);
+                drawFrom[i] = layout(states[i], 1);
+            }
+        } finally {
+            MemoryUtil.memFree(data);
+        }
+        current = 0;
+        builds++;
+    }
+
+    /** A vertex array reading flakes from {@code buffer}: one a vertex (divisor 0, the update) or an instance (1). */
+    private VertexArray layout(GpuBuffer buffer, int divisor) {
+        VertexArray vao = new VertexArray(gl);
+        vao.bind();
+        buffer.bind();
+        int stride = SnowMotion.FLOATS * Float.BYTES;
+        glEnableVertexAttribArray(POSITION);
+        glVertexAttribPointer(POSITION, 3, GL_FLOAT, false, stride, 0);
+        glVertexAttribDivisor(POSITION, divisor);
+        if (divisor == 0) {
+            glEnableVertexAttribArray(VELOCITY);
+            glVertexAttribPointer(VELOCITY, 3, GL_FLOAT, false, stride, 3L * Float.BYTES);
+        }
+        glBindVertexArray(0);
+        return vao;
+    }
+
+    /** The flakes' current state, read back from the GPU ({@link SnowMotion#FLOATS} floats each; tests and tools). */
+    public float[] readState() {
+        float[] state = new float[count * SnowMotion.FLOATS];
+        if (count > 0) {
+            states[current].bind();
+            glGetBufferSubData(GL_ARRAY_BUFFER, 0, state);
+        }
+        return state;
+    }
+
+    /** How often the state buffers were built: once when it first snowed, then once per change of the count. */
+    int builds() {
+        return builds;
+    }
+
+    /** The ground patch under the cube, null before it first snowed. */
+    GroundPatch ground() {
+        return ground;
+    }
+
+    private void closeBuffers() {
+        for (int i = 0; i < 2; i++) {
+            for (AutoCloseable c : new AutoCloseable[] {updateFrom[i], drawFrom[i], states[i]}) {
+                close(c);
+            }
+            updateFrom[i] = null;
+            drawFrom[i] = null;
+            states[i] = null;
+        }
+        count = 0;
+    }
+
+    @Override
+    public void close() {
+        closeBuffers();
+        for (AutoCloseable c : new AutoCloseable[] {groundTexture, drawProgram, updateProgram}) {
+            close(c);
+        }
+    }
+
+    private static void close(AutoCloseable c) {
+        if (c != null) {
+            try {
+                c.close();
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        }
+    }
+}
