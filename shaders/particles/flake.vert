@@ -31,7 +31,12 @@ void main() {
     float opacity = (pixels / drawn) * (pixels / drawn)
             * (1.0 - smoothstep(0.6 * halfSide, halfSide, distance)) // the cube's inscribed sphere, faded at its rim
             * smoothstep(near, 2.0 * near, depth);                   // not cut by the near plane
-    if (opacity < 1.0 / 512.0) {
+    // Most flakes are behind the eye or beside the view: skip them before the light, the costly part (the shadow
+    // maps' filter and the air's table), keeping those whose disc reaches into the picture.
+    vec4 clipCentre = frame.projection * vec4(vsCentre, 1.0);
+    vec2 reach = 2.0 * drawn * frame.viewport.zw; // the drawn radius, in normalised device units
+    bool outside = any(greaterThan(abs(clipCentre.xy / clipCentre.w), 1.0 + reach));
+    if (opacity < 1.0 / 512.0 || outside) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume: nothing is rasterised
         flake = vec4(0.0);
         return;

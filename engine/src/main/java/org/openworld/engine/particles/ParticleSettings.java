@@ -37,8 +37,8 @@ public record ParticleSettings(
             1.0,      // m/s: a typical aggregate flake
             2.0,      // 1/s: half a second to follow the air
             0.3,      // m/s: a gentle flutter, a third of the fall speed
-            0.02,     // m: a 2 cm aggregate
-            40,       // m: flakes fade out from 12 m to the 20 m edge, where a 2 cm flake is a fifth of a 1080p pixel
+            0.03,     // m: a 3 cm aggregate, a large wet flake
+            30,       // m: flakes fade out from 9 m to the 15 m edge, where a 3 cm flake is a 1080p pixel across
             0.3);     // a 2.4 m/s breeze under the default 8 m/s cloud wind
 
     public static final SettingsGroup<ParticleSettings> SETTINGS =

@@ -47,7 +47,7 @@ import org.openworld.engine.settings.SettingsGroup;
  */
 public final class ParticleSystem implements EngineSystem {
 
-    /** Samples a side of the ground patch: 0.6 m apart under the default 40 m cube (the patch spans two cubes). */
+    /** Samples a side of the ground patch: 0.47 m apart under the default 30 m cube (the patch spans two cubes). */
     private static final int GROUND_SAMPLES = 128;
     /** The smallest radius a flake is drawn with, pixels: smaller ones would flicker between pixels. */
     private static final float MIN_RADIUS_PIXELS = 1;
@@ -56,8 +56,8 @@ public final class ParticleSystem implements EngineSystem {
     /** Texture unit of the ground patch in the update program. */
     private static final int UNIT_GROUND = 0;
     /**
-     * An eye that moved more than this share of the cube's side between two steps jumped: 1/4 of the default 40 m
-     * in 1/60 s is 600 m/s, beyond any flight.
+     * An eye that moved more than this share of the cube's side between two steps jumped: 1/4 of the default 30 m
+     * in 1/60 s is 450 m/s, beyond any flight.
      */
     private static final double CUT = 0.25;
     private static final int POSITION = 0;
