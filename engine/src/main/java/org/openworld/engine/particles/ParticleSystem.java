@@ -79,6 +79,8 @@ public final class ParticleSystem implements EngineSystem {
     private GroundPatch ground;
     /** The eye at the last step or frame, to tell a jump from a flight. */
     private final Vector3f lastEye = new Vector3f(Float.NaN);
+    /** The side of the cube the flakes were last spread through, metres. */
+    private double side;
     private Texture2D groundTexture;
 
     private record UpdateUniforms(Uniform.Vec4 forces, Uniform.Vec3 wind, Uniform.Vec4 volume, Uniform.Int stepKey,
@@ -165,8 +167,9 @@ public final class ParticleSystem implements EngineSystem {
 
     /**
      * Makes the ground patch cover the cube, and the buffers hold {@code particles.count} flakes: built when it first
-     * snows and when the count changes, spread afresh around the eye also when the eye jumped (a cut in a path, a
-     * shot's pose), since the air it left has another ground and the flakes carry its shape.
+     * snows and when the count changes, spread afresh around the eye also when the cube's size changes and when the
+     * eye jumped (a cut in a path, a shot's pose), since the air it left has another ground and the flakes carry its
+     * shape.
      */
     private void prepare(World world, ParticleSettings s) {
         CameraPose pose = world.resource(Camera.class).pose();
@@ -183,9 +186,10 @@ public final class ParticleSystem implements EngineSystem {
         }
         boolean jumped = lastEye.distance(eye) > CUT * s.volume();
         lastEye.set(eye);
-        if (count == s.count() && !jumped) {
+        if (count == s.count() && !jumped && side == s.volume()) {
             return;
         }
+        side = s.volume();
         SnowMotion.Volume volume = new SnowMotion.Volume(eye, (float) s.volume());
         Vector3f steady = windAtGround(world, s).sub(0, (float) SnowMotion.terminalVelocity(s.gravity(), s.drag()), 0);
         int seed = world.resource(Settings.class).get(EngineSettings.class).seed();

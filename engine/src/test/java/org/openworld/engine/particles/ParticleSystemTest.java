@@ -115,7 +115,7 @@ class ParticleSystemTest {
     }
 
     @Test
-    void anEyeThatJumpsGetsAFreshFallAroundItWithoutNewBuffers() {
+    void anEyeThatJumpsOrANewCubeSizeGetsAFreshFallWithoutNewBuffers() {
         try (Engine engine = engine(SLOPE, "particles.count=5000", "particles.volume=30")) {
             engine.update();
             // a cut: 2 km east, where the slope is 600 m up (a shot sets its pose after the first step like this)
@@ -128,6 +128,13 @@ class ParticleSystemTest {
                         "around the new eye");
                 assertTrue(state[i + 1] >= SLOPE.heightAt(state[i], state[i + 2]) - 0.01, "in its air");
             }
+            engine.settings().set("particles.volume", "10");
+            engine.render();
+            state = snow.readState();
+            for (int i = 0; i < state.length; i += SnowMotion.FLOATS) {
+                assertTrue(Math.abs(state[i] - 2000) <= 5 && Math.abs(state[i + 2]) <= 5, "spread through the new cube");
+            }
+            assertEquals(1, snow.builds(), "still the same buffers");
         }
     }
 

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.joml.Vector2d;
+import org.joml.Vector3f;
 import org.joml.Vector4f;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.settings.Settings;
@@ -57,6 +58,10 @@ class CloudSettingsTest {
         Vector2d d = east.windOffset(100, new Vector2d());
         assertEquals(1000, d.x, 1e-6);
         assertEquals(0, d.y, 1e-6);
+        Vector3f velocity = east.windVelocity(new Vector3f());
+        assertEquals(10, velocity.x, 1e-5, "the Wind resource the snow drifts in");
+        assertEquals(0, velocity.z, 1e-5);
+        assertEquals(0, velocity.y, 0);
         // after 700 s it has gone 7000 m, 2000 m into the second tile
         assertEquals(2000, east.windOffset(700, new Vector2d()).x, 1e-6);
 
@@ -65,6 +70,7 @@ class CloudSettingsTest {
         Vector2d n = north.windOffset(100, new Vector2d());
         assertEquals(0, n.x, 1e-6);
         assertEquals(4000, n.y, 1e-6);
+        assertEquals(-10, north.windVelocity(new Vector3f()).z, 1e-5, "north is -z");
     }
 
     @Test
