@@ -64,7 +64,10 @@ public final class SnowMotion {
         float[] xi = new float[3];
         for (int i = 0; i < state.length / FLOATS; i++) {
             int o = i * FLOATS;
-            gaussians(i ^ stepKey, xi);
+            if (f.kick() > 0) { // as the shader: no random numbers drawn when the term is off
+                gaussians(i ^ stepKey, xi);
+            }
+            // gravity, drag towards the wind, the Brownian kick
             float vx = state[o + 3] + f.step() * (f.drag() * (f.wind().x() - state[o + 3])) + f.kick() * xi[0];
             float vy = state[o + 4] + f.step() * (-f.gravity() + f.drag() * (f.wind().y() - state[o + 4]))
                     + f.kick() * xi[1];
@@ -72,6 +75,7 @@ public final class SnowMotion {
             float side = volume.side();
             float half = 0.5f * side;
             Vector3fc c = volume.centre();
+            // the move, then back into the cube through the opposite side face, as high above the ground
             float mx = state[o] + f.step() * vx;
             float my = state[o + 1] + f.step() * vy;
             float mz = state[o + 2] + f.step() * vz;
@@ -85,6 +89,7 @@ public final class SnowMotion {
             if (lapsX != 0 || lapsZ != 0) {
                 py += ground.heightAt(px, pz) - ground.heightAt(mx, mz);
             }
+            // through the top or bottom face; a flake below the ground goes back to the top
             float ay = py - c.y() + half;
             py = c.y() + (ay - side * (float) Math.floor(ay / side)) - half;
             float groundY = ground.heightAt(px, pz);
