@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -33,9 +30,9 @@ import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
- * The sun's shadows on real GL, over an imported world built for the purpose: flat ground at −20 m and a wall 100 m
- * high and 16 m thick running north–south just west of the centre (x from −16 to 0 m), lit by a sun in the east 35°
- * up, so the wall's shadow lies on the ground west of it, 100 / tan 35° = 143 m long (x from −159 to −16 m).
+ * The sun's shadows on real GL, over {@link WallWorld}: flat ground at −20 m and a wall 100 m high just west of the
+ * centre (x from −16 to 0 m), lit by a sun in the east 35° up, so the wall's shadow lies on the ground west of it,
+ * 100 / tan 35° = 143 m long (x from −159 to −16 m).
  */
 class ShadowRenderTest {
 
@@ -44,12 +41,7 @@ class ShadowRenderTest {
 
     static final int W = 320;
     static final int H = 180;
-    /** Samples per side of the imported map, 2 m apart: a 512 m world from −256 to 256 m. */
-    static final int SAMPLES = 256;
-    static final double GROUND = -20;
-    static final double ELEVATION = Math.toRadians(35);
-    static final Sun EAST_SUN = new Sun(new Vector3f((float) Math.cos(ELEVATION), (float) Math.sin(ELEVATION), 0),
-            new Vector3f(1), new Vector3f(0.25f));
+    static final Sun EAST_SUN = WallWorld.EAST_SUN;
     /** Above the shadow, looking almost straight down, north up. */
     static final CameraPose ABOVE = new CameraPose(-60, 230, 0, 0, -89, 60);
 
@@ -59,18 +51,12 @@ class ShadowRenderTest {
 
     @BeforeAll
     static void writeWorld() throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                bytes.putFloat(x >= 120 && x < 128 ? 1f : 0f);
-            }
-        }
-        wall = Files.write(dir.resolve("wall.raw"), bytes.array());
+        wall = WallWorld.write(dir);
     }
 
     static List<String> settings(String... more) {
-        List<String> s = new ArrayList<>(List.of("terrain.import-file=" + wall, "terrain.spacing=2",
-                "terrain.relief=100", "terrain.sea-fraction=0.2", "shadow.resolution=512", "shadow.distance=600"));
+        List<String> s = new ArrayList<>(WallWorld.terrain(wall));
+        s.addAll(List.of("shadow.resolution=512", "shadow.distance=600"));
         s.addAll(List.of(more));
         return s;
     }
@@ -99,7 +85,7 @@ class ShadowRenderTest {
     static int[] pixel(double x, double z) {
         Matrix4fc viewProjection = ViewCamera.perspective(ABOVE, (float) W / H, Camera.NEAR, Camera.FAR)
                 .viewProjection();
-        Vector4f clip = viewProjection.transform(new Vector4f((float) x, (float) GROUND, (float) z, 1));
+        Vector4f clip = viewProjection.transform(new Vector4f((float) x, (float) WallWorld.GROUND, (float) z, 1));
         double px = (clip.x / clip.w * 0.5 + 0.5) * W;
         double py = (0.5 - clip.y / clip.w * 0.5) * H;
         return px < 0 || px >= W || py < 0 || py >= H ? null : new int[] {(int) px, (int) py};

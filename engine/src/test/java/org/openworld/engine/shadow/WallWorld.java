@@ -1,0 +1,46 @@
+package org.openworld.engine.shadow;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.joml.Vector3f;
+import org.openworld.engine.environment.Sun;
+
+/**
+ * A world built for shadow tests: flat ground at −20 m and a wall 100 m high and 16 m thick running north–south just
+ * west of the centre (x from −16 to 0 m), lit by a sun in the east 35° up, so the wall's shadow lies on the ground
+ * west of it, 100 / tan 35° = 143 m long (x from −159 to −16 m).
+ */
+public final class WallWorld {
+
+    /** Samples per side of the imported map, 2 m apart: a 512 m world from −256 to 256 m. */
+    static final int SAMPLES = 256;
+    /** Height of the flat ground, metres. */
+    public static final double GROUND = -20;
+    static final double ELEVATION = Math.toRadians(35);
+    public static final Sun EAST_SUN = new Sun(new Vector3f((float) Math.cos(ELEVATION),
+            (float) Math.sin(ELEVATION), 0), new Vector3f(1), new Vector3f(0.25f));
+
+    private WallWorld() {
+    }
+
+    /** Writes the world as a raw float32 height map into {@code dir}. */
+    public static Path write(Path dir) throws IOException {
+        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
+        for (int z = 0; z < SAMPLES; z++) {
+            for (int x = 0; x < SAMPLES; x++) {
+                bytes.putFloat(x >= 120 && x < 128 ? 1f : 0f);
+            }
+        }
+        return Files.write(dir.resolve("wall.raw"), bytes.array());
+    }
+
+    /** The terrain settings that import it: 2 m apart, 0 → −20 m and 1 → 80 m. */
+    public static List<String> terrain(Path wall) {
+        return List.of("terrain.import-file=" + wall, "terrain.spacing=2", "terrain.relief=100",
+                "terrain.sea-fraction=0.2");
+    }
+}
