@@ -217,12 +217,13 @@ public final class Engine implements AutoCloseable {
         for (EngineSystem system : order.systems()) {
             if (isEnabled(system.spec().name())) {
                 long t0 = System.nanoTime();
-                if (system.spec().isUpdatedOnGpu()) {
+                boolean timed = system.spec().isUpdatedOnGpu();
+                if (timed) {
                     timers.begin("update." + system.spec().name());
-                    system.update(world, step);
+                }
+                system.update(world, step);
+                if (timed) {
                     timers.end();
-                } else {
-                    system.update(world, step);
                 }
                 systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
             }

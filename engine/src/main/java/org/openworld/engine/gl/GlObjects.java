@@ -10,7 +10,7 @@ import java.util.Map;
 public final class GlObjects {
 
     /** The kinds of GL object the engine creates. */
-    public enum Kind { PROGRAM, SHADER, BUFFER, VERTEX_ARRAY, TEXTURE, FRAMEBUFFER, RENDERBUFFER, QUERY, SYNC, TRANSFORM_FEEDBACK }
+    public enum Kind { PROGRAM, SHADER, BUFFER, VERTEX_ARRAY, TEXTURE, FRAMEBUFFER, RENDERBUFFER, QUERY, SYNC }
 
     private final Map<Kind, Integer> live = new EnumMap<>(Kind.class);
 

@@ -1,6 +1,7 @@
 package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL15C.*;
+import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
 import static org.lwjgl.opengl.GL30C.glBindBufferBase;
 
 import java.nio.ByteBuffer;
@@ -32,9 +33,17 @@ public final class GpuBuffer implements AutoCloseable {
         glBindBuffer(target, id);
     }
 
-    /** Binds to an indexed binding point (uniform blocks, transform feedback). */
+    /** Binds to an indexed binding point of its own target (a uniform buffer to a block's binding). */
     public void bindBase(int index) {
         glBindBufferBase(target, index, id);
+    }
+
+    /**
+     * Binds as the store of transform feedback's output {@code index}, whatever its own target: a vertex buffer the
+     * next step reads is written by this one.
+     */
+    public void bindForFeedback(int index) {
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, index, id);
     }
 
     /** Allocates and fills; {@code usage} e.g. {@code GL_STATIC_DRAW}. */

@@ -131,7 +131,7 @@ public final class ParticleSystem implements EngineSystem {
         groundTexture.bind(UNIT_GROUND);
 
         updateFrom[current].bind();
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, states[1 - current].id());
+        states[1 - current].bindForFeedback(0);
         glEnable(GL_RASTERIZER_DISCARD);
         glBeginTransformFeedback(GL_POINTS);
         glDrawArrays(GL_POINTS, 0, count);

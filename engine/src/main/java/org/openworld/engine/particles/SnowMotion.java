@@ -62,6 +62,9 @@ public final class SnowMotion {
     /** Advances every flake of {@code state} by one step, in place. */
     public static void step(float[] state, Forces f, Volume volume, GroundPatch ground, int stepKey) {
         float[] xi = new float[3];
+        float side = volume.side();
+        float half = 0.5f * side;
+        Vector3fc c = volume.centre();
         for (int i = 0; i < state.length / FLOATS; i++) {
             int o = i * FLOATS;
             if (f.kick() > 0) { // as the shader: no random numbers drawn when the term is off
@@ -72,9 +75,6 @@ public final class SnowMotion {
             float vy = state[o + 4] + f.step() * (-f.gravity() + f.drag() * (f.wind().y() - state[o + 4]))
                     + f.kick() * xi[1];
             float vz = state[o + 5] + f.step() * (f.drag() * (f.wind().z() - state[o + 5])) + f.kick() * xi[2];
-            float side = volume.side();
-            float half = 0.5f * side;
-            Vector3fc c = volume.centre();
             // the move, then back into the cube through the opposite side face, as high above the ground
             float mx = state[o] + f.step() * vx;
             float my = state[o + 1] + f.step() * vy;
