@@ -9,11 +9,9 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.EnumMap;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.function.Consumer;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -76,7 +74,6 @@ public final class Engine implements AutoCloseable {
     private final Map<Pass, List<EngineSystem>> drawingIn = new EnumMap<>(Pass.class);
     /** The system owning SHADOW or REFLECTION, if any. */
     private final Map<Pass, EngineSystem> owners = new EnumMap<>(Pass.class);
-    private final Set<String> disabled = new HashSet<>();
     private final DrawStats stats = new DrawStats();
     private final Counters counters = new Counters();
     private final List<EngineSystem> initialised = new ArrayList<>();
@@ -109,6 +106,12 @@ public final class Engine implements AutoCloseable {
         this.shaders = new ShaderLibrary(gl, shaders);
         this.settings = settings;
         this.order = SystemOrder.resolve(systems);
+        for (EngineSystem system : order.systems()) {
+            if (!settings.hasSystem(system.spec().name())) {
+                throw new IllegalArgumentException("the settings have no switch for system '" + system.spec().name()
+                        + "': make them with Engine.settingsFor(systems)");
+            }
+        }
         for (Pass pass : Pass.values()) {
             drawingIn.put(pass, order.systems().stream()
                     .filter(s -> s.spec().passes().contains(pass) || s.spec().prepared().contains(pass)).toList());
@@ -150,11 +153,19 @@ public final class Engine implements AutoCloseable {
         }
     }
 
-    /** Settings at their defaults for the engine's own group and every group these systems declare. */
+    /**
+     * Settings at their defaults for the engine's own group, every group these systems declare, and an on/off switch
+     * per system ({@code system.name}), on unless its spec says
+     * {@link org.openworld.engine.core.SystemSpec#offByDefault() offByDefault}.
+     */
     public static Settings settingsFor(List<? extends EngineSystem> systems) {
         List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
-        systems.forEach(s -> groups.addAll(s.settings()));
-        return new Settings(groups);
+        Map<String, Boolean> switches = new LinkedHashMap<>();
+        systems.forEach(s -> {
+            groups.addAll(s.settings());
+            switches.put(s.spec().name(), !s.spec().isOffByDefault());
+        });
+        return new Settings(groups, switches);
     }
 
     public World world() {
@@ -195,20 +206,19 @@ public final class Engine implements AutoCloseable {
         return scene.height();
     }
 
-    /** Switches a system's update and render off or on; its GPU resources stay (STYLE.md 6). */
+    /**
+     * Switches a system's update and render off or on; its GPU resources stay (STYLE.md 6). The same as setting
+     * {@code system.name}, which is where the switch lives.
+     */
     public void setEnabled(String system, boolean enabled) {
-        if (order.systems().stream().noneMatch(s -> s.spec().name().equals(system))) {
+        if (!settings.hasSystem(system)) {
             throw new IllegalArgumentException("no system named '" + system + "'");
         }
-        if (enabled) {
-            disabled.remove(system);
-        } else {
-            disabled.add(system);
-        }
+        settings.set(Settings.SYSTEM_PREFIX + system, enabled ? "on" : "off");
     }
 
     public boolean isEnabled(String system) {
-        return !disabled.contains(system);
+        return settings.systemEnabled(system);
     }
 
     /** Advances the simulation by exactly one fixed step. */

@@ -16,7 +16,7 @@ import org.openworld.engine.settings.SettingsGroup;
 public record EngineSettings(
         @Setting(doc = "fixed simulation step", unit = "s", min = 0.001, max = 0.1) double step,
         @Setting(doc = "most simulation steps per rendered frame", min = 1, max = 60) int maxSteps,
-        @Setting(doc = "world seed", min = 0, max = Integer.MAX_VALUE) int seed) {
+        @Setting(doc = "world seed", min = 0, max = Integer.MAX_VALUE, atStart = true) int seed) {
 
     public static final EngineSettings DEFAULTS = new EngineSettings(1.0 / 60.0, 8, 1);
 

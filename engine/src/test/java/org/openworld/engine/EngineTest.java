@@ -397,6 +397,7 @@ class EngineTest {
             assertFalse(log.stream().anyMatch(l -> l.endsWith(" hud") || l.endsWith(" mirror")), log.toString());
             assertFalse(hud.closed || mirror.closed);
             assertFalse(engine.isEnabled("hud"));
+            assertEquals("off", engine.settings().text("system.hud"), "the switch lives in the settings");
             Image image = engine.readImage();
             assertEquals("0,0,255", rgb(image, SIZE / 4, SIZE * 3 / 4), "decals show without the hud");
             engine.collectFrames(true, records::add);
@@ -406,8 +407,9 @@ class EngineTest {
             assertEquals(3, r.drawCalls());
             assertFalse(r.systemCpuMs().containsKey("hud"));
 
-            // on again: drawn again, with the resources it kept
-            engine.setEnabled("hud", true);
+            // on again, through the setting (as --set, a settings file or the panel does): drawn again, with the
+            // resources it kept
+            engine.settings().set("system.hud", "on");
             log.clear();
             engine.update();
             engine.render();

@@ -22,6 +22,7 @@ public final class SystemSpec {
     private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
     private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
     private boolean transparent;
+    private boolean offByDefault;
     private boolean updatesOnGpu;
 
     private SystemSpec(String name) {
@@ -86,6 +87,15 @@ public final class SystemSpec {
         return this;
     }
 
+    /**
+     * It does not run until switched on ({@code --set system.name=on}, or the settings panel): for what a scene has
+     * ready but the default picture leaves out, such as snowfall.
+     */
+    public SystemSpec offByDefault() {
+        offByDefault = true;
+        return this;
+    }
+
     public String name() {
         return name;
     }
@@ -109,6 +119,10 @@ public final class SystemSpec {
 
     public boolean isTransparent() {
         return transparent;
+    }
+
+    public boolean isOffByDefault() {
+        return offByDefault;
     }
 
     public boolean isUpdatedOnGpu() {

@@ -6,7 +6,6 @@ import org.openworld.engine.settings.SettingsGroup;
 /**
  * Settings of the snowfall, keys {@code particles.*} (paper section 4, figure 14).
  *
- * @param enabled    whether it snows; off by default, since the demo's day is fair (figure 14 turns it on)
  * @param count      snowflakes in the volume around the eye; changing it rebuilds the buffers once
  * @param fallSpeed  speed at which a flake falls through still air, m/s: the terminal velocity g / k of the update
  *                   rule (real flakes fall at 0.5–1.5 m/s)
@@ -21,7 +20,6 @@ import org.openworld.engine.settings.SettingsGroup;
  *                   gives about 0.4 at 10 m above the ground under a layer 2.5 km up
  */
 public record ParticleSettings(
-        @Setting(doc = "snowfall on or off") boolean enabled,
         @Setting(doc = "number of snowflakes", min = 1, max = 4_000_000) int count,
         @Setting(doc = "terminal fall speed in still air", unit = "m/s", min = 0.05, max = 20) double fallSpeed,
         @Setting(doc = "rate at which a flake takes on the air's velocity", unit = "1/s", min = 0.1, max = 50)
@@ -32,7 +30,6 @@ public record ParticleSettings(
         @Setting(doc = "share of the cloud layer's wind felt by the snow", min = 0, max = 1) double windShare) {
 
     public static final ParticleSettings DEFAULTS = new ParticleSettings(
-            false,    // a fair day by default
             100_000,  // the default; 1 M runs too
             1.0,      // m/s: a typical aggregate flake
             2.0,      // 1/s: half a second to follow the air

@@ -30,4 +30,11 @@ public @interface Setting {
 
     /** Largest valid value (numbers only). */
     double max() default Double.POSITIVE_INFINITY;
+
+    /**
+     * Read once, when the world is built (what the terrain and the clouds are generated from): a change takes effect
+     * when the world is built again, which the settings panel offers as "Rebuild world". Every other setting is read
+     * each frame and takes effect at once.
+     */
+    boolean atStart() default false;
 }

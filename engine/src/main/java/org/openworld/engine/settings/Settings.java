@@ -9,21 +9,57 @@ import java.util.stream.Collectors;
 
 /**
  * The current value of every setting, as a world resource: one immutable record per group, replaced whole when a
- * key changes. The command line's {@code --set key=value}, {@code openworld settings} and the settings panel all
+ * key changes, and one on/off switch per system ({@code system.terrain}, ...), which the engine reads every frame.
+ * The command line's {@code --set key=value}, {@code openworld settings}, settings files and the settings panel all
  * work through this one class, so a key cannot exist in one place and not the others.
  */
 public final class Settings {
 
+    /** What {@link #describe()} adds to the meaning of a key read only when the world is built. */
+    public static final String AT_START_NOTE = " (read when the world is built)";
+
+    /** Prefix of the systems' on/off switches: {@code system.water=off}. */
+    public static final String SYSTEM_PREFIX = "system.";
+
     private final Map<Class<?>, SettingsGroup<?>> groups = new LinkedHashMap<>();
     private final Map<Class<?>, Record> current = new LinkedHashMap<>();
+    /** Switch key → on; in the order the systems were given. */
+    private final Map<String, Boolean> switches = new LinkedHashMap<>();
+    private final Map<String, Boolean> switchDefaults = new LinkedHashMap<>();
 
+    /** Groups of settings without system switches (tests of one group). */
     public Settings(List<SettingsGroup<?>> groups) {
+        this(groups, Map.of());
+    }
+
+    /**
+     * @param groups  every settings group
+     * @param systems each system's name with whether it runs by default, in order
+     */
+    public Settings(List<SettingsGroup<?>> groups, Map<String, Boolean> systems) {
         for (SettingsGroup<?> group : groups) {
             if (this.groups.put(group.type(), group) != null) {
                 throw new IllegalArgumentException("settings group " + group.prefix() + " registered twice");
             }
             current.put(group.type(), group.defaults());
         }
+        systems.forEach((name, on) -> switchDefaults.put(SYSTEM_PREFIX + name, on));
+        switches.putAll(switchDefaults);
+    }
+
+    /** Whether the system of this name runs; true for a system without a switch. */
+    public boolean systemEnabled(String system) {
+        return switches.getOrDefault(SYSTEM_PREFIX + system, true);
+    }
+
+    /** Whether these settings have an on/off switch for the system of this name. */
+    public boolean hasSystem(String system) {
+        return switches.containsKey(SYSTEM_PREFIX + system);
+    }
+
+    /** The system switch keys, {@code system.name}, in order. */
+    public List<String> systemKeys() {
+        return List.copyOf(switches.keySet());
     }
 
     /** The current record of a group. */
@@ -39,9 +75,9 @@ public final class Settings {
         return List.copyOf(groups.values());
     }
 
-    /** Every key, in group order then component order. */
+    /** Every key: the system switches, then group order then component order. */
     public List<String> keys() {
-        List<String> keys = new ArrayList<>();
+        List<String> keys = new ArrayList<>(switches.keySet());
         groups.values().forEach(g -> g.keys().forEach(k -> keys.add(k.key())));
         return keys;
     }
@@ -57,6 +93,10 @@ public final class Settings {
 
     /** Sets one key from text. */
     public void set(String key, String text) {
+        if (switches.containsKey(key)) {
+            switches.put(key, parseSwitch(key, text));
+            return;
+        }
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 if (k.key().equals(key)) {
@@ -75,6 +115,9 @@ public final class Settings {
 
     /** The current value of a key as text, as {@code --set} would take it. */
     public String text(String key) {
+        if (switches.containsKey(key)) {
+            return format(switches.get(key));
+        }
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 if (k.key().equals(key)) {
@@ -99,11 +142,15 @@ public final class Settings {
     /** A table of every key: default, unit, valid values and meaning (for {@code openworld settings}). */
     public String describe() {
         StringBuilder s = new StringBuilder();
+        String row = "%-28s %-10s %-6s %-22s %s%n";
+        switchDefaults.forEach((key, on) -> s.append(String.format(Locale.ROOT, row, key, format(on), "", "on|off",
+                "run the " + key.substring(SYSTEM_PREFIX.length()) + " system (its updates and drawing)")));
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 Object def = defaultOf(group, k);
-                s.append(String.format(Locale.ROOT, "%-28s %-10s %-6s %-22s %s%n", k.key(), def instanceof String text && text.isEmpty() ? "(none)" : format(def),
-                        k.doc().unit(), validValues(k), k.doc().doc()));
+                s.append(String.format(Locale.ROOT, row, k.key(),
+                        def instanceof String text && text.isEmpty() ? "(none)" : format(def), k.doc().unit(),
+                        validValues(k), k.doc().doc() + (k.doc().atStart() ? AT_START_NOTE : "")));
             }
         }
         return s.toString();
@@ -141,11 +188,11 @@ public final class Settings {
                 return text;
             }
             if (t == boolean.class) {
-                return switch (text.toLowerCase(Locale.ROOT)) {
-                    case "on", "true", "yes", "1" -> true;
-                    case "off", "false", "no", "0" -> false;
-                    default -> throw new NumberFormatException();
-                };
+                Boolean on = onOff(text);
+                if (on == null) {
+                    throw new NumberFormatException();
+                }
+                return on;
             }
             if (t.isEnum()) {
                 for (Object e : t.getEnumConstants()) {
@@ -179,6 +226,23 @@ public final class Settings {
             throw new SettingsException(key.key() + "=" + text + " is not valid: expected "
                     + (t.isEnum() || t == boolean.class ? "one of " : (t == int.class ? "an integer in " : "a number in ")) + valid);
         }
+    }
+
+    private static boolean parseSwitch(String key, String text) {
+        Boolean on = onOff(text);
+        if (on == null) {
+            throw new SettingsException(key + "=" + text + " is not valid: expected one of on|off");
+        }
+        return on;
+    }
+
+    /** on/off, true/false, yes/no, 1/0 (any case); null for anything else. */
+    private static Boolean onOff(String text) {
+        return switch (text.toLowerCase(Locale.ROOT)) {
+            case "on", "true", "yes", "1" -> true;
+            case "off", "false", "no", "0" -> false;
+            default -> null;
+        };
     }
 
     private static String enumText(Enum<?> e) {

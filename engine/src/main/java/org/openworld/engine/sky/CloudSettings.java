@@ -37,13 +37,14 @@ public record CloudSettings(
         @Setting(doc = "height of the cloud layer above the eye", unit = "m", min = 500, max = 10000) double altitude,
         @Setting(doc = "period of the cloud field on the layer", unit = "m", min = 1000, max = 100000) double tileSize,
         @Setting(doc = "spectral exponent: power ~ 1/frequency^beta (2 = amplitude 1/f, the paper's)", min = 0.5,
-                max = 4) double beta,
+                max = 4, atStart = true) double beta,
         @Setting(doc = "loop time of the clouds' evolution", unit = "s", min = 10, max = 3600) double period,
         @Setting(doc = "wind speed on the cloud layer", unit = "m/s", min = 0, max = 50) double windSpeed,
         @Setting(doc = "direction the wind blows towards, clockwise from north", unit = "deg", min = 0, max = 360)
         double windDirection,
-        @Setting(doc = "field samples per tile side, a power of two", min = 32, max = 256) int resolution,
-        @Setting(doc = "field samples over one period, a power of two", min = 4, max = 64) int frames,
+        @Setting(doc = "field samples per tile side, a power of two", min = 32, max = 256, atStart = true)
+        int resolution,
+        @Setting(doc = "field samples over one period, a power of two", min = 4, max = 64, atStart = true) int frames,
         @Setting(doc = "fog distance on the layer for the *_FOG mappings", unit = "tiles", min = 0.05, max = 4)
         double horizonFog) {
 

@@ -28,7 +28,7 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       and a coarser caster moves its shadow's edge by less than that; each level halves B there
  */
 public record LodSettings(
-        @Setting(doc = "vertices per patch side (33 or 65)", min = 33, max = 65) int patchVertices,
+        @Setting(doc = "vertices per patch side (33 or 65)", min = 33, max = 65, atStart = true) int patchVertices,
         @Setting(doc = "base resolution B: distance of the first level drop", unit = "m", min = 1, max = 100000)
         double baseResolution,
         @Setting(doc = "level-of-detail scheme: QUADTREE or FLAT_GRID (the paper's, figure 6)") LodMode mode,

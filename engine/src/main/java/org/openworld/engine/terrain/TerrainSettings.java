@@ -25,21 +25,29 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param snowMorphology radius of the opening and the closing that clean up the random snow map, in snow map pixels
  */
 public record TerrainSettings(
-        @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192) int size,
-        @Setting(doc = "distance between neighbouring height samples", unit = "m", min = 0.1, max = 100)
+        @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192, atStart = true)
+        int size,
+        @Setting(doc = "distance between neighbouring height samples", unit = "m", min = 0.1, max = 100, atStart = true)
         double spacing,
-        @Setting(doc = "height range from lowest valley to highest peak", unit = "m", min = 10, max = 10000)
+        @Setting(doc = "height range from lowest valley to highest peak",
+                unit = "m", min = 10, max = 10000, atStart = true)
         double relief,
-        @Setting(doc = "fraction of the relief below sea level (height 0)", min = 0, max = 0.9) double seaFraction,
-        @Setting(doc = "spectral exponent: amplitude ~ 1/frequency^beta", min = 1, max = 3) double beta,
-        @Setting(doc = "shortest wavelength kept (high-frequency cut-off)", unit = "m", min = 0.1, max = 1e6)
+        @Setting(doc = "fraction of the relief below sea level (height 0)", min = 0, max = 0.9, atStart = true)
+        double seaFraction,
+        @Setting(doc = "spectral exponent: amplitude ~ 1/frequency^beta", min = 1, max = 3, atStart = true) double beta,
+        @Setting(doc = "shortest wavelength kept (high-frequency cut-off)",
+                unit = "m", min = 0.1, max = 1e6, atStart = true)
         double minWavelength,
-        @Setting(doc = "longest wavelength kept (low-frequency cut-off)", unit = "m", min = 0.1, max = 1e6)
+        @Setting(doc = "longest wavelength kept (low-frequency cut-off)",
+                unit = "m", min = 0.1, max = 1e6, atStart = true)
         double maxWavelength,
-        @Setting(doc = "16-bit PNG or float32 .raw height map to load instead of generating one") String importFile,
-        @Setting(doc = "normalised height where snow starts (probability 0)", min = 0, max = 1) double snowBase,
-        @Setting(doc = "normalised height where snow is certain (probability 1)", min = 0, max = 1) double snowFull,
-        @Setting(doc = "radius of the snow map's opening and closing", unit = "px", min = 0, max = 8)
+        @Setting(doc = "16-bit PNG or float32 .raw height map to load instead of generating one", atStart = true)
+        String importFile,
+        @Setting(doc = "normalised height where snow starts (probability 0)", min = 0, max = 1, atStart = true)
+        double snowBase,
+        @Setting(doc = "normalised height where snow is certain (probability 1)", min = 0, max = 1, atStart = true)
+        double snowFull,
+        @Setting(doc = "radius of the snow map's opening and closing", unit = "px", min = 0, max = 8, atStart = true)
         int snowMorphology) {
 
     public static final TerrainSettings DEFAULTS = new TerrainSettings(

@@ -13,7 +13,7 @@ class ParticleSettingsTest {
 
     @Test
     void gravityIsWhatDragBalancesAtTheFallSpeed() {
-        ParticleSettings s = new ParticleSettings(true, 10, 1.4, 3, 0.2, 0.02, 40, 0.3);
+        ParticleSettings s = new ParticleSettings(10, 1.4, 3, 0.2, 0.02, 40, 0.3);
         assertEquals(1.4, SnowMotion.terminalVelocity(s.gravity(), s.drag()), 1e-12);
         assertEquals(0.2, s.brownian() / Math.sqrt(2 * s.drag()), 1e-12, "the small-step spread is the turbulence");
     }

@@ -44,7 +44,7 @@ class ParticleShadowTest {
         Image[] images = new Image[2];
         for (int i = 0; i < 2; i++) {
             List<String> settings = new ArrayList<>(WallWorld.terrain(wall));
-            settings.addAll(List.of("shadow.resolution=512", "shadow.distance=300", "particles.enabled=" + (i == 0),
+            settings.addAll(List.of("shadow.resolution=512", "shadow.distance=300", "system.particles=" + (i == 0),
                     "particles.count=400", "particles.size=0.2", "particles.volume=20"));
             try (Engine engine = GlTestSupport.engine(GL.context(), 320, 180, settings, new CullingSystem(),
                     new TerrainSystem(), new ShadowSystem(), new ParticleSystem())) {

@@ -35,7 +35,7 @@ class ParticleSystemTest {
     final ParticleSystem snow = new ParticleSystem();
 
     Engine engine(HeightField ground, String... settings) {
-        List<String> all = new ArrayList<>(List.of("particles.enabled=true"));
+        List<String> all = new ArrayList<>(List.of("system.particles=on"));
         all.addAll(List.of(settings));
         Engine engine = GlTestSupport.engine(GL.context(), W, H, all, snow);
         engine.world().setResource(HeightField.class, ground);
@@ -170,7 +170,7 @@ class ParticleSystemTest {
     static Image[] withAndWithout(Sun sun, double size) {
         Image[] images = new Image[2];
         for (int i = 0; i < 2; i++) {
-            try (Engine engine = GlTestSupport.engine(GL.context(), W, H, List.of("particles.enabled=" + (i == 0),
+            try (Engine engine = GlTestSupport.engine(GL.context(), W, H, List.of("system.particles=" + (i == 0),
                     "particles.count=400", "particles.size=" + size, "particles.volume=20"), new ParticleSystem())) {
                 engine.world().setResource(sun);
                 engine.world().resource(Camera.class).setPose(new CameraPose(0, 20, 0, 0, 0, 60));
@@ -236,12 +236,12 @@ class ParticleSystemTest {
 
     @Test
     void changingTheCountRebuildsTheBuffersOnceAndNothingIsBuiltWhileItDoesNotSnow() {
-        try (Engine engine = engine(DEEP, "particles.enabled=false", "particles.count=1000")) {
+        try (Engine engine = engine(DEEP, "system.particles=off", "particles.count=1000")) {
             engine.update();
             engine.render();
             assertEquals(0, snow.builds(), "no snow, no buffers");
             int buffers = GL.context().objects().live(GlObjects.Kind.BUFFER);
-            engine.settings().set("particles.enabled", "true");
+            engine.settings().set("system.particles", "on");
             engine.update();
             engine.render();
             assertEquals(1, snow.builds());

@@ -61,7 +61,7 @@ class SnowMotionTest {
     @Test
     void theBrownianTermSpreadsTheVelocityToItsSettledVariance() {
         float drag = 2;
-        ParticleSettings s = new ParticleSettings(true, 20_000, 1, drag, 0.3, 0.02, 40, 0.3);
+        ParticleSettings s = new ParticleSettings(20_000, 1, drag, 0.3, 0.02, 40, 0.3);
         float kick = (float) (s.brownian() * Math.sqrt(DT));
         float[] state = atRest(s.count());
         for (int n = 0; n < 600; n++) { // ten time constants: the spread is within e^-20 of settled

@@ -181,4 +181,40 @@ class SettingsTest {
         SettingsGroup<OtherSettings> other = SettingsGroup.of("other", OtherSettings.class, OtherSettings.DEFAULTS);
         assertThrows(IllegalArgumentException.class, () -> new Settings(List.of(other, other)));
     }
+
+    @Test
+    void systemSwitchesAreKeysLikeAnyOther() {
+        Settings s = new Settings(List.of(SettingsGroup.of("other", OtherSettings.class, OtherSettings.DEFAULTS)),
+                new java.util.LinkedHashMap<>(Map.of("snow", false)));
+
+        assertEquals(List.of("system.snow", "other.lod-bias"), s.keys());
+        assertEquals("off", s.text("system.snow"));
+        assertTrue(s.hasSystem("snow"));
+        assertTrue(!s.systemEnabled("snow"));
+        assertTrue(s.systemEnabled("a-system-without-a-switch"));
+        s.apply("system.snow=on");
+        assertTrue(s.systemEnabled("snow"));
+        assertEquals("on", s.asText().get("system.snow"));
+        assertTrue(s.describe().lines().anyMatch(l -> l.startsWith("system.snow") && l.contains("off")
+                && l.contains("on|off")), s.describe());
+        SettingsException e = assertThrows(SettingsException.class, () -> s.set("system.snow", "maybe"));
+        assertTrue(e.getMessage().contains("system.snow") && e.getMessage().contains("on|off"), e.getMessage());
+    }
+
+    public record Generated(
+            @Setting(doc = "samples", min = 1, max = 10, atStart = true) int samples,
+            @Setting(doc = "tint", min = 0, max = 1) double tint) {
+        public static final Generated DEFAULTS = new Generated(4, 0.5);
+    }
+
+    @Test
+    void settingsReadAtStartSaySo() {
+        Settings s = new Settings(List.of(SettingsGroup.of("gen", Generated.class, Generated.DEFAULTS)));
+
+        String samples = s.describe().lines().filter(l -> l.startsWith("gen.samples")).findFirst().orElseThrow();
+        String tint = s.describe().lines().filter(l -> l.startsWith("gen.tint")).findFirst().orElseThrow();
+
+        assertTrue(samples.endsWith(Settings.AT_START_NOTE), samples);
+        assertTrue(!tint.contains(Settings.AT_START_NOTE), tint);
+    }
 }
