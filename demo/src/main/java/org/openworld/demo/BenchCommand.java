@@ -88,7 +88,8 @@ final class BenchCommand implements Callable<Integer> {
             }
             engine.collectFrames(true, r -> keep(r, records));
             RunInfo info = new RunInfo(launch.gl.renderer(), launch.gl.version(), launch.gl.mode().toString(),
-                    engine.width(), engine.height(), render.seed, engine.settings().asText(), path.toString(), warmup);
+                    engine.width(), engine.height(), engine.settings().get(EngineSettings.class).seed(),
+                    engine.settings().asText(), path.toString(), warmup);
             Summary summary = BenchReport.write(info, records, out);
             System.out.println(summary.describe());
             System.out.println("wrote " + out.resolve(BenchReport.FRAMES_CSV) + ", " + out.resolve(BenchReport.SUMMARY_JSON)

@@ -9,6 +9,7 @@ import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsFile;
 
 /**
  * One place that turns the common options into a running engine: settings with the user's {@code --set} values,
@@ -28,10 +29,18 @@ final class Launch implements AutoCloseable {
         this.devShaders = devShaders;
     }
 
-    /** Settings of the demo's systems with every {@code --set} applied (checked before any window opens). */
+    /**
+     * Settings of the demo's systems: the defaults, then the {@code --config} file, then {@code --seed}, then every
+     * {@code --set} (all checked before any window opens).
+     */
     static Settings settings(RenderOptions options) {
         Settings settings = Engine.settingsFor(DemoScene.systems());
-        settings.set("engine.seed", Integer.toString(options.seed));
+        if (options.config != null) {
+            SettingsFile.read(options.config, settings);
+        }
+        if (options.seed != null) {
+            settings.set("engine.seed", Integer.toString(options.seed));
+        }
         options.set.forEach(settings::apply);
         return settings;
     }

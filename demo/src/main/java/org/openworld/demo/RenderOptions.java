@@ -1,5 +1,6 @@
 package org.openworld.demo;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import picocli.CommandLine.Option;
@@ -12,9 +13,13 @@ final class RenderOptions {
     Size size;
 
     @Option(names = "--seed", paramLabel = "N",
-            description = "World seed, 0 .. 2147483647; short for --set engine.seed=N (default: ${DEFAULT-VALUE}).",
-            defaultValue = "1")
-    int seed;
+            description = "World seed, 0 .. 2147483647; short for --set engine.seed=N (default: 1).")
+    Integer seed;
+
+    @Option(names = "--config", paramLabel = "FILE",
+            description = "Read settings from a file of key=value lines (the settings panel saves one); "
+                    + "--seed and --set given too win over it.")
+    Path config;
 
     @Option(names = "--time", paramLabel = "HH:MM", description = "Time of day, local solar time (default: ${DEFAULT-VALUE}).",
             defaultValue = "10:00", converter = HoursConverter.class)

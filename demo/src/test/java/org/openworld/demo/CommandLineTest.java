@@ -132,6 +132,38 @@ class CommandLineTest {
     }
 
     @Test
+    void benchCanSwitchASystemOff() throws Exception {
+        Path out = dir.resolve("no-water");
+        assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", out.toString(),
+                "--size", "96x54", "--frames", "3", "--warmup", "1", "--set", "system.water=off"), console.stderr());
+        var spans = SummaryJson.read(out.resolve("summary.json")).passGpuMsMedian().keySet();
+        assertTrue(spans.contains("main.terrain"), spans.toString());
+        assertTrue(spans.stream().noneMatch(s -> s.endsWith(".water") || s.startsWith("reflection")), spans.toString());
+    }
+
+    @Test
+    void configFileIsReadAndSetWinsOverIt() throws Exception {
+        Path config = dir.resolve("mine.settings");
+        Files.writeString(config, "# saved by hand\ncamera.fov=75\nsky.exposure=2\n");
+        assertEquals(0, Main.execute("settings", "--config", config.toString(), "--set", "sky.exposure=3"));
+        // 'settings' lists the defaults; the values in force are checked through the launch's settings
+        var options = new RenderOptions();
+        options.config = config;
+        options.set.add("sky.exposure=3");
+        var settings = Launch.settings(options);
+        assertEquals("75", settings.text("camera.fov"));
+        assertEquals("3", settings.text("sky.exposure"), "--set wins");
+
+        Files.writeString(config, "camera.fov=75\ncamera.fov=500\n");
+        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(),
+                "--config", config.toString()));
+        assertTrue(console.stderr().contains(config + ":2: camera.fov=500") && console.stderr().contains("20 .. 120"),
+                console.stderr());
+        assertFalse(console.stderr().contains("Exception"), console.stderr());
+        assertFalse(Files.exists(dir.resolve("x.png")));
+    }
+
+    @Test
     void benchWithoutPathSaysWhatItNeeds() {
         assertEquals(Main.EXIT_USER_ERROR, Main.execute("bench", "--out", dir.toString()));
         assertTrue(console.stderr().contains("--path"), console.stderr());

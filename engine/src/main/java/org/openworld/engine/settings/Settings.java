@@ -113,25 +113,36 @@ public final class Settings {
         current.put(group.type(), group.with(group.type().cast(current.get(group.type())), key, value));
     }
 
-    /** The current value of a key as text, as {@code --set} would take it. */
+    /** The current value of a key as text, as {@code --set} would take it; numbers to six significant digits. */
     public String text(String key) {
+        return format(value(key), false);
+    }
+
+    private Object value(String key) {
         if (switches.containsKey(key)) {
-            return format(switches.get(key));
+            return switches.get(key);
         }
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 if (k.key().equals(key)) {
-                    return format(valueOf(group, k));
+                    return valueOf(group, k);
                 }
             }
         }
         throw new SettingsException("unknown setting '" + key + "'");
     }
 
-    /** Every key with its current value as text. */
+    /** Every key with its current value as text, numbers to six significant digits (for people to read). */
     public Map<String, String> asText() {
         Map<String, String> all = new LinkedHashMap<>();
         keys().forEach(k -> all.put(k, text(k)));
+        return all;
+    }
+
+    /** Every key with its current value as text that parses back to exactly that value (for settings files). */
+    public Map<String, String> asExactText() {
+        Map<String, String> all = new LinkedHashMap<>();
+        keys().forEach(k -> all.put(k, format(value(k), true)));
         return all;
     }
 
@@ -250,6 +261,14 @@ public final class Settings {
     }
 
     private static String format(Object value) {
+        return format(value, false);
+    }
+
+    /**
+     * A value as {@code --set} takes it. Numbers have no exponent; {@code exact} gives the fewest digits that parse
+     * back to the same double or float (0.016666666666666666), else six significant digits (0.0166667).
+     */
+    private static String format(Object value, boolean exact) {
         if (value instanceof Boolean b) {
             return b ? "on" : "off";
         }
@@ -259,8 +278,10 @@ public final class Settings {
         if (value instanceof String text) {
             return text;
         }
+        if (exact && (value instanceof Double || value instanceof Float)) {
+            return new java.math.BigDecimal(value.toString()).stripTrailingZeros().toPlainString();
+        }
         if (value instanceof Double || value instanceof Float) {
-            // Six significant digits, no exponent: 0.0166667, 0.00012, 46.
             return new java.math.BigDecimal(((Number) value).doubleValue())
                     .round(new java.math.MathContext(6)).stripTrailingZeros().toPlainString();
         }

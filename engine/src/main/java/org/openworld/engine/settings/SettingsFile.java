@@ -1,0 +1,63 @@
+package org.openworld.engine.settings;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Settings saved to a text file and read back: one {@code key=value} per line, exactly as {@code --set} takes them;
+ * a line starting with {@code #} is a comment (only at the start, since a value such as a file name may hold one),
+ * blank lines are ignored. The settings panel saves every key, so a file read
+ * into fresh settings gives the same settings; a hand-written file may hold just a few keys.
+ * {@code openworld --config FILE} reads one, with any {@code --set} given after it winning.
+ */
+public final class SettingsFile {
+
+    private SettingsFile() {
+    }
+
+    /** Writes every key with its exact current value, under a header that says how to use the file. */
+    public static void write(Settings settings, Path file) throws IOException {
+        StringBuilder text = new StringBuilder("""
+                # OpenWorld settings: one key=value per line, as --set takes them ('openworld settings' lists them).
+                # Use with: openworld --config FILE  (a --set after it wins). Lines starting with '#' are comments.
+                """);
+        settings.asExactText().forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Applies every line of the file to {@code settings}, in order.
+     *
+     * @throws SettingsException naming the file and line of the first bad line (and nothing after it is applied),
+     *                           or saying the file cannot be read
+     */
+    public static void read(Path file, Settings settings) {
+        List<String> lines;
+        try {
+            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new SettingsException("settings file " + file + " does not exist");
+        } catch (IOException e) {
+            throw new SettingsException("cannot read settings file " + file + ": " + e.getMessage());
+        }
+        for (int i = 0; i < lines.size(); i++) {
+            String line = lines.get(i).strip();
+            if (line.isEmpty() || line.startsWith("#")) {
+                continue;
+            }
+            try {
+                settings.apply(line);
+            } catch (SettingsException e) {
+                throw new SettingsException(file + ":" + (i + 1) + ": " + e.getMessage());
+            }
+        }
+    }
+}
