@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.openworld.engine.Engine;
+import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlContext;
@@ -19,14 +20,17 @@ import org.openworld.engine.settings.SettingsFile;
 final class Launch implements AutoCloseable {
 
     final GlContext gl;
-    final Engine engine;
+    /** The running engine; the window's "Rebuild world" replaces it. */
+    Engine engine;
     /** Whether shaders come from ./shaders on disk (--dev), so a reload picks up edits. */
     final boolean devShaders;
+    private final ShaderSources shaders;
 
-    private Launch(GlContext gl, Engine engine, boolean devShaders) {
+    private Launch(GlContext gl, Engine engine, boolean devShaders, ShaderSources shaders) {
         this.gl = gl;
         this.engine = engine;
         this.devShaders = devShaders;
+        this.shaders = shaders;
     }
 
     /**
@@ -61,11 +65,26 @@ final class Launch implements AutoCloseable {
         try {
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
             engine.world().setResource(new TimeOfDay(options.hours, daySpeed));
-            return new Launch(gl, engine, options.dev);
+            return new Launch(gl, engine, options.dev, shaders);
         } catch (RuntimeException e) {
             gl.close();
             throw e;
         }
+    }
+
+    /**
+     * Builds the world again from the current settings (the settings panel's "Rebuild world", after a change of a
+     * setting read at start such as {@code terrain.relief}), with fresh systems on the same GL context, keeping the
+     * camera, the clock and the size. The new engine is built before the old one is closed, so a failure (an
+     * import file that does not exist) leaves the old world running and is thrown to the caller.
+     */
+    void rebuild() {
+        Engine old = engine;
+        Engine fresh = new Engine(gl, shaders, old.settings(), DemoScene.systems(), old.width(), old.height());
+        fresh.world().setResource(old.world().resource(TimeOfDay.class));
+        fresh.world().resource(Camera.class).setPose(old.world().resource(Camera.class).pose());
+        old.close();
+        engine = fresh;
     }
 
     private static ShaderSources devShaders() {

@@ -16,28 +16,32 @@ import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.input.InputState;
 
 /**
- * The interactive loop: GLFW events into the world's {@link InputState}, fixed-step updates for the real time
- * that passed, one render, the picture to the screen. Keys the loop itself handles (the camera system handles
+ * The interactive loop: GLFW events to the Dear ImGui layer ({@link Gui}) and then, unless it took them, into the
+ * world's {@link InputState}; fixed-step updates for the real time that passed; one render; the picture to the
+ * screen with the panel, HUD and controls over it. Keys the loop itself handles (the camera system handles
  * movement): Esc, Tab or the right mouse button for mouse look, R to record a path, T, [, ], - and = for the day
- * cycle ({@link DayCycle}), F5 to reload shaders (with {@code --dev}), F1 to print the controls.
+ * cycle ({@link DayCycle}), F1 to F3 for the controls, settings panel and HUD, F5 to reload shaders (with
+ * {@code --dev}).
  */
-final class WindowLoop {
+final class WindowLoop implements SettingsPanel.Host {
 
+    /** Every key binding; the README's table lists the same. */
     static final String CONTROLS = """
-            Controls
-              W A S D         move (fly: along the view; walk: on the ground)
-              Space / C       up / down (fly)
-              Shift           faster
-              Arrow keys      turn
-              Right mouse     hold to look around (Tab toggles it on and off)
-              V               fly / walk
-              T               pause / resume the day cycle
-              [ / ]           a quarter hour earlier / later
-              - / =           day cycle half / twice as fast
-              R               start / stop recording a camera path (saved under assets/paths/)
-              F5              reload shaders from ./shaders (with --dev)
-              F1              print these controls
-              Esc             release the mouse, or quit""";
+            W A S D         move (fly: along the view; walk: on the ground)
+            Space / C       up / down (fly)
+            Shift           faster
+            Arrow keys      turn
+            Right mouse     hold to look around (Tab toggles it on and off)
+            V               fly / walk
+            T               pause / resume the day cycle
+            [ / ]           a quarter hour earlier / later (hold to scrub)
+            - / =           day cycle half / twice as fast
+            R               start / stop recording a camera path (saved under assets/paths/)
+            F1              show / hide these controls
+            F2              show / hide the settings panel
+            F3              show / hide the HUD (frame times, GPU time per pass, counters)
+            F5              reload shaders from ./shaders (with --dev)
+            Esc             release the mouse, or quit""";
 
     /** Where recorded paths are saved, relative to the working directory. */
     static final Path RECORDINGS = Path.of("assets", "paths");
@@ -45,8 +49,11 @@ final class WindowLoop {
     private static final double TITLE_INTERVAL = 0.5;
 
     private final Launch launch;
-    private final Engine engine;
     private final Optional<CameraPath> replay;
+    private final Hud hud = new Hud();
+    private final SettingsPanel panel;
+    /** The panel, HUD and controls; empty where Dear ImGui's natives do not load (the window still runs). */
+    private Optional<Gui> gui = Optional.empty();
     private final InputState input = new InputState();
     private final DayCycle day = new DayCycle();
     private CameraPathRecorder recorder;
@@ -56,21 +63,23 @@ final class WindowLoop {
 
     WindowLoop(Launch launch, Optional<CameraPath> replay, PoseOptions pose) {
         this.launch = launch;
-        this.engine = launch.engine;
         this.replay = replay;
-        engine.world().setResource(input);
-        engine.world().resource(Camera.class).setPose(Poses.resolve(pose, replay, engine.world()));
+        engine().world().setResource(input);
+        engine().world().resource(Camera.class).setPose(Poses.resolve(pose, replay, engine().world()));
+        panel = new SettingsPanel(engine().settings(), this);
+    }
+
+    private Engine engine() {
+        return launch.engine;
     }
 
     void run() {
         long window = launch.gl.window();
         installCallbacks(window);
-        System.out.println(CONTROLS);
+        startGui(window);
         double last = glfwGetTime();
         double titleAt = last;
         int framesSinceTitle = 0;
-        Camera camera = engine.world().resource(Camera.class);
-        HeightField ground = engine.world().findResource(HeightField.class).orElse(HeightField.FLAT);
         while (!launch.gl.shouldClose()) {
             glfwPollEvents();
             int[] size = launch.gl.framebufferSize();
@@ -79,21 +88,26 @@ final class WindowLoop {
                 last = glfwGetTime();
                 continue;
             }
+            panel.rebuildIfAsked();
+            Engine engine = engine();
+            Camera camera = engine.world().resource(Camera.class);
             engine.resize(size[0], size[1]);
             double now = glfwGetTime();
             engine.advance(now - last);
             last = now;
             if (replay.isPresent()) {
                 CameraPath path = replay.get();
+                HeightField ground = engine.world().findResource(HeightField.class).orElse(HeightField.FLAT);
                 camera.setPose(path.sample(engine.simTime() % path.duration(), ground));
             }
             if (recorder != null) {
                 recorder.record(engine.simTime(), camera.pose());
             }
             engine.render();
+            gui.ifPresent(g -> engine.drawOver(g::draw));
             engine.present(size[0], size[1]);
             launch.gl.swapBuffers();
-            engine.collectFrames(false, r -> { });
+            engine.collectFrames(false, hud::add);
             framesSinceTitle++;
             if (now - titleAt >= TITLE_INTERVAL) {
                 double ms = (now - titleAt) * 1000 / framesSinceTitle;
@@ -107,21 +121,51 @@ final class WindowLoop {
         if (recorder != null) {
             stopRecording();
         }
+        gui.ifPresent(Gui::close);
+    }
+
+    /** The panel, HUD and controls, or a line saying why the window runs without them. */
+    private void startGui(long window) {
+        try {
+            gui = Optional.of(new Gui(window, panel, hud));
+            System.out.println("F1 shows the controls, F2 the settings panel, F3 the HUD");
+        } catch (LinkageError e) {
+            System.err.println("the settings panel and HUD are not available: Dear ImGui's native library did not "
+                    + "load on this platform (" + e.getMessage() + "); the window runs without them. Controls:\n"
+                    + CONTROLS);
+        }
+    }
+
+    @Override
+    public void rebuild() {
+        System.out.println("rebuilding the world...");
+        launch.rebuild();
+        engine().world().setResource(input);
     }
 
     private void installCallbacks(long window) {
         glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
+            gui.ifPresent(g -> g.key(w, key, scancode, action, mods));
+            if (action == GLFW_RELEASE) {
+                input.keyUp(key); // always, so a key pressed before a text field took the keyboard is let go
+                return;
+            }
+            if (gui.isPresent() && gui.get().wantsKeyboard()) {
+                return;
+            }
             if (action == GLFW_PRESS) {
                 input.keyDown(key);
                 onPress(window, key);
             } else if (action == GLFW_REPEAT && (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET)) {
                 onPress(window, key); // held: keep scrubbing
-            } else if (action == GLFW_RELEASE) {
-                input.keyUp(key);
             }
         });
+        glfwSetCharCallback(window, (w, codepoint) -> gui.ifPresent(g -> g.character(w, codepoint)));
+        glfwSetScrollCallback(window, (w, dx, dy) -> gui.ifPresent(g -> g.scroll(w, dx, dy)));
         glfwSetMouseButtonCallback(window, (w, button, action, mods) -> {
-            if (button == GLFW_MOUSE_BUTTON_RIGHT && !lookToggled) {
+            gui.ifPresent(g -> g.mouseButton(w, button, action, mods));
+            boolean overGui = gui.isPresent() && gui.get().wantsMouse() && !input.looking();
+            if (button == GLFW_MOUSE_BUTTON_RIGHT && !lookToggled && !(overGui && action == GLFW_PRESS)) {
                 setLooking(window, action == GLFW_PRESS);
             }
         });
@@ -162,17 +206,21 @@ final class WindowLoop {
             case GLFW_KEY_MINUS -> setTime(day.changeSpeed(time(), 0.5));
             case GLFW_KEY_EQUAL -> setTime(day.changeSpeed(time(), 2));
             case GLFW_KEY_F5 -> reloadShaders();
-            case GLFW_KEY_F1 -> System.out.println(CONTROLS);
+            case GLFW_KEY_F1 -> gui.ifPresentOrElse(Gui::toggleControls, () -> System.out.println(CONTROLS));
+            case GLFW_KEY_F2 -> gui.ifPresent(Gui::togglePanel);
+            case GLFW_KEY_F3 -> gui.ifPresent(Gui::toggleHud);
             default -> { }
         }
     }
 
-    private TimeOfDay time() {
-        return engine.world().resource(TimeOfDay.class);
+    @Override
+    public TimeOfDay time() {
+        return engine().world().resource(TimeOfDay.class);
     }
 
-    private void setTime(TimeOfDay t) {
-        engine.world().setResource(t);
+    @Override
+    public void setTime(TimeOfDay t) {
+        engine().world().setResource(t);
     }
 
     private void setLooking(long window, boolean looking) {
@@ -201,7 +249,7 @@ final class WindowLoop {
             System.out.println("shaders come from the jar; start with --dev to edit ./shaders and reload them with F5");
             return;
         }
-        List<String> errors = engine.shaders().reloadAll();
+        List<String> errors = engine().shaders().reloadAll();
         if (errors.isEmpty()) {
             System.out.println("shaders reloaded");
         } else {

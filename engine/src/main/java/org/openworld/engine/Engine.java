@@ -424,6 +424,16 @@ public final class Engine implements AutoCloseable {
         return scene.read();
     }
 
+    /**
+     * Runs drawing that goes over the finished picture, into the scene target (the window's settings panel and HUD),
+     * so that what is shown and what is read back are one picture.
+     */
+    public void drawOver(Runnable drawing) {
+        scene.bind();
+        drawing.run();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+
     /** Shows the scene target in the window, scaled to its framebuffer. */
     public void present(int screenWidth, int screenHeight) {
         scene.blitToScreen(screenWidth, screenHeight);

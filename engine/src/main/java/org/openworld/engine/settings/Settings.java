@@ -47,6 +47,27 @@ public final class Settings {
         switches.putAll(switchDefaults);
     }
 
+    /** New settings with the same groups and system switches, every value at its default. */
+    public Settings defaults() {
+        return new Settings(groups(), switchDefaults.entrySet().stream().collect(Collectors.toMap(
+                e -> e.getKey().substring(SYSTEM_PREFIX.length()), Map.Entry::getValue, (a, b) -> a,
+                LinkedHashMap::new)));
+    }
+
+    /**
+     * Takes over every value of {@code other} at once (a settings file read into {@link #defaults()}), so no record
+     * is ever checked half-changed.
+     *
+     * @throws IllegalArgumentException if the two do not have the same keys
+     */
+    public void takeOver(Settings other) {
+        if (!other.keys().equals(keys())) {
+            throw new IllegalArgumentException("settings with other keys cannot be taken over");
+        }
+        current.putAll(other.current);
+        switches.putAll(other.switches);
+    }
+
     /** Whether the system of this name runs; true for a system without a switch. */
     public boolean systemEnabled(String system) {
         return switches.getOrDefault(SYSTEM_PREFIX + system, true);

@@ -87,6 +87,24 @@ class SettingsFileTest {
     }
 
     @Test
+    void readIntoDefaultsAndTakenOverReplacesEveryValue() throws IOException {
+        Settings live = fresh();
+        live.set("other.lod-bias", "1.5");
+        live.set("system.water", "off");
+        Path file = dir.resolve("radius.settings");
+        Files.writeString(file, "probe.radius=30\n");
+
+        Settings loaded = live.defaults();
+        SettingsFile.read(file, loaded);
+        live.takeOver(loaded);
+
+        assertEquals(30, live.get(ProbeSettings.class).radius());
+        assertEquals(0, live.get(OtherSettings.class).lodBias(), "a key the file does not name is at its default");
+        assertTrue(live.systemEnabled("water") && !live.systemEnabled("snow"), "switches too");
+        assertThrows(IllegalArgumentException.class, () -> live.takeOver(new Settings(List.of())));
+    }
+
+    @Test
     void aMissingFileIsNamed() {
         Path file = dir.resolve("nowhere.settings");
 
