@@ -2,6 +2,8 @@ package org.openworld.demo;
 
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Optional;
 import org.openworld.engine.bench.FrameRecord;
 
@@ -52,6 +54,17 @@ final class FrameHistory {
     /** Frames per second over the kept frames: their count over their summed time, not a mean of rates. */
     double fps() {
         return 1000 / meanFrameMs();
+    }
+
+    /**
+     * GPU time per pass: the spans ({@code pass.system}, {@code passN.system} for the N-th view of a pass, or
+     * {@code update.system}) summed by the pass's name, in the order the spans came.
+     */
+    static Map<String, Double> passTotals(Map<String, Double> spans) {
+        Map<String, Double> totals = new LinkedHashMap<>();
+        spans.forEach((span, ms) -> totals.merge(span.substring(0, span.indexOf('.')).replaceAll("[0-9]+$", ""), ms,
+                Double::sum));
+        return totals;
     }
 
     /** Longest frame time kept, milliseconds (the graph's scale); 0 before any arrived. */

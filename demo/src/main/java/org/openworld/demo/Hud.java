@@ -25,6 +25,13 @@ final class Hud {
     /** Distance from the picture's right edge, pixels. */
     private static final float MARGIN_PX = 10;
 
+    /** The counters the HUD shows on their own lines (every counter is in the list below them). */
+    private static final String PATCHES_DRAWN = "terrain.main.patches";
+    private static final String PATCHES_CULLED = "terrain.main.culled";
+    private static final String NODES_TESTED = "culling.main.tested";
+    private static final String NODES_OUTSIDE = "culling.main.outside";
+    private static final String NODES_INSIDE = "culling.main.inside";
+
     private final FrameHistory history = new FrameHistory(GRAPH_FRAMES);
 
     /** Takes a finished frame's record. */
@@ -57,13 +64,30 @@ final class Hud {
                 GRAPH_WIDTH_PX, GRAPH_HEIGHT_PX);
         ImGui.text(String.format("%,d triangles   %,d draw calls   CPU %.1f ms", r.triangles(), r.drawCalls(),
                 r.cpuMs()));
+        Map<String, Double> c = r.counters();
+        if (c.containsKey(PATCHES_DRAWN)) {
+            ImGui.text(String.format("terrain patches: %,d drawn, %,d culled (main view)",
+                    c.get(PATCHES_DRAWN).longValue(), c.getOrDefault(PATCHES_CULLED, 0.0).longValue()));
+        }
+        if (c.containsKey(NODES_TESTED)) {
+            ImGui.text(String.format("culling nodes: %,d tested, %,d outside, %,d inside (main view)",
+                    c.get(NODES_TESTED).longValue(), c.getOrDefault(NODES_OUTSIDE, 0.0).longValue(),
+                    c.getOrDefault(NODES_INSIDE, 0.0).longValue()));
+        }
         ImGui.separator();
-        ImGui.text("GPU time by pass.system (ms)");
-        r.passGpuMs().forEach((span, gpuMs) -> ImGui.text(String.format("  %-24s %6.2f", span, gpuMs)));
+        ImGui.text("GPU time by pass (ms)");
+        FrameHistory.passTotals(r.passGpuMs()).forEach((pass, gpuMs) ->
+                ImGui.text(String.format("  %-24s %7.2f", pass, gpuMs)));
+        if (ImGui.treeNode("by pass.system")) {
+            r.passGpuMs().forEach((span, gpuMs) -> ImGui.text(String.format("%-24s %7.2f", span, gpuMs)));
+            ImGui.treePop();
+        }
         ImGui.separator();
-        ImGui.text("counters");
-        Map<String, Double> sorted = new TreeMap<>(r.counters());
-        sorted.forEach((name, value) -> ImGui.text(String.format("  %-24s %8s", name,
-                value == Math.rint(value) ? String.format("%,d", value.longValue()) : String.format("%.2f", value))));
+        if (ImGui.treeNode("every counter")) {
+            Map<String, Double> sorted = new TreeMap<>(c);
+            sorted.forEach((name, value) -> ImGui.text(String.format("%-28s %10s", name, value == Math.rint(value)
+                    ? String.format("%,d", value.longValue()) : String.format("%.2f", value))));
+            ImGui.treePop();
+        }
     }
 }
