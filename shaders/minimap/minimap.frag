@@ -19,19 +19,26 @@ const vec3 MARKER_COLOR = vec3(0.90, 0.10, 0.05);  // signal red: no land or wat
 const vec3 RIM_COLOR = vec3(1.0);                  // white, so the marker shows on dark slopes too
 const float RIM_PX = 1.5;                          // the rim's width (px)
 
-// Signed distance (px) from a point to the marker, negative inside: an arrowhead pointing along +y, its tip at
-// length L from the camera and its back corners 0.6 L behind and beside it. For a convex shape the largest signed
-// distance to its edges' lines is exact inside and near the edges, which is all the rim needs.
+// Signed distance (px) from a point to the marker, negative inside: a dart pointing along +y, its tip at length L
+// from the camera, its barbs 0.6 L behind and beside it and a notch between them 0.25 L behind, so it reads as an
+// arrow and not as a triangle that might point either way. For a convex shape the largest signed distance to its
+// edges' lines is exact inside and near the edges, which is all the rim needs; the dart is the triangle of tip and
+// barbs less the triangle of barbs and notch.
 float edgeDistance(vec2 p, vec2 a, vec2 b) {
     vec2 e = normalize(b - a);
     return e.y * (p.x - a.x) - e.x * (p.y - a.y);  // positive right of a -> b: outside, the corners going round anticlockwise
 }
 
-float arrowhead(vec2 p, float L) {
+float triangle(vec2 p, vec2 a, vec2 b, vec2 c) {
+    return max(max(edgeDistance(p, a, b), edgeDistance(p, b, c)), edgeDistance(p, c, a));
+}
+
+float dart(vec2 p, float L) {
     vec2 tip = vec2(0.0, L);
     vec2 left = vec2(-0.6 * L, -0.6 * L);
     vec2 right = vec2(0.6 * L, -0.6 * L);
-    return max(max(edgeDistance(p, tip, left), edgeDistance(p, left, right)), edgeDistance(p, right, tip));
+    vec2 notch = vec2(0.0, -0.25 * L);
+    return max(triangle(p, tip, left, right), -triangle(p, left, right, notch));
 }
 
 void main() {
@@ -49,7 +56,7 @@ void main() {
     // 3. the marker, turned to the yaw: p in (right, forward) of the view direction, pixels from the centre
     vec2 p = px - 0.5 * side;
     vec2 local = vec2(p.x * uHeading.y - p.y * uHeading.x, dot(p, uHeading));
-    float d = arrowhead(local, uMarker.x);
+    float d = dart(local, uMarker.x);
     color = mix(color, RIM_COLOR, clamp(RIM_PX + 0.5 - d, 0.0, 1.0));  // a pixel's worth of anti-aliasing
     color = mix(color, MARKER_COLOR, clamp(0.5 - d, 0.0, 1.0));
     fragColor = vec4(color, 1.0);

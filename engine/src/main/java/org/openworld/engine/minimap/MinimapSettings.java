@@ -23,7 +23,7 @@ public record MinimapSettings(
     public static final MinimapSettings DEFAULTS = new MinimapSettings(
             false,            // shots and figures unchanged unless asked for
             0.3,              // 324 px at 1080p: readable, and leaves most of the view free
-            4000,             // m: the default world's whole 4 km tile, from valley to valley
+            4000,             // m: as wide as the default world's tile, a few hills and lakes each way
             Corner.TOP_RIGHT);
 
     public static final SettingsGroup<MinimapSettings> SETTINGS =

@@ -37,8 +37,8 @@ public final class MinimapSystem implements EngineSystem {
     private static final int UNIT_RELIEF = 0;
     /** Width of the border around the map, pixels: a thin dark line that parts it from the scene. */
     private static final float BORDER_PX = 2;
-    /** The marker's length from the camera to its tip, as a share of the map's side (19 px on the default 324 px). */
-    static final float MARKER_SHARE = 0.06f;
+    /** The marker's length from the camera to its tip, as a share of the map's side (23 px on the default 324 px). */
+    static final float MARKER_SHARE = 0.07f;
 
     private ShaderProgram program;
     private Uniform.Vec3 squareUniform;
@@ -110,6 +110,7 @@ public final class MinimapSystem implements EngineSystem {
         headingUniform.set((float) Math.sin(yaw), (float) Math.cos(yaw));
         markerUniform.set(MARKER_SHARE * square.side(), BORDER_PX);
         relief.bind(UNIT_RELIEF);
+        // 4. one square over the picture: no depth test, and the scene's depth left as it was
         glDisable(GL_DEPTH_TEST);
         glDepthMask(false);
         quad.draw(context.stats());

@@ -20,7 +20,7 @@
  * {@link org.openworld.engine.core.Pass#OVERLAY} pass, after every other system drawing there: one square of two
  * triangles, placed in pixels from the frame block's viewport. The fragment shader looks the texture up at the
  * camera's exact position plus its offset on the map, so the map slides smoothly between rebuilds; it draws the
- * marker, an arrowhead turned to the camera's yaw, from its signed distance (red, with a white rim and a pixel of
+ * marker, a dart turned to the camera's yaw, from its signed distance (red, with a white rim and a pixel of
  * anti-aliasing), and a 2-pixel border. No depth test, no depth written, no blending.
  *
  * <p><b>Cost.</b> Per frame one draw call and a texture fetch per covered pixel: 0.2 ms GPU (median,
