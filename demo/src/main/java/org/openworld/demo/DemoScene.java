@@ -5,6 +5,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.minimap.MinimapSystem;
 import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.shadow.ShadowSystem;
@@ -33,6 +34,7 @@ final class DemoScene {
                 new TerrainSystem(line -> System.err.println(line)),
                 new ShadowSystem(),
                 new WaterSystem(),
+                new MinimapSystem(),
                 new ParticleSystem());
     }
 }
