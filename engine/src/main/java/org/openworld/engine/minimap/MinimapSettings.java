@@ -6,13 +6,11 @@ import org.openworld.engine.settings.SettingsGroup;
 /**
  * Settings of the minimap, keys {@code minimap.*}.
  *
- * @param enabled whether the map is drawn; off by default, so shots and figures stay as they were
  * @param size    the map's side as a share of the picture's height
  * @param range   the ground shown across the map, west edge to east edge (and north to south), metres
  * @param corner  the corner of the picture the map sits in
  */
 public record MinimapSettings(
-        @Setting(doc = "minimap on or off") boolean enabled,
         @Setting(doc = "side of the map as a share of the picture height", min = 0.05, max = 0.9) double size,
         @Setting(doc = "ground shown across the map", unit = "m", min = 100, max = 100_000) double range,
         @Setting(doc = "corner of the picture the map sits in") Corner corner) {
@@ -21,10 +19,9 @@ public record MinimapSettings(
     public enum Corner { TOP_LEFT, TOP_RIGHT, BOTTOM_LEFT, BOTTOM_RIGHT }
 
     public static final MinimapSettings DEFAULTS = new MinimapSettings(
-            false,            // shots and figures unchanged unless asked for
             0.3,              // 324 px at 1080p: readable, and leaves most of the view free
             4000,             // m: as wide as the default world's tile, a few hills and lakes each way
-            Corner.TOP_RIGHT);
+            Corner.BOTTOM_RIGHT); // clear of the window's settings panel (top left) and HUD (top right)
 
     public static final SettingsGroup<MinimapSettings> SETTINGS =
             SettingsGroup.of("minimap", MinimapSettings.class, DEFAULTS);

@@ -55,7 +55,8 @@ public final class MinimapSystem implements EngineSystem {
     public SystemSpec spec() {
         // transparent(): drawn over the finished picture, after every other system that draws in OVERLAY
         return SystemSpec.named("minimap").reads(Settings.class, Camera.class, HeightField.class)
-                .transparent().draws(Pass.OVERLAY);
+                .transparent().draws(Pass.OVERLAY)
+                .offByDefault(); // shots and figures unchanged unless asked for: --set system.minimap=on
     }
 
     @Override
@@ -82,9 +83,6 @@ public final class MinimapSystem implements EngineSystem {
     public void render(Pass pass, RenderContext context) {
         Settings settings = context.world().resource(Settings.class);
         MinimapSettings s = settings.get(MinimapSettings.class);
-        if (!s.enabled()) {
-            return;
-        }
         CameraPose pose = context.world().resource(Camera.class).pose();
         // 1. the map around the camera: built again only when the camera nears its edge or what it shows changed
         HeightField field = context.world().findResource(HeightField.class).orElse(HeightField.FLAT);

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
@@ -57,7 +58,7 @@ class MinimapSystemTest {
         try (Engine engine = engine(TWO_SLOPES, 30)) {
             engine.render();
             Image off = engine.readImage();
-            engine.settings().set("minimap.enabled", "on");
+            engine.settings().set("system.minimap", "on");
             engine.render();
             Image on = engine.readImage();
             MinimapSettings.Square square = square(engine);
@@ -73,8 +74,8 @@ class MinimapSystemTest {
                 }
             }
             assertTrue(changed > 0.9 * square.side() * square.side(), changed + " of the map's pixels changed");
-            assertEquals(MinimapSettings.Corner.TOP_RIGHT, engine.settings().get(MinimapSettings.class).corner());
-            assertTrue(square.left() > W / 2 && square.top() < H / 2, "in the top right corner");
+            assertEquals(MinimapSettings.Corner.BOTTOM_RIGHT, engine.settings().get(MinimapSettings.class).corner());
+            assertTrue(square.left() > W / 2 && square.top() > H / 2, "in the bottom right corner");
         }
     }
 
@@ -86,7 +87,7 @@ class MinimapSystemTest {
             plain.render();
             without = plain.readImage();
         }
-        try (Engine engine = engine(TWO_SLOPES, 30, "minimap.enabled=off")) {
+        try (Engine engine = engine(TWO_SLOPES, 30, "system.minimap=off")) {
             engine.render();
             Image off = engine.readImage();
             for (int y = 0; y < H; y++) {
@@ -100,7 +101,7 @@ class MinimapSystemTest {
 
     @Test
     void theMarkerSitsAtTheCentreAndTurnsWithTheCamera() {
-        List<String> settings = List.of("minimap.enabled=on", "minimap.size=0.9");
+        List<String> settings = List.of("system.minimap=on", "minimap.size=0.9");
         boolean[] north = new boolean[2];
         boolean[] east = new boolean[2];
         double[] yaws = {0, 90};
@@ -125,7 +126,7 @@ class MinimapSystemTest {
 
     @Test
     void northIsUpAndEastIsRight() {
-        try (Engine engine = engine(TWO_SLOPES, 0, "minimap.enabled=on", "minimap.size=0.9")) {
+        try (Engine engine = engine(TWO_SLOPES, 0, "system.minimap=on", "minimap.size=0.9")) {
             engine.render();
             Image image = engine.readImage();
             MinimapSettings.Square square = square(engine);
@@ -150,8 +151,7 @@ class MinimapSystemTest {
         HeightField lake = (x, z) -> Math.hypot(x, z + 1000) < 400 ? -20 : 30;
         List<EngineSystem> systems = List.of(new TestSceneSystem(), minimap);
         Settings settings = new Settings(List.of(EngineSettings.GROUP, MinimapSettings.SETTINGS,
-                WaterSettings.SETTINGS));
-        settings.apply("minimap.enabled=on");
+                WaterSettings.SETTINGS), Map.of("test-scene", true, "minimap", true));
         settings.apply("minimap.size=0.9");
         try (Engine engine = new Engine(GL.context(), ShaderSources.classpath(), settings, systems, W, H)) {
             place(engine, lake, 0);
@@ -173,7 +173,7 @@ class MinimapSystemTest {
 
     @Test
     void theMapIsBuiltAgainOnlyWhenTheCameraMovedAQuarterOfTheRange() {
-        try (Engine engine = engine(TWO_SLOPES, 0, "minimap.enabled=on", "minimap.range=4000")) {
+        try (Engine engine = engine(TWO_SLOPES, 0, "system.minimap=on", "minimap.range=4000")) {
             Camera camera = engine.world().resource(Camera.class);
             List<Integer> builds = new ArrayList<>();
             for (double x : new double[] {0, 300, 900, 990, 1010, 1200}) {
@@ -198,7 +198,7 @@ class MinimapSystemTest {
             textures = objects.live(GlObjects.Kind.TEXTURE);
             total = objects.live();
         }
-        try (Engine engine = engine(TWO_SLOPES, 0, "minimap.enabled=on")) {
+        try (Engine engine = engine(TWO_SLOPES, 0, "system.minimap=on")) {
             engine.render();
             assertEquals(textures + 1, objects.live(GlObjects.Kind.TEXTURE), "one texture: the relief map");
             assertTrue(objects.live() > total + 1, "and its program and quad");
