@@ -21,8 +21,23 @@ final class ShotCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE.png", required = true, description = "The PNG file to write.")
     Path out;
 
+    /** What one shot made: the picture written to {@code --out} and the OpenGL it was made with. */
+    record Result(Image image, String renderer, String contextMode, double ms) {
+    }
+
     @Override
     public Integer call() throws Exception {
+        Result shot = take();
+        System.out.printf("wrote %s (%dx%d) in %.0f ms on %s, %s%n", out, shot.image().width(), shot.image().height(),
+                shot.ms(), shot.renderer(), shot.contextMode());
+        return 0;
+    }
+
+    /**
+     * Renders the image these options describe and writes it to {@code --out}: the whole of {@code shot}, less its
+     * printed line, so {@code openworld figures} makes each picture exactly as its printed command would.
+     */
+    Result take() throws Exception {
         var path = Poses.loadPath(pose);
         long start = System.nanoTime();
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
@@ -32,9 +47,8 @@ final class ShotCommand implements Callable<Integer> {
             launch.engine.render();
             Image image = launch.engine.readImage();
             image.writePng(out);
-            System.out.printf("wrote %s (%dx%d) in %.0f ms on %s, %s%n", out, image.width(), image.height(),
-                    (System.nanoTime() - start) / 1e6, launch.gl.renderer(), launch.gl.mode());
+            return new Result(image, launch.gl.renderer(), launch.gl.mode().toString(),
+                    (System.nanoTime() - start) / 1e6);
         }
-        return 0;
     }
 }
