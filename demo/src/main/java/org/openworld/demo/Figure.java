@@ -23,7 +23,7 @@ record Figure(String id, int number, String caption, String note, Tool tool, Lis
     enum Tool {
         /** {@code openworld shot}: one rendered image, {@code ID.png}. */
         SHOT("shot"),
-        /** {@code openworld heightmap}: the height, snow and spectrum maps, without OpenGL, in the folder {@code ID}. */
+        /** {@code openworld heightmap}: the height, snow and spectrum maps, no OpenGL, in the folder {@code ID}. */
         HEIGHTMAP("heightmap");
 
         final String command;

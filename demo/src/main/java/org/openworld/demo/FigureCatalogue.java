@@ -81,8 +81,8 @@ final class FigureCatalogue {
                 "16:30", FACE_POSE, "materials.normal-map=off", "materials.gloss-map=off"));
         list.add(shot("3b", 3, detail, "Normal map: the rock breaks into lit and shaded lumps, the snow gets a grain.",
                 "16:30", FACE_POSE, "materials.normal-map=on", "materials.gloss-map=off"));
-        list.add(shot("3c", 3, detail, "Gloss map: a faint sheen of sky and sun on the snow and smooth rock; against 3a "
-                + "only a few per cent of the pixels change visibly at this angle.",
+        list.add(shot("3c", 3, detail,
+                "Gloss map: a faint sheen of sky and sun on the snow and smooth rock, subtle at this angle.",
                 "16:30", FACE_POSE, "materials.normal-map=off", "materials.gloss-map=on"));
         list.add(shot("3d", 3, detail, "Both (the default): the lumps of 3b, their sunlit sides a little brighter.",
                 "16:30", FACE_POSE, "materials.normal-map=on", "materials.gloss-map=on"));
@@ -178,7 +178,8 @@ final class FigureCatalogue {
         for (int i = 0; i < kernelSides.length; i++) {
             int n = kernelSides[i];
             list.add(shot("11" + (char) ('a' + i), 11, kernels,
-                    n + "×" + n + " kernel, margin 0.01: " + (n == 1 ? "stair-stepped shadow edges, one texel each (10c's settings)"
+                    n + "×" + n + " kernel, margin 0.01: " + (n == 1
+                            ? "stair-stepped shadow edges, one texel each (10c's settings)"
                             : "edges fade over " + n + " texels"),
                     "17:00", DEFAULT_POSE, "shadow.method=paper", "shadow.margin=0.01", "shadow.kernel=" + n));
         }
@@ -207,7 +208,7 @@ final class FigureCatalogue {
         list.add(shot("14", 14, "Figure 14: A snowfall effect",
                 "A million flakes in the 30 m cube around the eye under a cloudy sky: round, soft-rimmed, larger near "
                         + "the eye.",
-                "14:00", LAKE_POSE, "particles.enabled=true", "particles.count=1000000", "clouds.cover=0.9"));
+                "14:00", LAKE_POSE, "particles.enabled=on", "particles.count=1000000", "clouds.cover=0.9"));
         return List.copyOf(list);
     }
 

@@ -85,7 +85,8 @@ final class Gallery {
                         : ", with " + escape(String.join(" ", made.overrides())) + " added to every command",
                 made.seconds()));
         html.append("<p>Each command writes into the current folder: run it in this folder to remake its picture. "
-                + "The quotes are the paper's caption of each figure, or its sentence that shows it.</p>\n</header>\n<nav>");
+                + "The quotes are the paper's caption of each figure, or its sentence that shows it.</p>\n"
+                + "</header>\n<nav>");
         byFigure.keySet().forEach(n -> html.append("<a href=\"#figure-").append(n).append("\">Figure ").append(n)
                 .append("</a>"));
         html.append("</nav>\n");

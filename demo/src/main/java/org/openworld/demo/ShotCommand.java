@@ -45,10 +45,28 @@ final class ShotCommand implements Callable<Integer> {
             launch.engine.update();
             camera.setPose(Poses.resolve(pose, path, launch.engine.world()));
             launch.engine.render();
-            Image image = launch.engine.readImage();
+            Image image = opaque(launch.engine.readImage());
             image.writePng(out);
             return new Result(image, launch.gl.renderer(), launch.gl.mode().toString(),
                     (System.nanoTime() - start) / 1e6);
         }
+    }
+
+    /**
+     * The picture as the window shows it: its colours, fully opaque. The scene target's alpha is no coverage but
+     * whatever the passes left there, and the paper's stencil water (section 3.3) leaves its reflectivity, the
+     * blend's destination alpha, over the lake: written as it is, a PNG viewer would show the page through the water.
+     */
+    private static Image opaque(Image image) {
+        byte[] rgba = new byte[image.width() * image.height() * 4];
+        for (int y = 0, i = 0; y < image.height(); y++) {
+            for (int x = 0; x < image.width(); x++, i += 4) {
+                for (int c = 0; c < 3; c++) {
+                    rgba[i + c] = (byte) image.channel(x, y, c);
+                }
+                rgba[i + 3] = (byte) 0xFF;
+            }
+        }
+        return new Image(image.width(), image.height(), rgba);
     }
 }
