@@ -8,8 +8,8 @@ import org.openworld.demo.Figure.Tool;
  * Every figure of the paper that shows a rendering or a map (all but figure 7, a diagram), as pictures the demo
  * makes: the one list {@code openworld figures} renders. Poses, times and settings are those of the docs pages
  * (docs/terrain.md, sky.md, shadows.md, water.md, particles.md) where they give them; the rest were chosen by looking
- * at the result, and are named below with what they show. The paper's words are quoted from
- * /work/shared/paper/openworld-2017.txt.
+ * at the result, and are named below with what they show. Captions quote the paper: a figure's own caption where
+ * it has one, else the sentence of the text that shows it.
  */
 final class FigureCatalogue {
 
@@ -19,15 +19,15 @@ final class FigureCatalogue {
     // Poses, x,y,z (m) and yaw,pitch (deg), as --camera takes them.
     /** The demo's starting pose ({@link DemoScene#DEFAULT_POSE}): a valley and the central mountain, looking north. */
     static final String DEFAULT_POSE = "0,400,900,0,-8";
-    /** Seed 1's highest peak, 1.3 km away to the north-west, from 600 m: the whole snow line in view (figures 1, 4). */
+    /** Seed 1's highest peak, about 1 km away to the north-west, from 600 m: its whole snow line in view (1, 4). */
     static final String PEAK_POSE = "-1200,600,200,313,-6";
-    /** The central mountain's rock and snow face from about 450 m: close enough for the 2.7 m detail (figure 3). */
+    /** The central mountain's rock and snow face, close enough that the 2.7 m detail tiles show (figure 3). */
     static final String FACE_POSE = "0,350,450,0,-15";
     /** High and looking down the valley: several distance rings of detail levels in view at once (figure 6). */
     static final String RINGS_POSE = "0,600,1500,0,-22";
     /** 80 m above a lake, looking down across it: water that mirrors a slope and shows its bed (figure 13). */
     static final String LAKE_ABOVE_POSE = "-900,80,300,0,-14";
-    /** 10 m above the same lake, looking west along it (docs/water.md, docs/particles.md). */
+    /** 10 m above a lake, looking west along it (docs/water.md, docs/particles.md). */
     static final String LAKE_POSE = "-780,10,0,270,-2";
     /** The starting point looking west and a little up, towards the evening sun (docs/sky.md, figure 8). */
     static final String WEST_SKY_POSE = "0,400,900,280,8";
