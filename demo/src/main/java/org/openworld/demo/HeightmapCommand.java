@@ -81,8 +81,7 @@ final class HeightmapCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        // The terrain group and the world seed, read and checked the way Launch.settings reads every group.
-        Settings settings = new Settings(List.of(EngineSettings.GROUP, TerrainSettings.SETTINGS));
+        Settings settings = newSettings();
         settings.set("engine.seed", Integer.toString(seed));
         set.forEach(settings::apply);
         TerrainSettings terrain = settings.get(TerrainSettings.class);
@@ -144,6 +143,14 @@ final class HeightmapCommand implements Callable<Integer> {
         System.out.println("wrote " + out.resolve(HEIGHT_PNG) + ", " + out.resolve(SNOW_PNG) + ", "
                 + out.resolve(SPECTRUM_PNG));
         return 0;
+    }
+
+    /**
+     * The settings this command reads, at their defaults: the world seed and the terrain group, checked the way
+     * {@code Launch.settings} checks every group. No renderer's group, as the maps need no OpenGL.
+     */
+    static Settings newSettings() {
+        return new Settings(List.of(EngineSettings.GROUP, TerrainSettings.SETTINGS));
     }
 
     private void prepareFolder() {

@@ -19,7 +19,7 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "openworld", mixinStandardHelpOptions = true, version = "OpenWorld 0.1",
         description = "Renders large outdoor worlds in real time. Without a command: 'run'.",
-        subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, HeightmapCommand.class,
+        subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, HeightmapCommand.class, FiguresCommand.class,
             SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
 public final class Main {
 

@@ -21,8 +21,23 @@ final class ShotCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE.png", required = true, description = "The PNG file to write.")
     Path out;
 
+    /** What one shot made: the picture written to {@code --out} and the OpenGL it was made with. */
+    record Result(Image image, String renderer, String contextMode, double ms) {
+    }
+
     @Override
     public Integer call() throws Exception {
+        Result shot = take();
+        System.out.printf("wrote %s (%dx%d) in %.0f ms on %s, %s%n", out, shot.image().width(), shot.image().height(),
+                shot.ms(), shot.renderer(), shot.contextMode());
+        return 0;
+    }
+
+    /**
+     * Renders the image these options describe and writes it to {@code --out}: the whole of {@code shot}, less its
+     * printed line, so {@code openworld figures} makes each picture exactly as its printed command would.
+     */
+    Result take() throws Exception {
         var path = Poses.loadPath(pose);
         long start = System.nanoTime();
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
@@ -30,11 +45,28 @@ final class ShotCommand implements Callable<Integer> {
             launch.engine.update();
             camera.setPose(Poses.resolve(pose, path, launch.engine.world()));
             launch.engine.render();
-            Image image = launch.engine.readImage();
+            Image image = opaque(launch.engine.readImage());
             image.writePng(out);
-            System.out.printf("wrote %s (%dx%d) in %.0f ms on %s, %s%n", out, image.width(), image.height(),
-                    (System.nanoTime() - start) / 1e6, launch.gl.renderer(), launch.gl.mode());
+            return new Result(image, launch.gl.renderer(), launch.gl.mode().toString(),
+                    (System.nanoTime() - start) / 1e6);
         }
-        return 0;
+    }
+
+    /**
+     * The picture as the window shows it: its colours, fully opaque. The scene target's alpha is no coverage but
+     * whatever the passes left there, and the paper's stencil water (section 3.3) leaves its reflectivity, the
+     * blend's destination alpha, over the lake: written as it is, a PNG viewer would show the page through the water.
+     */
+    private static Image opaque(Image image) {
+        byte[] rgba = new byte[image.width() * image.height() * 4];
+        for (int y = 0, i = 0; y < image.height(); y++) {
+            for (int x = 0; x < image.width(); x++, i += 4) {
+                for (int c = 0; c < 3; c++) {
+                    rgba[i + c] = (byte) image.channel(x, y, c);
+                }
+                rgba[i + 3] = (byte) 0xFF;
+            }
+        }
+        return new Image(image.width(), image.height(), rgba);
     }
 }

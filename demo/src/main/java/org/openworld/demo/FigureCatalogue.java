@@ -1,0 +1,226 @@
+package org.openworld.demo;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.openworld.demo.Figure.Tool;
+
+/**
+ * Every figure of the paper that shows a rendering or a map (all but figure 7, a diagram), as pictures the demo
+ * makes: the one list {@code openworld figures} renders. Poses, times and settings are those of the docs pages
+ * (docs/terrain.md, sky.md, shadows.md, water.md, particles.md) where they give them; the rest were chosen by looking
+ * at the result, and are named below with what they show. Captions quote the paper: a figure's own caption where
+ * it has one, else the sentence of the text that shows it.
+ */
+final class FigureCatalogue {
+
+    /** The world seed of every picture: the default world, the one the docs pages show. */
+    static final int SEED = 1;
+
+    // Poses, x,y,z (m) and yaw,pitch (deg), as --camera takes them.
+    /** The demo's starting pose ({@link DemoScene#DEFAULT_POSE}): a valley and the central mountain, looking north. */
+    static final String DEFAULT_POSE = "0,400,900,0,-8";
+    /** Seed 1's highest peak, about 1 km away to the north-west, from 600 m: its whole snow line in view (1, 4). */
+    static final String PEAK_POSE = "-1200,600,200,313,-6";
+    /** The central mountain's rock and snow face, close enough that the 2.7 m detail tiles show (figure 3). */
+    static final String FACE_POSE = "0,350,450,0,-15";
+    /** High and looking down the valley: several distance rings of detail levels in view at once (figure 6). */
+    static final String RINGS_POSE = "0,600,1500,0,-22";
+    /** 80 m above a lake, looking down across it: water that mirrors a slope and shows its bed (figure 13). */
+    static final String LAKE_ABOVE_POSE = "-900,80,300,0,-14";
+    /** 10 m above a lake, looking west along it (docs/water.md, docs/particles.md). */
+    static final String LAKE_POSE = "-780,10,0,270,-2";
+    /** The starting point looking west and a little up, towards the evening sun (docs/sky.md, figure 8). */
+    static final String WEST_SKY_POSE = "0,400,900,280,8";
+    /** The starting point looking north-north-east and up, away from the noon sun (docs/sky.md, figure 5). */
+    static final String CLOUDS_POSE = "0,400,900,20,12";
+    /** Figure 9 looks at the sun: east in the morning, west in the evening, and north at noon (backscattering). */
+    static final String DAWN_POSE = "0,400,900,75,5";
+    static final String NOON_POSE = "0,400,900,0,5";
+    static final String DUSK_POSE = "0,400,900,285,5";
+
+    private static final List<Figure> ALL = catalogue();
+
+    private FigureCatalogue() {
+    }
+
+    /** Every picture, in the paper's order. */
+    static List<Figure> all() {
+        return ALL;
+    }
+
+    /** The paper's figure numbers that have pictures here, ascending. */
+    static List<Integer> numbers() {
+        return ALL.stream().map(Figure::number).distinct().sorted().toList();
+    }
+
+    private static List<Figure> catalogue() {
+        List<Figure> list = new ArrayList<>();
+
+        // Figure 1: snow by altitude bands against the snow map (paper 2.2)
+        list.add(shot("1a", 1, "Texturing according to spatial coordinates only gives a very flat and unrealistic "
+                + "impression, especially for the snow texture as can be seen in figure 1a.",
+                "Snow by height alone (materials.snow-mode=altitude-bands): one level snow line cuts straight across "
+                        + "the peak.",
+                "16:30", PEAK_POSE, "materials.snow-mode=altitude-bands"));
+        list.add(shot("1b", 1, "However, using the height-map generated previously and generate snow with probability "
+                + "proportional to the height (normalized between minimum and maximum height, and some morphological "
+                + "operations afterwards) gives the result shown in figure 1b.",
+                "The snow map (the default): patches that thin out down the slopes instead of a line.",
+                "16:30", PEAK_POSE));
+
+        // Figure 2: the maps, made on the CPU
+        list.add(new Figure("2", 2, "(a) Generated height-map (b) Generated snow-map",
+                "height.png: lowest sample black, highest white; snow.png: white where snow lies, on the bright high "
+                        + "ground of height.png; spectrum.png (not in the paper): the spectrum falls as 1/f^(2β).",
+                Tool.HEIGHTMAP, List.of("--seed", Integer.toString(SEED))));
+
+        // Figure 3: local detail from the tangent frame
+        String detail = "The results corresponding to no local detail, with normal-map, with gloss-map and with both "
+                + "is shown in figure 3.";
+        list.add(shot("3a", 3, detail, "No local detail: smooth rock and snow, shaded by the height map's slope alone.",
+                "16:30", FACE_POSE, "materials.normal-map=off", "materials.gloss-map=off"));
+        list.add(shot("3b", 3, detail, "Normal map: the rock breaks into lit and shaded lumps, the snow gets a grain.",
+                "16:30", FACE_POSE, "materials.normal-map=on", "materials.gloss-map=off"));
+        list.add(shot("3c", 3, detail,
+                "Gloss map: a faint sheen of sky and sun on the snow and smooth rock, subtle at this angle.",
+                "16:30", FACE_POSE, "materials.normal-map=off", "materials.gloss-map=on"));
+        list.add(shot("3d", 3, detail, "Both (the default): the lumps of 3b, their sunlit sides a little brighter.",
+                "16:30", FACE_POSE, "materials.normal-map=on", "materials.gloss-map=on"));
+
+        // Figure 4: the tangent frame itself
+        list.add(shot("4", 4, "Figure 4: Visualization of the local topology",
+                "terrain-debug.colouring=tangent-space: red the tangent's rise (slope along x), green the normal's "
+                        + "height (flatness), blue the bitangent's rise (slope along z).",
+                "16:30", PEAK_POSE, "terrain-debug.colouring=tangent-space"));
+
+        // Figure 5: mapping the clouds onto the dome (paper 2.3)
+        list.add(shot("5a", 5, "Sampling from the cloud texture with the skydome texture coordinates (spherical "
+                + "angles) directly results in a very non-open effect, as can be seen in figure 5a.",
+                "Spherical: one tile stretched over the dome, streaks at the horizon, a closed-in look.",
+                "11:00", CLOUDS_POSE, "clouds.mapping=spherical"));
+        list.add(shot("5b", 5, "The problem clearly lies in the horizon, so a first approach could be to try to hide "
+                + "this effect with a fog, the result can be seen in figure 5b.",
+                "Spherical with fog: the horizon hidden, the error not.",
+                "11:00", CLOUDS_POSE, "clouds.mapping=spherical-fog"));
+        list.add(shot("5c", 5, "The problem is that the coordinates need to be perspective corrected, as can be seen "
+                + "in figure 5c.",
+                "Perspective: clouds shrink towards the horizon as they should, but the tile repeats and far texels "
+                        + "alias.",
+                "11:00", CLOUDS_POSE, "clouds.mapping=perspective"));
+        list.add(shot("5d", 5, "Now the problem is that we can see how the same texture is repeated over and over, so "
+                + "we again try to hide this with a fog effect, the result is quite pleasing and can be seen in "
+                + "figure 5d.",
+                "Perspective with fog (the default): the far layer fades into the sky's own horizon colour.",
+                "11:00", CLOUDS_POSE, "clouds.mapping=perspective-fog"));
+
+        // Figure 6: the paper's flat grid of geomipmaps, coloured by level (paper 2.5)
+        String levels = "Figure 6: Geomipmapping with various base resolution levels";
+        int[] bases = {32, 64, 128, 256};
+        for (int i = 0; i < bases.length; i++) {
+            list.add(shot("6" + (char) ('a' + i), 6, levels,
+                    "B = " + bases[i] + " m: each colour one level L = floor(log2(D/B)) of the paper's flat grid "
+                            + "(lod.mode=flat-grid); doubling B moves every ring one level out.",
+                    "16:30", RINGS_POSE, "lod.mode=flat-grid", "terrain-debug.colouring=levels",
+                    "lod.base-resolution=" + bases[i]));
+        }
+
+        // Figure 8: the two kinds of scattering (paper 3.1)
+        String phases = "The scattering equations are solved for two phase functions, one for Rayleigh scattering "
+                + "(giving the ambient background colors), and one for Mie scattering (giving the red-yellow colors "
+                + "resulting from larger particles).";
+        list.add(shot("8a", 8, phases, "Both (the default).", "17:30", WEST_SKY_POSE, "atmosphere.component=both"));
+        list.add(shot("8b", 8, phases, "Rayleigh only: the blue background, reddening towards the low sun.",
+                "17:30", WEST_SKY_POSE, "atmosphere.component=rayleigh"));
+        list.add(shot("8c", 8, phases, "Mie only: the bright glow around the sun, forward-peaked.",
+                "17:30", WEST_SKY_POSE, "atmosphere.component=mie"));
+
+        // Figure 9: a day, the paper's single scattering, then the default multiple scattering for comparison.
+        // Auto-exposure off and a fixed exposure per time (docs/sky.md), so both rows of a time are shown alike.
+        record Moment(String letter, String caption, String time, String pose, int exposureEv, String look) {
+        }
+        List<Moment> day = List.of(
+                new Moment("a", "(a) Early dawn, absence of higher order scattering terms obvious", "04:42", DAWN_POSE,
+                        7, "sun 6° below the horizon: a glow in the east and a duller, greyer sky away from it"),
+                new Moment("b", "(b) Just before sunrise", "05:06", DAWN_POSE, 5,
+                        "sun 2° below: orange horizon, the peaks still unlit"),
+                new Moment("c", "(c) Sunrise", "05:24", DAWN_POSE, 3,
+                        "sun 1° up: the first light on the peaks, lit cloud undersides"),
+                new Moment("d", "(d) Daylight backscattering", "12:00", NOON_POSE, 0,
+                        "noon, looking away from the sun: deep blue overhead, paler at the horizon"),
+                new Moment("e", "(e) Sunset", "18:36", DUSK_POSE, 3,
+                        "sun 1° up in the west: red-yellow light, long shadows"),
+                new Moment("f", "(f) Dusk, absence of higher order scattering terms obvious", "19:18", DUSK_POSE, 7,
+                        "sun 6° below: only the western horizon still glows"));
+        for (String model : List.of("single", "multiple")) {
+            for (Moment m : day) {
+                boolean paper = model.equals("single");
+                list.add(shot("9" + m.letter() + (paper ? "" : "-multiple"), 9, m.caption(),
+                        (paper ? "Single scattering, the paper's: " : "Multiple scattering (the default), to set "
+                                + "beside 9" + m.letter() + ": ") + m.look() + "; exposure " + m.exposureEv() + " EV.",
+                        m.time(), m.pose(), "atmosphere.scattering=" + model, "sky.auto-exposure=off",
+                        "sky.exposure=" + m.exposureEv()));
+            }
+        }
+
+        // Figures 10-12: the paper's single shadow map (paper 3.2), at the docs' 17:00 from the starting pose
+        String margins = "Figure 10: Shadow mapping with different Z-buffer margins";
+        String[] marginValues = {"0", "0.001", "0.01", "0.1"};
+        String[] marginLooks = {"acne: false shadow in stripes and speckles on the sunlit slopes",
+            "less acne", "clean", "the shadows shrink away from the ridges that cast them"};
+        for (int i = 0; i < marginValues.length; i++) {
+            list.add(shot("10" + (char) ('a' + i), 10, margins,
+                    "Margin " + marginValues[i] + ", 1×1 kernel: " + marginLooks[i] + ".",
+                    "17:00", DEFAULT_POSE, "shadow.method=paper", "shadow.kernel=1",
+                    "shadow.margin=" + marginValues[i]));
+        }
+        String kernels = "Figure 11: Shadow mapping with different filter kernel sizes";
+        int[] kernelSides = {1, 3, 5, 7};
+        for (int i = 0; i < kernelSides.length; i++) {
+            int n = kernelSides[i];
+            list.add(shot("11" + (char) ('a' + i), 11, kernels,
+                    n + "×" + n + " kernel, margin 0.01: " + (n == 1
+                            ? "stair-stepped shadow edges, one texel each (10c's settings)"
+                            : "edges fade over " + n + " texels"),
+                    "17:00", DEFAULT_POSE, "shadow.method=paper", "shadow.margin=0.01", "shadow.kernel=" + n));
+        }
+        list.add(shot("12", 12, "Figure 12: Shadow mapping with 0.01 Z-buffer margin and 5x5 filter kernel size gives "
+                + "a good trade-off between rendering quality and efficiency",
+                "Clean and soft, but the single map's metres-wide texels blur the small shadows of ledges into blots.",
+                "17:00", DEFAULT_POSE, "shadow.method=paper", "shadow.margin=0.01", "shadow.kernel=5"));
+        list.add(shot("12-cascades", 12, "Figure 12: Shadow mapping with 0.01 Z-buffer margin and 5x5 filter kernel "
+                + "size gives a good trade-off between rendering quality and efficiency",
+                "Not in the paper: the default cascaded maps at the same moment, to set beside 12: sharp near shadows.",
+                "17:00", DEFAULT_POSE));
+
+        // Figure 13: the paper's stencil water (paper 3.3)
+        String alpha = "Figure 13: Different alpha values for the water mask determines the transparency and "
+                + "reflective properties";
+        String[] alphas = {"0", "0.5", "1"};
+        String[] alphaLooks = {"the lake bed through the water, no reflection",
+            "half and half; nothing clips the mirrored scene, so mirrored slopes under the water show too",
+            "only the mirror: sky and slopes"};
+        for (int i = 0; i < alphas.length; i++) {
+            list.add(shot("13" + (char) ('a' + i), 13, alpha, "Water alpha " + alphas[i] + ": " + alphaLooks[i] + ".",
+                    "15:00", LAKE_ABOVE_POSE, "water.method=stencil", "water.alpha=" + alphas[i]));
+        }
+
+        // Figure 14: snowfall (paper 4)
+        list.add(shot("14", 14, "Figure 14: A snowfall effect",
+                "A million flakes in the 30 m cube around the eye under a cloudy sky: round, soft-rimmed, larger near "
+                        + "the eye.",
+                "14:00", LAKE_POSE, "particles.enabled=on", "particles.count=1000000", "clouds.cover=0.9"));
+        return List.copyOf(list);
+    }
+
+    /** A shot at the catalogue's seed: {@code --seed --time --camera=} and one {@code --set} per setting. */
+    private static Figure shot(String id, int number, String caption, String note, String time, String pose,
+            String... settings) {
+        List<String> arguments = new ArrayList<>(List.of("--seed", Integer.toString(SEED), "--time", time,
+                "--camera=" + pose));
+        for (String setting : settings) {
+            arguments.add("--set");
+            arguments.add(setting);
+        }
+        return new Figure(id, number, caption, note, Tool.SHOT, arguments);
+    }
+}

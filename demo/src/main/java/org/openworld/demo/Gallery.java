@@ -1,0 +1,152 @@
+package org.openworld.demo;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.regex.Pattern;
+
+/**
+ * The {@code index.html} of {@code openworld figures}: one static page, grouped by the paper's figure, that shows each
+ * picture with its id, the paper's words, what to look for and the exact command that made it; a header says how
+ * the set was made. Plain HTML and a little CSS, no scripts, so it opens from the folder anywhere.
+ */
+final class Gallery {
+
+    static final String INDEX = "index.html";
+
+    /** Words a POSIX shell reads as they are; anything else is single-quoted. */
+    private static final Pattern PLAIN_WORD = Pattern.compile("[A-Za-z0-9_@%+=:,./-]+");
+
+    /**
+     * How the set was made, for the header.
+     *
+     * @param invocation the {@code openworld figures} command line
+     * @param renderer   the OpenGL renderer and context mode, or why there is none
+     * @param date       when it was made
+     * @param seconds    the whole run's wall time
+     */
+    record Made(String invocation, String renderer, String date, Size size, int seed, List<String> overrides,
+            double seconds) {
+    }
+
+    /** One picture made: its catalogue entry, the command that made it as a shell line, and its wall time. */
+    record Plate(Figure figure, String command, double seconds) {
+    }
+
+    private Gallery() {
+    }
+
+    /** Writes {@code index.html} into {@code dir}, which holds the plates' images. */
+    static Path write(Path dir, Made made, List<Plate> plates) throws IOException {
+        return Files.writeString(dir.resolve(INDEX), html(made, plates));
+    }
+
+    static String html(Made made, List<Plate> plates) {
+        Map<Integer, List<Plate>> byFigure = new LinkedHashMap<>();
+        plates.forEach(p -> byFigure.computeIfAbsent(p.figure().number(), n -> new ArrayList<>()).add(p));
+
+        StringBuilder html = new StringBuilder();
+        html.append("""
+                <!DOCTYPE html>
+                <html lang="en">
+                <head>
+                <meta charset="utf-8">
+                <title>OpenWorld: the paper's figures</title>
+                <style>
+                body { font-family: sans-serif; margin: 1.5rem; max-width: 110rem; color: #222; }
+                header p, nav { max-width: 60rem; }
+                nav a { margin-right: .6rem; }
+                section { margin-top: 2rem; border-top: 1px solid #ccc; }
+                .plates { display: grid; grid-template-columns: repeat(auto-fill, minmax(26rem, 1fr)); gap: 1.2rem; }
+                figure { margin: 0; }
+                figure img { width: 100%; height: auto; border: 1px solid #ddd; display: block; }
+                .id { font-weight: bold; margin-right: .4rem; }
+                blockquote { margin: .3rem 0; font-style: italic; color: #444; }
+                .note { margin: .3rem 0; }
+                code { display: block; background: #f4f4f4; padding: .4rem; font-size: .85em; white-space: pre-wrap;
+                       word-break: break-all; user-select: all; }
+                .time, .file { color: #777; font-size: .85em; }
+                </style>
+                </head>
+                <body>
+                <header>
+                <h1>OpenWorld: the paper's figures, remade</h1>
+                """);
+        html.append("<p>Made by <code>").append(escape(made.invocation())).append("</code></p>\n");
+        html.append(String.format(Locale.ROOT, "<p>Made %s with %s: %d pictures of %s pixels, world seed %d%s, in "
+                        + "%.0f s.</p>%n", escape(made.date()), escape(made.renderer()), plates.size(),
+                made.size().width() + "×" + made.size().height(), made.seed(),
+                made.overrides().isEmpty() ? ""
+                        : ", with " + escape(String.join(" ", made.overrides())) + " added to every command",
+                made.seconds()));
+        html.append("<p>Each command writes into the current folder: run it in this folder to remake its picture. "
+                + "The quotes are the paper's caption of each figure, or its sentence that shows it.</p>\n"
+                + "</header>\n<nav>");
+        byFigure.keySet().forEach(n -> html.append("<a href=\"#figure-").append(n).append("\">Figure ").append(n)
+                .append("</a>"));
+        html.append("</nav>\n");
+
+        byFigure.forEach((number, group) -> {
+            html.append("<section id=\"figure-").append(number).append("\">\n<h2>Figure ").append(number)
+                    .append("</h2>\n<div class=\"plates\">\n");
+            group.forEach(plate -> plate(html, plate));
+            html.append("</div>\n</section>\n");
+        });
+        html.append("</body>\n</html>\n");
+        return html.toString();
+    }
+
+    private static void plate(StringBuilder html, Plate plate) {
+        Figure figure = plate.figure();
+        html.append("<figure id=\"").append(escape(figure.id())).append("\">\n");
+        List<String> files = figure.files();
+        for (String file : files) {
+            String link = escape(file);
+            html.append("<a href=\"").append(link).append("\"><img src=\"").append(link).append("\" alt=\"Figure ")
+                    .append(figure.number()).append(", ").append(link).append("\" loading=\"lazy\"></a>\n");
+            if (files.size() > 1) {
+                html.append("<div class=\"file\">").append(link).append("</div>\n");
+            }
+        }
+        html.append("<figcaption><span class=\"id\">").append(escape(figure.id())).append("</span>")
+                .append("<blockquote>").append(escape(figure.caption())).append("</blockquote>\n")
+                .append("<p class=\"note\">").append(escape(figure.note())).append("</p>\n")
+                .append("<code>").append(escape(plate.command())).append("</code>\n")
+                .append(String.format(Locale.ROOT, "<span class=\"time\">%.1f s</span>", plate.seconds()))
+                .append("</figcaption>\n</figure>\n");
+    }
+
+    /** Text safe inside an HTML element or a double- or single-quoted attribute. */
+    static String escape(String text) {
+        StringBuilder out = new StringBuilder(text.length());
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            switch (c) {
+                case '&' -> out.append("&amp;");
+                case '<' -> out.append("&lt;");
+                case '>' -> out.append("&gt;");
+                case '"' -> out.append("&quot;");
+                case '\'' -> out.append("&#39;");
+                default -> out.append(c);
+            }
+        }
+        return out.toString();
+    }
+
+    /** Words joined into one line a POSIX shell splits back into the same words. */
+    static String shellLine(List<String> words) {
+        StringBuilder line = new StringBuilder();
+        for (String word : words) {
+            if (!line.isEmpty()) {
+                line.append(' ');
+            }
+            line.append(PLAIN_WORD.matcher(word).matches() ? word : "'" + word.replace("'", "'\\''") + "'");
+        }
+        return line.toString();
+    }
+}
