@@ -208,7 +208,7 @@ final class FigureCatalogue {
         list.add(shot("14", 14, "Figure 14: A snowfall effect",
                 "A million flakes in the 30 m cube around the eye under a cloudy sky: round, soft-rimmed, larger near "
                         + "the eye.",
-                "14:00", LAKE_POSE, "particles.enabled=on", "particles.count=1000000", "clouds.cover=0.9"));
+                "14:00", LAKE_POSE, "system.particles=on", "particles.count=1000000", "clouds.cover=0.9"));
         return List.copyOf(list);
     }
 

@@ -1,8 +1,11 @@
 package org.openworld.demo;
 
+import static org.lwjgl.glfw.GLFW.glfwSetWindowSize;
+
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -20,6 +23,13 @@ final class ShotCommand implements Callable<Integer> {
 
     @Option(names = "--out", paramLabel = "FILE.png", required = true, description = "The PNG file to write.")
     Path out;
+
+    @Option(names = "--ui", description = "Draw the window's settings panel and HUD over the picture, as the window "
+            + "shows them (for screenshots).")
+    boolean ui;
+
+    /** Frames rendered before a --ui shot, so the HUD has timings to show (they arrive a frame or two late). */
+    private static final int UI_FRAMES = 4;
 
     /** What one shot made: the picture written to {@code --out} and the OpenGL it was made with. */
     record Result(Image image, String renderer, String contextMode, double ms) {
@@ -44,11 +54,45 @@ final class ShotCommand implements Callable<Integer> {
             Camera camera = launch.engine.world().resource(Camera.class);
             launch.engine.update();
             camera.setPose(Poses.resolve(pose, path, launch.engine.world()));
-            launch.engine.render();
+            if (ui) {
+                renderWithUi(launch);
+            } else {
+                launch.engine.render();
+            }
             Image image = opaque(launch.engine.readImage());
             image.writePng(out);
             return new Result(image, launch.gl.renderer(), launch.gl.mode().toString(),
                     (System.nanoTime() - start) / 1e6);
+        }
+    }
+
+    /** Renders a few frames with the panel and HUD drawn over them, as {@link WindowLoop} does. */
+    private static void renderWithUi(Launch launch) {
+        var engine = launch.engine;
+        glfwSetWindowSize(launch.gl.window(), engine.width(), engine.height()); // the size Dear ImGui lays out in
+        Hud hud = new Hud();
+        SettingsPanel panel = new SettingsPanel(engine.settings(), new SettingsPanel.Host() {
+            @Override
+            public TimeOfDay time() {
+                return engine.world().resource(TimeOfDay.class);
+            }
+
+            @Override
+            public void setTime(TimeOfDay time) {
+                engine.world().setResource(time);
+            }
+
+            @Override
+            public void rebuild() {
+                throw new IllegalStateException("a shot's panel is not interactive");
+            }
+        });
+        try (Gui gui = new Gui(launch.gl.window(), panel, hud)) {
+            for (int i = 0; i < UI_FRAMES; i++) {
+                engine.render();
+                engine.drawOver(gui::draw);
+                engine.collectFrames(true, hud::add);
+            }
         }
     }
 

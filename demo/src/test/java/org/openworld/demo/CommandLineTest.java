@@ -35,6 +35,30 @@ class CommandLineTest {
     }
 
     @Test
+    void shotWithUiDrawsThePanelOverThePicture() throws Exception {
+        Path plain = dir.resolve("plain.png");
+        Path ui = dir.resolve("ui.png");
+        String[] common = {"--size", "320x180", "--set", "terrain.size=256", "--time", "12:00"};
+        assertEquals(0, Main.execute(concat(new String[] {"shot", "--out", plain.toString()}, common)));
+        assertEquals(0, Main.execute(concat(new String[] {"shot", "--ui", "--out", ui.toString()}, common)));
+        Image a = Image.read(plain);
+        Image b = Image.read(ui);
+        int changed = 0;
+        for (int y = 30; y < 100; y++) {
+            for (int x = 20; x < 100; x++) {
+                changed += a.channel(x, y, 0) != b.channel(x, y, 0) ? 1 : 0;
+            }
+        }
+        assertTrue(changed > 0.5 * 80 * 70, "the panel covers the top left: " + changed);
+    }
+
+    private static String[] concat(String[] a, String[] b) {
+        String[] all = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
+    }
+
+    @Test
     void cameraOptionMovesTheView() throws Exception {
         Path up = dir.resolve("up.png");
         Path down = dir.resolve("down.png");
