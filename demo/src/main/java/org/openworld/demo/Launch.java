@@ -87,6 +87,26 @@ final class Launch implements AutoCloseable {
         engine = fresh;
     }
 
+    /** The settings panel's view of this launch: the running engine's clock, and {@link #rebuild()}. */
+    SettingsPanel.Host panelHost() {
+        return new SettingsPanel.Host() {
+            @Override
+            public TimeOfDay time() {
+                return engine.world().resource(TimeOfDay.class);
+            }
+
+            @Override
+            public void setTime(TimeOfDay time) {
+                engine.world().setResource(time);
+            }
+
+            @Override
+            public void rebuild() {
+                Launch.this.rebuild();
+            }
+        };
+    }
+
     private static ShaderSources devShaders() {
         Path dir = Path.of("shaders");
         if (!Files.isDirectory(dir.resolve("common"))) {

@@ -5,7 +5,6 @@ import static org.lwjgl.glfw.GLFW.glfwSetWindowSize;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.openworld.engine.camera.Camera;
-import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -71,22 +70,7 @@ final class ShotCommand implements Callable<Integer> {
         var engine = launch.engine;
         glfwSetWindowSize(launch.gl.window(), engine.width(), engine.height()); // the size Dear ImGui lays out in
         Hud hud = new Hud();
-        SettingsPanel panel = new SettingsPanel(engine.settings(), new SettingsPanel.Host() {
-            @Override
-            public TimeOfDay time() {
-                return engine.world().resource(TimeOfDay.class);
-            }
-
-            @Override
-            public void setTime(TimeOfDay time) {
-                engine.world().setResource(time);
-            }
-
-            @Override
-            public void rebuild() {
-                throw new IllegalStateException("a shot's panel is not interactive");
-            }
-        });
+        SettingsPanel panel = new SettingsPanel(engine.settings(), launch.panelHost());
         try (Gui gui = new Gui(launch.gl.window(), panel, hud)) {
             for (int i = 0; i < UI_FRAMES; i++) {
                 engine.render();

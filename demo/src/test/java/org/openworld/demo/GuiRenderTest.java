@@ -9,7 +9,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.Engine;
 import org.openworld.engine.camera.Camera;
-import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine;
 
@@ -35,22 +34,7 @@ class GuiRenderTest {
         glfwSetWindowSize(launch.gl.window(), W, H); // the display size Dear ImGui lays out in
         Engine engine = launch.engine;
         Hud hud = new Hud();
-        SettingsPanel panel = new SettingsPanel(engine.settings(), new SettingsPanel.Host() {
-            @Override
-            public TimeOfDay time() {
-                return engine.world().resource(TimeOfDay.class);
-            }
-
-            @Override
-            public void setTime(TimeOfDay time) {
-                engine.world().setResource(time);
-            }
-
-            @Override
-            public void rebuild() {
-                launch.rebuild();
-            }
-        });
+        SettingsPanel panel = new SettingsPanel(engine.settings(), launch.panelHost());
         gui = new Gui(launch.gl.window(), panel, hud);
         engine.update();
         engine.render();
