@@ -10,11 +10,13 @@ import imgui.type.ImFloat;
 import imgui.type.ImInt;
 import imgui.type.ImString;
 import java.io.IOException;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsException;
@@ -136,11 +138,11 @@ final class SettingsPanel {
 
     private void drawFileButtons() {
         if (ImGui.button("Save")) {
-            save(Path.of(file.get()));
+            file().ifPresent(this::save);
         }
         ImGui.sameLine();
         if (ImGui.button("Load")) {
-            load(Path.of(file.get()));
+            file().ifPresent(this::load);
         }
         ImGui.sameLine();
         ImGui.inputText("file", file);
@@ -169,6 +171,16 @@ final class SettingsPanel {
             say(String.format("world rebuilt in %.1f s", (System.nanoTime() - start) / 1e9), false);
         } catch (RuntimeException e) {
             say("the world could not be rebuilt, the old one stays: " + e.getMessage(), true);
+        }
+    }
+
+    /** The file named in the field, or empty with the reason shown. */
+    private Optional<Path> file() {
+        try {
+            return Optional.of(Path.of(file.get().strip()));
+        } catch (InvalidPathException e) {
+            say("'" + file.get() + "' is not a file name: " + e.getReason(), true);
+            return Optional.empty();
         }
     }
 
