@@ -17,6 +17,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Supplier;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsException;
@@ -133,7 +134,7 @@ final class SettingsPanel {
                 ImGuiSliderFlags.Logarithmic)) {
             host.setTime(new TimeOfDay(host.time().hours(), number.get()));
         }
-        tooltip("simulated hours per real hour; 0 stops the sun (keys: T pause, [ ] scrub, - = speed)");
+        tooltip(() -> "simulated hours per real hour; 0 stops the sun (keys: T pause, [ ] scrub, - = speed)");
     }
 
     private void drawFileButtons() {
@@ -146,7 +147,7 @@ final class SettingsPanel {
         }
         ImGui.sameLine();
         ImGui.inputText("file", file);
-        tooltip("a file of key=value lines: 'openworld --config FILE' starts with it");
+        tooltip(() -> "a file of key=value lines: 'openworld --config FILE' starts with it");
     }
 
     /** What "Rebuild world" does: asks the window to rebuild before its next frame. */
@@ -269,7 +270,7 @@ final class SettingsPanel {
                 }
             }
         }
-        tooltip(e.doc() + (e.atStart() ? "; read when the world is built" : "") + "\n--set " + e.key() + "="
+        tooltip(() -> e.doc() + (e.atStart() ? "; read when the world is built" : "") + "\n--set " + e.key() + "="
                 + settings.text(e.key()));
     }
 
@@ -289,10 +290,11 @@ final class SettingsPanel {
         messageIsError = error;
     }
 
-    private static void tooltip(String text) {
+    /** The last item's tooltip; its text is made only while the item is hovered, not for every row every frame. */
+    private static void tooltip(Supplier<String> text) {
         if (ImGui.isItemHovered()) {
             ImGui.beginTooltip();
-            ImGui.text(text);
+            ImGui.text(text.get());
             ImGui.endTooltip();
         }
     }
