@@ -20,6 +20,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
@@ -75,7 +76,8 @@ public final class Engine implements AutoCloseable {
     private final Map<Pass, EngineSystem> owners = new EnumMap<>(Pass.class);
     private final DrawStats stats = new DrawStats();
     private final Counters counters = new Counters();
-    private final List<EngineSystem> initialised = new ArrayList<>();
+    /** The systems whose init has begun, in order, with what each has handed to {@link EngineContext#own}. */
+    private final Map<EngineSystem, Owned> initialised = new LinkedHashMap<>();
     private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
     private final Map<String, Double> systemNanos = new LinkedHashMap<>();
     private Framebuffer scene;
@@ -140,11 +142,11 @@ public final class Engine implements AutoCloseable {
             throttle = new FrameThrottle(gl);
             neutralSky = neutralSky(gl);
             noShadow = SunShadow.none(gl);
-            EngineContext context = new EngineContext(gl, world, this.shaders, settings);
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
-                initialised.add(system);
-                system.init(context);
+                Owned owned = new Owned();
+                initialised.put(system, owned);
+                system.init(new EngineContext(gl, world, this.shaders, settings, owned));
             }
         } catch (RuntimeException e) {
             close();
@@ -447,13 +449,26 @@ public final class Engine implements AutoCloseable {
         scene = Framebuffer.scene(gl, width, height);
     }
 
-    /** Closes every system in reverse order, then the engine's own GL objects. */
+    /**
+     * Closes every system in reverse order (its own {@code close()}, then what it owned, newest first), then the
+     * engine's own GL objects; a failing close does not stop the others, and every failure is reported at the end.
+     */
     @Override
     public void close() {
-        for (int i = initialised.size() - 1; i >= 0; i--) {
-            initialised.get(i).close();
-        }
+        Owned all = new Owned();
+        initialised.forEach((system, owned) -> {
+            all.own(owned);
+            all.own(system);
+        });
         initialised.clear();
+        try {
+            all.close();
+        } finally {
+            closeEngineObjects();
+        }
+    }
+
+    private void closeEngineObjects() {
         if (neutralSky != null) {
             neutralSky.environment().close();
             neutralSky.aerialPerspective().close();

@@ -12,6 +12,16 @@ import org.openworld.engine.settings.Settings;
  * @param world    the shared world
  * @param shaders  builds shader programs from {@code shaders/} and reloads them in dev mode
  * @param settings the settings resource (also in the world)
+ * @param owned    what this system has made: the engine closes it, newest first, after the system's own
+ *                 {@code close()}
  */
-public record EngineContext(GlContext gl, World world, ShaderLibrary shaders, Settings settings) {
+public record EngineContext(GlContext gl, World world, ShaderLibrary shaders, Settings settings, Owned owned) {
+
+    /**
+     * Hands {@code thing} to the engine to close when the system is closed (after the system's own {@code close()},
+     * newest first, going on past a failing close), and returns it: {@code program = context.own(shaders.build(..))}.
+     */
+    public <T extends AutoCloseable> T own(T thing) {
+        return owned.own(thing);
+    }
 }
