@@ -4,16 +4,15 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.bench.BenchComparison;
 import org.openworld.engine.bench.BenchReport;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.bench.RunInfo;
 import org.openworld.engine.bench.Summary;
-import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathParser;
-import org.openworld.engine.core.HeightField;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -68,18 +67,18 @@ final class BenchCommand implements Callable<Integer> {
             var engine = launch.engine;
             step = engine.settings().get(EngineSettings.class).step();
             int recorded = frames != null ? frames : (int) Math.floor(cameraPath.duration() / step) + 1;
-            Camera camera = engine.world().resource(Camera.class);
-            HeightField ground = engine.world().findResource(HeightField.class).orElse(HeightField.FLAT);
             List<FrameRecord> records = new ArrayList<>();
             int total = warmup + recorded;
             int reportEvery = Math.max(1, total / 10);
             System.err.printf("bench: %s, %d warm-up + %d frames at %dx%d on %s%n", path, warmup, recorded,
                     engine.width(), engine.height(), launch.gl.renderer());
+            // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
+            Poses.direct(engine.world(), CameraDirection.hold(cameraPath, cameraPath.startTime()));
             for (int i = 0; i < total; i++) {
-                // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
-                double pathTime = Math.max(0, i - warmup) * step;
+                if (i == warmup) {
+                    Poses.direct(engine.world(), CameraDirection.play(cameraPath, cameraPath.startTime(), false));
+                }
                 engine.update();
-                camera.setPose(cameraPath.sample(pathTime, ground));
                 engine.render();
                 engine.collectFrames(false, r -> keep(r, records));
                 if ((i + 1) % reportEvery == 0) {

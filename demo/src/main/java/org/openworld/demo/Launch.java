@@ -3,6 +3,7 @@ package org.openworld.demo;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.Engine;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.EngineSystem;
@@ -82,7 +83,8 @@ final class Launch implements AutoCloseable {
         Engine old = engine;
         Engine fresh = new Engine(gl, shaders, old.settings(), DemoScene.systems(), old.width(), old.height());
         fresh.world().setResource(old.world().resource(TimeOfDay.class));
-        fresh.world().resource(Camera.class).setPose(old.world().resource(Camera.class).pose());
+        fresh.world().setResource(CameraDirection.class, old.world().findResource(CameraDirection.class)
+                .orElse(CameraDirection.controls()).carriedOver(old.world().resource(Camera.class).pose()));
         old.close();
         engine = fresh;
     }

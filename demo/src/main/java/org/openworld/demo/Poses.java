@@ -1,11 +1,10 @@
 package org.openworld.demo;
 
 import java.util.Optional;
+import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathFormatException;
 import org.openworld.engine.camera.CameraPathParser;
-import org.openworld.engine.camera.CameraPose;
-import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.World;
 
 /** Turns {@link PoseOptions} into a camera pose: an explicit {@code --camera}, a path moment, or the default view. */
@@ -22,14 +21,17 @@ final class Poses {
         return options.path == null ? Optional.empty() : Optional.of(CameraPathParser.parse(options.path));
     }
 
-    static CameraPose resolve(PoseOptions options, Optional<CameraPath> path, World world) {
+    /** A still picture's direction: the {@code --camera} pose, the path's pose at {@code --at}, or the default view. */
+    static CameraDirection still(PoseOptions options, Optional<CameraPath> path) {
         if (options.camera != null) {
-            return options.camera;
+            return CameraDirection.fixed(options.camera);
         }
-        if (path.isPresent()) {
-            HeightField ground = world.findResource(HeightField.class).orElse(HeightField.FLAT);
-            return path.get().sample(options.at, ground);
-        }
-        return DemoScene.DEFAULT_POSE;
+        return path.map(p -> CameraDirection.hold(p, options.at))
+                .orElse(CameraDirection.fixed(DemoScene.DEFAULT_POSE));
+    }
+
+    /** Tells the world's camera director to follow {@code direction} from the next update on. */
+    static void direct(World world, CameraDirection direction) {
+        world.setResource(CameraDirection.class, direction);
     }
 }

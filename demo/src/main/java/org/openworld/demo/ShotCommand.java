@@ -4,7 +4,7 @@ import static org.lwjgl.glfw.GLFW.glfwSetWindowSize;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -50,9 +50,7 @@ final class ShotCommand implements Callable<Integer> {
         var path = Poses.loadPath(pose);
         long start = System.nanoTime();
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
-            Camera camera = launch.engine.world().resource(Camera.class);
-            launch.engine.update();
-            camera.setPose(Poses.resolve(pose, path, launch.engine.world()));
+            prepare(launch, Poses.still(pose, path));
             if (ui) {
                 renderWithUi(launch);
             } else {
@@ -63,6 +61,16 @@ final class ShotCommand implements Callable<Integer> {
             return new Result(image, launch.gl.renderer(), launch.gl.mode().toString(),
                     (System.nanoTime() - start) / 1e6);
         }
+    }
+
+    /**
+     * Points the camera and runs the one update of a shot: the director writes the pose first in the frame order, so
+     * every system's update (the sky's tables for the camera's altitude, the terrain's tiles, the shadow fit) sees
+     * the pose the picture is taken from.
+     */
+    static void prepare(Launch launch, CameraDirection direction) {
+        Poses.direct(launch.engine.world(), direction);
+        launch.engine.update();
     }
 
     /** Renders a few frames with the panel and HUD drawn over them, as {@link WindowLoop} does. */
@@ -85,7 +93,7 @@ final class ShotCommand implements Callable<Integer> {
      * whatever the passes left there, and the paper's stencil water (section 3.3) leaves its reflectivity, the
      * blend's destination alpha, over the lake: written as it is, a PNG viewer would show the page through the water.
      */
-    private static Image opaque(Image image) {
+    static Image opaque(Image image) {
         byte[] rgba = new byte[image.width() * image.height() * 4];
         for (int y = 0, i = 0; y < image.height(); y++) {
             for (int x = 0; x < image.width(); x++, i += 4) {

@@ -7,11 +7,11 @@ import java.nio.file.Path;
 import java.time.Clock;
 import java.util.List;
 import java.util.Optional;
+import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.Engine;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathRecorder;
-import org.openworld.engine.core.HeightField;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.input.InputState;
 
@@ -65,7 +65,9 @@ final class WindowLoop implements SettingsPanel.Host {
         this.launch = launch;
         this.replay = replay;
         engine().world().setResource(input);
-        engine().world().resource(Camera.class).setPose(Poses.resolve(pose, replay, engine().world()));
+        Poses.direct(engine().world(), replay
+                .map(path -> CameraDirection.play(path, pose.at, true))
+                .orElse(CameraDirection.controlsFrom(pose.explicitPose().orElse(DemoScene.DEFAULT_POSE))));
         panel = new SettingsPanel(engine().settings(), this);
     }
 
@@ -95,11 +97,6 @@ final class WindowLoop implements SettingsPanel.Host {
             double now = glfwGetTime();
             engine.advance(now - last);
             last = now;
-            if (replay.isPresent()) {
-                CameraPath path = replay.get();
-                HeightField ground = engine.world().findResource(HeightField.class).orElse(HeightField.FLAT);
-                camera.setPose(path.sample(engine.simTime() % path.duration(), ground));
-            }
             if (recorder != null) {
                 recorder.record(engine.simTime(), camera.pose());
             }

@@ -1,8 +1,6 @@
 package org.openworld.engine.camera;
 
 import java.util.List;
-import org.joml.Vector3d;
-import org.joml.Vector3dc;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
@@ -13,76 +11,39 @@ import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
 /**
- * The viewer's camera controller (paper section 1, "a realistic camera"): free flight with inertia, or walking on
- * the terrain, steered by keyboard and mouse. It reads the {@link InputState}, the ground's {@link HeightField} and
- * the {@link CameraSettings}, and writes the {@link Camera}'s pose once per fixed step. It draws nothing.
+ * The camera's director: the one system that writes the {@link Camera}. At every fixed update it reads the world's
+ * {@link CameraDirection} and moves the camera as it says:
+ * <ul>
+ *   <li>{@link CameraDirection.Controls}: the user flies or walks ({@link CameraController}, its motion model);</li>
+ *   <li>{@link CameraDirection.Replay}: the pose of a {@link CameraPath} at a time that moves on with the steps
+ *       (a benchmark, the window's {@code --path}) or stands still (a shot of a path's moment);</li>
+ *   <li>{@link CameraDirection.Fixed}: one pose ({@code shot --camera}, the figures).</li>
+ * </ul>
+ * A world without a direction is under the user's controls. Because it writes the camera, the frame order puts it
+ * before every system that reads the camera (the sky's tables and aerial perspective, the terrain's tiles, the shadow
+ * fit): whatever moves the camera, every system of a frame sees the same pose, the first frame included, and
+ * {@code openworld info --frame} prints the order that really runs.
  *
- * <h2>Motion model</h2>
- * Conventions of DESIGN.md: metres, Y up, X east, Z south; yaw clockwise from north, pitch positive up. Each
- * update of length {@code dt} takes the camera's current pose as its starting point and does, in order:
- * <ol>
- *   <li><b>Look.</b> The mouse (only while looking) and the arrow keys move an aim:
- *       {@code aimYaw += dx · sensitivity + turnRight · turnSpeed · dt},
- *       {@code aimPitch −= dy · sensitivity − turnUp · turnSpeed · dt}, the pitch aim clamped to ±89°, the yaw
- *       kept in [0, 360). The view follows the aim by exponential approach with time constant τ
- *       ({@code camera.look-smoothing}): {@code angle ← aim + (angle − aim) · e^(−dt/τ)}, the yaw the shorter way
- *       round ({@link SmoothLook}). No roll.</li>
- *   <li><b>Fly.</b> The wished direction {@code ŵ} is the normalised sum of the keys' directions: W/S along the
- *       view {@code f = (sin yaw cos pitch, sin pitch, −cos yaw cos pitch)} ({@link CameraMath#forward}), A/D
- *       along {@code r = (cos yaw, 0, sin yaw)}, Space and C/Left Ctrl along Y. The wished velocity is
- *       {@code u = s · ŵ} with {@code s = flySpeed}, times {@code boost} while Shift is held. The velocity follows
- *       the linear ODE {@code dv/dt = a · (u − v)} with {@code a = camera.acceleration} while a key is held, and
- *       {@code dv/dt = −k · v} with {@code k = camera.damping} once all are released, integrated exactly
- *       ({@link InertialMotion}):
- *       <pre>
- *   v ← u + (v − u) · e^(−a·dt)        (held: the speed tends to s, never beyond it)
- *   v ← v · e^(−k·dt)                  (released: a glide to a halt, 1/k seconds per factor e)
- *   x ← x + u·dt + (v₀ − u) · (1 − e^(−a·dt)) / a
- *       </pre>
- *       The exact solution makes the path independent of the step: at 60 or 120 updates a second the camera
- *       ends in the same place. The eye never goes below the ground plus {@link #MIN_CLEARANCE}.</li>
- *   <li><b>Walk.</b> As flying, but horizontal: W/S along the heading {@code (sin yaw, 0, −cos yaw)}, A/D along
- *       {@code r}, {@code s = walkSpeed}, times {@code runFactor} with Shift, and the rate {@code a} both to start
- *       and to stop (feet stop a walker; nothing stops a flyer but air). The eye follows the ground:
- *       {@code y ← y_t + (y − y_t) · e^(−dt/τ_step)} with {@code y_t = h(x, z) + eyeHeight}, so a step in the
- *       ground eases in over about 3 τ_step instead of jolting the view, and {@code y} never drops below
- *       {@code h(x, z) + min(eyeHeight, MIN_CLEARANCE)}. {@code h} is the world's {@link HeightField}, flat at 0
- *       without one. Switching to walk (key V) therefore drops the camera to the ground, quickly but
- *       smoothly.</li>
- *   <li><b>Pose.</b> {@code Camera.setPose(x, y, z, yaw, pitch, camera.fov)}.</li>
- * </ol>
- *
- * <h2>Poses set from outside</h2>
- * A replayed camera path (or a "go to" command) sets {@link Camera#setPose} directly and does not run this
- * system. The controller keeps no position of its own, only the velocity, the look aim and the mode: when it finds a
- * pose it did not write, it aims at that pose's view and stops (a teleport carries no momentum), so handing control
- * back never swings or slides the camera. {@link #resetMotion()} does the same on request.
- *
- * <h2>Limits</h2>
- * The ground is sampled under the eye only: walking into a cliff steeper than the near plane's reach can show the
- * rock's inside for a frame; there are no collisions with anything but the ground.
+ * <p><b>Cost.</b> Constant per update: one controller step, or one path sample (a binary search over keys).
  */
 public final class CameraSystem implements EngineSystem {
 
     public static final SettingsGroup<CameraSettings> SETTINGS =
             SettingsGroup.of("camera", CameraSettings.class, CameraSettings.DEFAULTS);
 
-    /** Least height of the eye above the ground, metres: the near plane's distance, so it does not cut the ground. */
-    public static final double MIN_CLEARANCE = Camera.NEAR;
-
-    private final SmoothLook look = new SmoothLook();
-    private final InertialMotion motion = new InertialMotion();
     /** Stands in for the input resource in headless runs, which have none. */
-    private final InputState noInput = new InputState();
-    private CameraMode mode = CameraSettings.DEFAULTS.mode();
-    /** The mode setting last seen, so a change of {@code camera.mode} at run time takes effect; null before the first. */
-    private CameraMode settingMode;
-    /** The pose this system last wrote; any other pose found in the camera was set from outside. */
-    private CameraPose written;
+    private static final InputState NO_INPUT = new InputState();
+
+    private final CameraController controller = new CameraController();
+    /** The direction being followed, null before the first update; a different object is taken up anew. */
+    private CameraDirection following;
+    /** Updates since {@link #following} was taken up. */
+    private long updates;
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("camera").reads(InputState.class, HeightField.class, Settings.class)
+        return SystemSpec.named("camera")
+                .reads(CameraDirection.class, InputState.class, HeightField.class, Settings.class)
                 .writes(Camera.class);
     }
 
@@ -91,117 +52,39 @@ public final class CameraSystem implements EngineSystem {
         return List.of(SETTINGS);
     }
 
-    /** Takes the start mode and applies the fov setting at once, so the first frame already has it. */
+    /** Applies the fov setting at once, so a camera under the controls has it from the first frame. */
     @Override
     public void init(EngineContext context) {
-        CameraSettings settings = context.settings().get(CameraSettings.class);
-        settingMode = settings.mode();
-        mode = settingMode;
         Camera camera = context.world().resource(Camera.class);
         CameraPose p = camera.pose();
-        camera.setPose(new CameraPose(p.x(), p.y(), p.z(), p.yaw(), p.pitch(), settings.fov()));
+        camera.setPose(new CameraPose(p.x(), p.y(), p.z(), p.yaw(), p.pitch(),
+                context.settings().get(CameraSettings.class).fov()));
     }
 
     @Override
     public void update(World world, double step) {
-        CameraSettings settings = world.resource(Settings.class).get(CameraSettings.class);
         Camera camera = world.resource(Camera.class);
-        CameraControls controls = CameraControls.read(world.findResource(InputState.class).orElse(noInput));
         HeightField ground = world.findResource(HeightField.class).orElse(HeightField.FLAT);
-
-        // 1. adopt a pose set from outside, and the mode from the settings or key V
-        CameraPose pose = camera.pose();
-        if (!pose.equals(written)) {
-            look.aimAt(pose.yaw(), pose.pitch());
-            motion.stop();
-        }
-        if (settings.mode() != settingMode) {
-            settingMode = settings.mode();
-            setMode(settingMode);
-        }
-        if (controls.toggleMode()) {
-            setMode(mode.toggled());
+        CameraDirection direction = world.findResource(CameraDirection.class).orElse(null);
+        if (direction == null) {
+            direction = CameraDirection.controls();
+            world.setResource(CameraDirection.class, direction);
         }
 
-        // 2. look: move the aim, then follow it
-        look.turn(controls.mouseDx() * settings.mouseSensitivity() + controls.turnRight() * settings.turnSpeed() * step,
-                -controls.mouseDy() * settings.mouseSensitivity() + controls.turnUp() * settings.turnSpeed() * step);
-        double[] view = look.follow(pose.yaw(), pose.pitch(), step, settings.lookSmoothing());
-        double yaw = view[0];
-        double pitch = view[1];
-
-        // 3. move
-        Vector3d eye = new Vector3d(pose.x(), pose.y(), pose.z());
-        if (mode == CameraMode.FLY) {
-            fly(eye, yaw, pitch, controls, ground, settings, step);
-        } else {
-            walk(eye, yaw, controls, ground, settings, step);
+        // 1. a new direction is taken up from its first update
+        if (direction != following) {
+            following = direction;
+            updates = 0;
         }
 
-        // 4. write the pose
-        written = new CameraPose(eye.x, eye.y, eye.z, yaw, pitch, settings.fov());
-        camera.setPose(written);
+        // 2. this update's pose, from the direction
+        camera.setPose(direction.pose(new CameraDirection.Cue(camera.pose(), updates++, step, ground, controller,
+                CameraControls.read(world.findResource(InputState.class).orElse(NO_INPUT)),
+                world.resource(Settings.class).get(CameraSettings.class))));
     }
 
-    private void fly(Vector3d eye, double yaw, double pitch, CameraControls c, HeightField ground, CameraSettings s,
-                     double dt) {
-        Vector3d wish = CameraMath.forward(yaw, pitch).mul(c.forward())
-                .add(CameraMath.right(yaw).mul(c.right()))
-                .add(0, c.up(), 0);
-        boolean steering = wish.lengthSquared() > 0;
-        if (steering) {
-            wish.normalize(s.flySpeed() * (c.fast() ? s.boost() : 1));
-        }
-        eye.add(motion.step(wish, steering ? s.acceleration() : s.damping(), dt));
-        double floor = ground.heightAt(eye.x, eye.z) + MIN_CLEARANCE;
-        if (eye.y < floor) {
-            eye.y = floor;
-            if (motion.velocity().y() < 0) {
-                motion.stopVertical();
-            }
-        }
-    }
-
-    private void walk(Vector3d eye, double yaw, CameraControls c, HeightField ground, CameraSettings s, double dt) {
-        Vector3d wish = CameraMath.flatForward(yaw).mul(c.forward()).add(CameraMath.right(yaw).mul(c.right()));
-        if (wish.lengthSquared() > 0) {
-            wish.normalize(s.walkSpeed() * (c.fast() ? s.runFactor() : 1));
-        }
-        motion.stopVertical();
-        Vector3d moved = motion.step(wish, s.acceleration(), dt);
-        eye.x += moved.x;
-        eye.z += moved.z;
-        double h = ground.heightAt(eye.x, eye.z);
-        double target = h + s.eyeHeight();
-        eye.y = target + (eye.y - target) * CameraMath.decayWithTimeConstant(s.stepSmoothing(), dt);
-        eye.y = Math.max(eye.y, h + Math.min(s.eyeHeight(), MIN_CLEARANCE));
-    }
-
-    /** The current movement mode. */
-    public CameraMode mode() {
-        return mode;
-    }
-
-    /** Switches fly or walk; a change of mode stops the camera (walking starts from rest, on the ground). */
-    public void setMode(CameraMode newMode) {
-        if (newMode != mode) {
-            mode = newMode;
-            motion.stop();
-        }
-    }
-
-    /**
-     * Forgets the motion: zero velocity, and the look aim taken from the camera's pose at the next update. Call it
-     * after setting the pose from outside (it also happens by itself when the next update finds a pose this system
-     * did not write), e.g. when a path replay ends.
-     */
-    public void resetMotion() {
-        motion.stop();
-        written = null;
-    }
-
-    /** The camera's velocity, m/s, e.g. for a speed readout (a read-only view). */
-    public Vector3dc velocity() {
-        return motion.velocity();
+    /** The user's controls: their mode (fly or walk) and velocity, e.g. for a readout. */
+    public CameraController controller() {
+        return controller;
     }
 }

@@ -1,7 +1,9 @@
 /**
- * The realistic camera of the paper's section 1: a controller that flies with inertia or walks on the ground
- * ({@link org.openworld.engine.camera.CameraSystem}, its motion model and formulas in the class comment), and
- * scripted camera paths that replay identically for benchmarks and figures.
+ * The realistic camera of the paper's section 1. One system, the director
+ * ({@link org.openworld.engine.camera.CameraSystem}), writes the camera's pose at the start of every update, as the
+ * world's {@link org.openworld.engine.camera.CameraDirection} says: the user's controls, which fly with inertia or
+ * walk on the ground ({@link org.openworld.engine.camera.CameraController}, its motion model and formulas in the
+ * class comment), a scripted camera path that replays identically for benchmarks, or a fixed pose for pictures.
  *
  * <p><b>Paths.</b> A plain-text file of keyframes {@code time x y z yaw pitch [fov]}
  * ({@link org.openworld.engine.camera.CameraPathParser}, errors as {@code file:line:column: expected …, found …}).

@@ -166,7 +166,9 @@ public final class SkySystem implements EngineSystem {
             building = null;
         }
         if (tables == null || tables.staleFor(atmosphere, elevation, altitude)) {
-            if (tables == null || jumped(atmosphere, elevation, altitude)) {
+            // at once, not in the background, when there are none yet, when the sun or the eye jumped, and at the
+            // first step: the tables of init are for wherever the camera was before the director placed it
+            if (tables == null || step > 0 && simTime == step || jumped(atmosphere, elevation, altitude)) {
                 accept(build(tables, atmosphere, elevation, altitude), counters);
             } else if (building == null) {
                 SunTables current = tables;

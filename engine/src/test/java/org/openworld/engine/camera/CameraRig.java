@@ -21,8 +21,13 @@ final class CameraRig {
         world.setResource(camera);
     }
 
+    /** Hands the camera to the user's controls at this pose, from the next update on. */
     CameraRig at(double x, double y, double z, double yaw, double pitch) {
-        camera.setPose(new CameraPose(x, y, z, yaw, pitch, CameraPose.DEFAULT_FOV));
+        return direct(CameraDirection.controlsFrom(new CameraPose(x, y, z, yaw, pitch, CameraPose.DEFAULT_FOV)));
+    }
+
+    CameraRig direct(CameraDirection direction) {
+        world.setResource(CameraDirection.class, direction);
         return this;
     }
 
@@ -54,6 +59,6 @@ final class CameraRig {
     }
 
     double speed() {
-        return system.velocity().length();
+        return system.controller().velocity().length();
     }
 }

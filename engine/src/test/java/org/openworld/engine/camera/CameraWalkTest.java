@@ -22,16 +22,16 @@ class CameraWalkTest {
     void vTogglesBetweenFlyAndWalk() {
         CameraRig rig = new CameraRig().at(0, 100, 0, 0, 0);
         rig.run(1.0 / 60);
-        assertEquals(CameraMode.FLY, rig.system.mode());
+        assertEquals(CameraMode.FLY, rig.system.controller().mode());
         rig.input.keyDown(GLFW_KEY_V);
         rig.run(1.0 / 60);
-        assertEquals(CameraMode.WALK, rig.system.mode());
+        assertEquals(CameraMode.WALK, rig.system.controller().mode());
         rig.run(1);
-        assertEquals(CameraMode.WALK, rig.system.mode(), "a held key toggles once");
+        assertEquals(CameraMode.WALK, rig.system.controller().mode(), "a held key toggles once");
         rig.input.keyUp(GLFW_KEY_V);
         rig.input.keyDown(GLFW_KEY_V);
         rig.run(1.0 / 60);
-        assertEquals(CameraMode.FLY, rig.system.mode());
+        assertEquals(CameraMode.FLY, rig.system.controller().mode());
     }
 
     @Test
@@ -62,7 +62,7 @@ class CameraWalkTest {
         assertEquals(10 * WALK, p.x(), 0.05 * 10 * WALK, "walked east at walking speed, not along the 30° view");
         assertEquals(0, p.z(), 1e-9);
         assertEquals(WALK, rig.speed(), 1e-3);
-        assertEquals(0, rig.system.velocity().y(), 0);
+        assertEquals(0, rig.system.controller().velocity().y(), 0);
     }
 
     @Test
@@ -76,7 +76,7 @@ class CameraWalkTest {
         for (int i = 0; i < 3 * 60; i++) {
             rig.run(1.0 / 60);
             CameraPose p = rig.pose();
-            assertTrue(p.y() >= step.heightAt(p.x(), p.z()) + CameraSystem.MIN_CLEARANCE - 1e-9, "above the ground");
+            assertTrue(p.y() >= step.heightAt(p.x(), p.z()) + CameraController.MIN_CLEARANCE - 1e-9, "above the ground");
             biggestRise = Math.max(biggestRise, p.y() - previous);
             previous = p.y();
         }
