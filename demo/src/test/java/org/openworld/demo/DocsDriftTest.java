@@ -187,6 +187,72 @@ class DocsDriftTest {
         assertTrue(listed.size() >= 5, "the layout table's rows were read: " + listed);
     }
 
+    /**
+     * A page's settings table ({@code | key | default | unit | meaning |}, as {@code openworld settings} prints them)
+     * gives each key's real default and unit.
+     */
+    @Test
+    void settingsTablesGiveTheRealDefaultsAndUnits() {
+        Settings defaults = settings.defaults();
+        Map<String, String> units = new HashMap<>();
+        settings.groups().forEach(g -> g.keys().forEach(k -> units.put(k.key(), k.doc().unit())));
+        List<String> failures = new ArrayList<>();
+        int rows = 0;
+        for (DocPages page : DocPages.all()) {
+            List<String> lines = page.lines();
+            for (int i = 0; i < lines.size(); i++) {
+                if (!lines.get(i).replace(" ", "").equals("|key|default|unit|meaning|")) {
+                    continue;
+                }
+                for (int j = i + 2; j < lines.size() && lines.get(j).startsWith("|"); j++) {
+                    String[] cells = lines.get(j).split("\\|");
+                    String key = cells[1].strip().replace("`", "");
+                    String given = cells[2].strip();
+                    rows++;
+                    if (!settings.keys().contains(key)) {
+                        failures.add(page.at(j) + ": `" + key + "`: no settings key " + key);
+                        continue;
+                    }
+                    String real = defaults.text(key).isEmpty() ? "(none)" : defaults.text(key);
+                    if (!given.equals(real)) {
+                        failures.add(page.at(j) + ": `" + key + "`: the default is " + real + ", not " + given);
+                    }
+                    String unit = units.getOrDefault(key, "");
+                    if (!cells[3].strip().equals(unit)) {
+                        failures.add(page.at(j) + ": `" + key + "`: the unit is '" + unit + "', not '"
+                                + cells[3].strip() + "'");
+                    }
+                }
+            }
+        }
+        assertEquals("", String.join("\n", failures), "settings tables against the settings");
+        assertTrue(rows >= 20, "the settings tables' rows were read: " + rows);
+    }
+
+    /**
+     * The architecture page's caption links each of the demo's systems to its page, by the system's name; a system
+     * added to {@code DemoScene.systems()} must be added there too.
+     */
+    @Test
+    void theArchitecturePageLinksEveryDemoSystem() {
+        List<String> page = DocPages.read("docs/architecture.md").lines();
+        int from = 0;
+        while (from < page.size() && !page.get(from).contains("`DemoScene.systems()`")) {
+            from++;
+        }
+        assertTrue(from < page.size(), "docs/architecture.md names DemoScene.systems()");
+        Set<String> linked = new TreeSet<>();
+        for (int i = from; i < page.size() && !page.get(i).isBlank(); i++) {
+            Matcher link = LINK.matcher(page.get(i));
+            while (link.find()) {
+                linked.add(link.group().substring(1, link.group().indexOf(']')));
+            }
+        }
+        Set<String> systems = new TreeSet<>();
+        DemoScene.systems().forEach(system -> systems.add(system.spec().name()));
+        assertEquals(systems, linked, "docs/architecture.md:" + (from + 1) + ": the demo's systems, each linked by name");
+    }
+
     @Test
     void theRecognisersTellOursFromProse() {
         assertEquals(null, checkSpan("SkySystem"));
