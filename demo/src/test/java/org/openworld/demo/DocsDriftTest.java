@@ -38,6 +38,7 @@ import org.openworld.engine.settings.Settings;
  *   <li>a repository path ({@code shaders/common/fog.glsl}, {@code demo/.../Gui.java}, a shader under {@code shaders/}
  *       such as {@code common/fog.glsl}): it exists ({@code ...} stands for any folders);</li>
  * </ul>
+ * a class's member used in a fenced {@code java} block ({@code CameraPathParser.parse(...)}) exists too;
  * every relative link and image exists, with its {@code #section} when it has one; and every citation of a section of
  * {@code docs/design.md} or {@code CONTRIBUTING.md} (in a page or a source file) names a heading there. A failure
  * names the page, the line and the word. The README's layout table is checked against the repository's folders.
@@ -60,11 +61,13 @@ class DocsDriftTest {
             "java.nio.", "java.nio.file.", "org.joml.", "org.jtransforms.fft.", "org.lwjgl.system.", "org.lwjgl.glfw.",
             "picocli.");
 
-    private static final Path ROOT = DocPages.ROOT;
+    private static final Path ROOT = DocPage.ROOT;
     private static final Pattern SPAN = Pattern.compile("`([^`]+)`");
     private static final Pattern LINK = Pattern.compile("!?\\[[^\\]]*\\]\\(([^)\\s]+)\\)");
     private static final Pattern CLASS = Pattern.compile("@?([A-Z][a-z0-9]+(?:[A-Z][A-Za-z0-9]*)*)(?:<.*>)?");
     private static final Pattern MEMBER = Pattern.compile("([A-Z][A-Za-z0-9]*[a-z][A-Za-z0-9]*)[.#]([A-Za-z_][A-Za-z0-9_]*)(?:\\(.*\\))?");
+    /** A static call or a nested type in Java code: {@code CameraPathParser.parse}, {@code Mesh.Attribute}. */
+    private static final Pattern CALL = Pattern.compile("(?<![\\w.])[A-Z][A-Za-z0-9]*[a-z][A-Za-z0-9]*\\.(?!class\\b)[A-Za-z]\\w*");
     private static final Pattern KEY = Pattern.compile("([a-z][a-z0-9-]*)\\.([a-z][a-z0-9-]*)(?:=(\\S+))?");
     private static final Pattern SET = Pattern.compile("--set[ =]([a-z][a-z0-9-]*\\.\\S+)");
     private static final Pattern PATH = Pattern.compile("(?:engine|demo|shaders|assets|docs)/[\\w./<>-]*"
@@ -108,10 +111,20 @@ class DocsDriftTest {
     @Test
     void everyPageNamesOnlyWhatExists() {
         List<String> failures = new ArrayList<>();
-        for (DocPages page : DocPages.all()) {
+        for (DocPage page : DocPage.all()) {
             boolean[] fenced = page.fenced();
+            boolean java = false;
             for (int i = 0; i < page.lines().size(); i++) {
                 if (fenced[i]) {
+                    java = page.lines().get(i).strip().equals("```java") || java && !page.lines().get(i).strip()
+                            .startsWith("```");
+                    Matcher call = CALL.matcher(java ? page.lines().get(i) : "");
+                    while (call.find()) {
+                        String problem = checkSpan(call.group());
+                        if (problem != null) {
+                            failures.add(page.at(i) + ": " + call.group() + ": " + problem);
+                        }
+                    }
                     continue;
                 }
                 String line = page.lines().get(i);
@@ -156,7 +169,7 @@ class DocsDriftTest {
 
     @Test
     void theReadmeLayoutTableMatchesTheTree() throws IOException, InterruptedException {
-        List<String> readme = DocPages.read("README.md").lines();
+        List<String> readme = DocPage.read("README.md").lines();
         int start = readme.indexOf("## Layout");
         assertTrue(start >= 0, "README.md has a '## Layout' section");
         Set<String> listed = new TreeSet<>();
@@ -198,7 +211,7 @@ class DocsDriftTest {
         settings.groups().forEach(g -> g.keys().forEach(k -> units.put(k.key(), k.doc().unit())));
         List<String> failures = new ArrayList<>();
         int rows = 0;
-        for (DocPages page : DocPages.all()) {
+        for (DocPage page : DocPage.all()) {
             List<String> lines = page.lines();
             for (int i = 0; i < lines.size(); i++) {
                 if (!lines.get(i).replace(" ", "").equals("|key|default|unit|meaning|")) {
@@ -235,7 +248,7 @@ class DocsDriftTest {
      */
     @Test
     void theArchitecturePageLinksEveryDemoSystem() {
-        List<String> page = DocPages.read("docs/architecture.md").lines();
+        List<String> page = DocPage.read("docs/architecture.md").lines();
         int from = 0;
         while (from < page.size() && !page.get(from).contains("`DemoScene.systems()`")) {
             from++;
@@ -374,7 +387,7 @@ class DocsDriftTest {
         return null;
     }
 
-    private static String checkLink(DocPages page, String target) {
+    private static String checkLink(DocPage page, String target) {
         if (target.matches("[a-z]+:.*")) {
             return null;
         }

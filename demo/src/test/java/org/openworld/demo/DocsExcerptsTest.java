@@ -25,7 +25,7 @@ class DocsExcerptsTest {
     void everyExcerptIsInItsFile() throws IOException {
         int excerpts = 0;
         List<String> failures = new ArrayList<>();
-        for (DocPages page : DocPages.all()) {
+        for (DocPage page : DocPage.all()) {
             List<String> lines = page.lines();
             boolean[] fenced = page.fenced();
             for (int i = 0; i < lines.size(); i++) {
@@ -41,9 +41,9 @@ class DocsExcerptsTest {
                 for (int j = i + 2; j < lines.size() && !lines.get(j).startsWith("```"); j++) {
                     block.add(lines.get(j).strip());
                 }
-                if (!Files.isRegularFile(DocPages.ROOT.resolve(file))) {
+                if (!Files.isRegularFile(DocPage.ROOT.resolve(file))) {
                     failures.add(page.at(i) + ": the excerpt's file " + file + " does not exist");
-                } else if (!contains(Files.readAllLines(DocPages.ROOT.resolve(file)).stream().map(String::strip)
+                } else if (!contains(Files.readAllLines(DocPage.ROOT.resolve(file)).stream().map(String::strip)
                         .toList(), block)) {
                     failures.add(page.at(i) + ": the excerpt is not in " + file + " as shown");
                 }

@@ -9,20 +9,20 @@ import java.util.List;
 import java.util.stream.Stream;
 
 /**
- * The project's pages as the docs tests read them: {@code README.md}, {@code CONTRIBUTING.md} and every
- * {@code docs/*.md}, each a list of lines, with where the fenced code blocks are.
+ * One page as the docs tests read it: its lines and where its fenced code blocks are. The pages are
+ * {@code README.md}, {@code CONTRIBUTING.md} and every {@code docs/*.md} ({@link #all()}).
  *
  * @param name  the page's path relative to the repository root, as failures name it
  * @param lines the page's lines
  */
-record DocPages(String name, List<String> lines) {
+record DocPage(String name, List<String> lines) {
 
     /** The repository root, seen from the demo module's folder, where the tests run. */
     static final Path ROOT = Path.of("..");
 
     /** Every page, the README and CONTRIBUTING.md first, then {@code docs/} in name order. */
-    static List<DocPages> all() {
-        List<DocPages> pages = new ArrayList<>();
+    static List<DocPage> all() {
+        List<DocPage> pages = new ArrayList<>();
         pages.add(read("README.md"));
         pages.add(read("CONTRIBUTING.md"));
         try (Stream<Path> docs = Files.list(ROOT.resolve("docs"))) {
@@ -34,9 +34,9 @@ record DocPages(String name, List<String> lines) {
         return pages;
     }
 
-    static DocPages read(String name) {
+    static DocPage read(String name) {
         try {
-            return new DocPages(name, Files.readAllLines(ROOT.resolve(name)));
+            return new DocPage(name, Files.readAllLines(ROOT.resolve(name)));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
