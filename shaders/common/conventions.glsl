@@ -1,4 +1,4 @@
-// OpenWorld conventions, written once (DESIGN.md "Conventions"):
+// OpenWorld conventions, written once (docs/design.md, "Conventions"):
 //   units     metres, seconds, radians in GLSL (degrees only at the user interface)
 //   axes      Y up, X east, Z south (north is -Z), right-handed
 //   spaces    suffixes name the space: wsPos world, vsPos view, lsPos light, csPos clip, tsNormal tangent

@@ -7,7 +7,7 @@
 in vec2 ndc;
 out vec4 fragColor;
 
-uniform vec4 camera;      // x: yaw, y: pitch (rad, DESIGN.md conventions); z: tan(vertical fov / 2); w: width / height
+uniform vec4 camera;      // x: yaw, y: pitch (rad, docs/design.md conventions); z: tan(vertical fov / 2); w: width / height
 uniform vec3 uSunDir;
 uniform vec3 sunColor;
 uniform vec3 ambientColor;

@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import picocli.CommandLine.Option;
 
-/** The options every rendering command takes (DESIGN.md, "Command line"). */
+/** The options every rendering command takes (docs/design.md, "Command line"). */
 final class RenderOptions {
 
     @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class,

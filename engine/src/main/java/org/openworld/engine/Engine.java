@@ -52,7 +52,7 @@ import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
 /**
- * Owns the world and the systems and runs the frame (DESIGN.md, "Core"):
+ * Owns the world and the systems and runs the frame (docs/design.md, "Core"):
  * <ol>
  *   <li>fixed-step {@code update}: every enabled system, in resolved order, advances by exactly one step;</li>
  *   <li>render passes SHADOW → REFLECTION → MAIN → OVERLAY: for each pass that some system draws in (and, for SHADOW
@@ -208,7 +208,7 @@ public final class Engine implements AutoCloseable {
     }
 
     /**
-     * Switches a system's update and render off or on; its GPU resources stay (STYLE.md 6). The same as setting
+     * Switches a system's update and render off or on; its GPU resources stay (CONTRIBUTING.md, "Lifecycle"). The same as setting
      * {@code system.name}, which is where the switch lives.
      */
     public void setEnabled(String system, boolean enabled) {

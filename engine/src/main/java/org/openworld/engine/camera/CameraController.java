@@ -10,7 +10,7 @@ import org.openworld.engine.core.HeightField;
  * {@link CameraDirection.Controls}: one {@link #step} per fixed update, from the camera's pose to the next.
  *
  * <h2>Motion model</h2>
- * Conventions of DESIGN.md: metres, Y up, X east, Z south; yaw clockwise from north, pitch positive up. Each
+ * Conventions of docs/design.md: metres, Y up, X east, Z south; yaw clockwise from north, pitch positive up. Each
  * update of length {@code dt} takes the camera's current pose as its starting point and does, in order:
  * <ol>
  *   <li><b>Look.</b> The mouse (only while looking) and the arrow keys move an aim:

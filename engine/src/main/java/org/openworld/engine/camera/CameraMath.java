@@ -3,7 +3,7 @@ package org.openworld.engine.camera;
 import org.joml.Vector3d;
 
 /**
- * Directions and angles in DESIGN.md's conventions, written once for every class that turns a yaw and a pitch into
+ * Directions and angles in docs/design.md's conventions, written once for every class that turns a yaw and a pitch into
  * a vector (the camera controller, camera paths, the water's mirror camera…).
  *
  * <p>Metres, Y up, X east, Z south (north is −Z). Yaw is in degrees clockwise from north seen from above

@@ -1,7 +1,7 @@
 package org.openworld.engine.camera;
 
 /**
- * Where a camera is and where it looks, in the conventions of DESIGN.md: metres, Y up, X east, Z south.
+ * Where a camera is and where it looks, in the conventions of docs/design.md: metres, Y up, X east, Z south.
  *
  * @param x     east, metres
  * @param y     height above sea level, metres

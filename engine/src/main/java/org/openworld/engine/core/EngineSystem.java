@@ -4,7 +4,7 @@ import java.util.List;
 import org.openworld.engine.settings.SettingsGroup;
 
 /**
- * A system: one technique, with a small lifecycle (STYLE.md 6).
+ * A system: one technique, with a small lifecycle (CONTRIBUTING.md, "Lifecycle").
  * <ol>
  *   <li>{@link #init}: create GPU resources, spawn entities, publish resources (once, on the GL thread);</li>
  *   <li>{@link #update}: advance by one fixed simulation step;</li>

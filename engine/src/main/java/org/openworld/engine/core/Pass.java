@@ -1,7 +1,7 @@
 package org.openworld.engine.core;
 
 /**
- * The render passes of a frame, in the order the engine runs them (DESIGN.md, "Passes"). Each pass carries its own
+ * The render passes of a frame, in the order the engine runs them (docs/design.md, "Passes"). Each pass carries its own
  * camera: the sun's for {@link #SHADOW}, the mirrored one for {@link #REFLECTION}, the viewer's for the others.
  */
 public enum Pass {

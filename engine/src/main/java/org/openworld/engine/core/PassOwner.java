@@ -3,7 +3,7 @@ package org.openworld.engine.core;
 import java.util.List;
 
 /**
- * A system that owns a pass (DESIGN.md, "Passes"): the shadow system owns {@link Pass#SHADOW} (the sun's cameras, one
+ * A system that owns a pass (docs/design.md, "Passes"): the shadow system owns {@link Pass#SHADOW} (the sun's cameras, one
  * per cascade, and their depth maps), the water system {@link Pass#REFLECTION} (the mirrored camera, its reflection
  * texture). Once per frame, before the pass, the engine asks the owner for the pass's {@link PassView}s and runs the
  * pass once for each, in order: every system that draws in the pass then draws with that view's camera into its

@@ -14,7 +14,7 @@ import java.util.Set;
 import java.util.stream.Collectors;
 
 /**
- * Resolves the frame order of systems from their declarations (STYLE.md 7), never from the order they were added.
+ * Resolves the frame order of systems from their declarations (CONTRIBUTING.md, "Declared order"), never from the order they were added.
  *
  * <p>Edges, each "runs before":
  * <ul>

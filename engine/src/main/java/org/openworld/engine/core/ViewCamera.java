@@ -13,7 +13,7 @@ import org.openworld.engine.camera.CameraPose;
  * front face. A clip plane, where a pass needs one, is built into the projection as its near plane (the water's
  * oblique projection), so every shader and the culling obey it without knowing of it.
  *
- * <p>View matrix from a pose, in DESIGN.md's conventions (yaw clockwise from north = −Z, pitch up):
+ * <p>View matrix from a pose, in docs/design.md's conventions (yaw clockwise from north = −Z, pitch up):
  * {@code V = Rx(−pitch) · Ry(yaw) · T(−eye)}. With yaw 90° that maps east (+X) onto the view direction −Z.
  */
 public final class ViewCamera {

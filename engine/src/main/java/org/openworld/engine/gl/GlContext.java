@@ -14,7 +14,7 @@ import org.lwjgl.system.MemoryStack;
  * One OpenGL context, windowed or headless, and the one place that creates it: tests, {@code shot}, {@code bench},
  * {@code figures} and the interactive window all come through here.
  *
- * <p>Headless is tried in this order (DESIGN.md, "Headless rendering"):
+ * <p>Headless is tried in this order (docs/design.md, "Headless rendering"):
  * <ol>
  *   <li>{@code headless-egl}: GLFW's null platform with an EGL context, no display needed (Mesa llvmpipe works);</li>
  *   <li>{@code headless-x11}: a hidden GLFW window on the X display in {@code DISPLAY} (Xvfb on NVIDIA machines,

@@ -9,7 +9,7 @@ import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryStack;
 
 /**
- * A typed uniform handle, resolved once when its program links (STYLE.md 9) and again on a reload. Setting a value
+ * A typed uniform handle, resolved once when its program links (CONTRIBUTING.md, "Uniforms") and again on a reload. Setting a value
  * needs the program bound ({@link ShaderProgram#use()}). Get one from {@link ShaderProgram#mat4} and its siblings.
  */
 public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform.Vec2, Uniform.Vec3, Uniform.Vec4, Uniform.Float, Uniform.Int {

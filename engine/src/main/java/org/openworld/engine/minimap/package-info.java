@@ -31,7 +31,7 @@
  *
  * <p><b>Limits.</b> The map shows only the height field: no snow, no materials, no other entities. The shading's
  * light is fixed, not the sun's. A rebuild is a one-frame hitch on the render thread (a worker thread would hide
- * it, STYLE.md 11). The range is square and north is always up; the map does not rotate with the camera. Between
+ * it, CONTRIBUTING.md, "Threads"). The range is square and north is always up; the map does not rotate with the camera. Between
  * samples the texture blends colours bilinearly, so a coast is as sharp as one sample, 12 m at the default range.
  */
 package org.openworld.engine.minimap;

@@ -1,5 +1,5 @@
 /**
- * Settings as documented records with one place for defaults (STYLE.md 2). A system declares a record whose
+ * Settings as documented records with one place for defaults (CONTRIBUTING.md, "Settings are records"). A system declares a record whose
  * components carry {@link org.openworld.engine.settings.Setting} (meaning, unit, range) and a {@code DEFAULTS}
  * constant; a {@link org.openworld.engine.settings.SettingsGroup} gives its keys a prefix. The
  * {@link org.openworld.engine.settings.Settings} resource holds the current record of each group, and the command

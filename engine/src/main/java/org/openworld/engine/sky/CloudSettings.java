@@ -23,7 +23,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param period        time after which the field's evolution repeats: the frames span one period and loop
  * @param windSpeed     speed at which the wind carries the field over the cloud plane
  * @param windDirection direction the wind blows <em>towards</em>, degrees clockwise from north seen from above
- *                      (the DESIGN.md yaw convention: 0 north, 90 east)
+ *                      (the docs/design.md yaw convention: 0 north, 90 east)
  * @param resolution    samples of the field per side of a tile, a power of two
  * @param frames        samples of the field over one period, a power of two; the shader blends neighbouring frames
  * @param horizonFog    e-folding distance of the horizon fog along the cloud plane, in tiles: at a distance of

@@ -6,7 +6,7 @@ import org.openworld.engine.settings.SettingsGroup;
 /**
  * Settings of the water, keys {@code water.*}.
  *
- * @param level      height of the water plane, metres (0: sea level, DESIGN.md's convention)
+ * @param level      height of the water plane, metres (0: sea level, docs/design.md's convention)
  * @param method     FRESNEL (the default: a clipped reflection and the refracted scene, mixed by the Fresnel term)
  *                   or STENCIL (the paper's four steps of section 3.3, for figure 13)
  * @param alpha      the STENCIL method's water alpha, the paper's "reflectivity": 0 shows the ground through the

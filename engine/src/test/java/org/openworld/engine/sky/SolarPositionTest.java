@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 
-/** Solar position (no GL): directions in DESIGN.md's axes, X east, Y up, Z south. */
+/** Solar position (no GL): directions in docs/design.md's axes, X east, Y up, Z south. */
 class SolarPositionTest {
 
     /** The default observer: mid-northern latitude in early summer. */
