@@ -4,17 +4,12 @@ import static org.lwjgl.opengl.GL11C.*;
 import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
 import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
 
-import java.nio.FloatBuffer;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Deque;
 import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
-import org.joml.Matrix4f;
-import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
@@ -27,27 +22,14 @@ import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemOrder;
 import org.openworld.engine.core.SystemOrderException;
-import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
-import org.openworld.engine.environment.Exposure;
-import org.openworld.engine.environment.SkyMaps;
-import org.openworld.engine.environment.SunShadow;
-import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
-import org.openworld.engine.gl.CubeMapTexture;
 import org.openworld.engine.gl.DrawStats;
-import org.openworld.engine.gl.FrameThrottle;
-import org.openworld.engine.gl.FrameUniforms;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
-import org.openworld.engine.gl.GpuTimers;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
-import org.openworld.engine.gl.SharedBlock;
-import org.openworld.engine.gl.SharedTexture;
-import org.openworld.engine.gl.Texture2D;
-import org.openworld.engine.gl.Texture3D;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -61,7 +43,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *   <li>the picture is in the scene target, to be read back (headless) or shown (window).</li>
  * </ol>
  * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as
- * {@link FrameRecord}s once the GPU has finished them.
+ * {@link FrameRecord}s once the GPU has finished them. Three parts live in classes of their own: the simulation's
+ * clock ({@link FixedStepClock}), the frame's timings ({@link FrameTiming}) and what every pass's shaders can read
+ * without binding it (the frame block, the sky's maps, the shadow maps: {@link SharedBindings}).
  */
 public final class Engine implements AutoCloseable {
 
@@ -78,17 +62,12 @@ public final class Engine implements AutoCloseable {
     private final Counters counters = new Counters();
     /** The systems whose init has begun, in order, with what each has handed to {@link EngineContext#own}. */
     private final Map<EngineSystem, Owned> initialised = new LinkedHashMap<>();
-    private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
-    private final Map<String, Double> systemNanos = new LinkedHashMap<>();
+    /** The engine's own GL objects: the scene target, the timers, the shared bindings. */
+    private final Owned own = new Owned();
+    private final FixedStepClock clock = new FixedStepClock();
     private Framebuffer scene;
-    private FrameUniforms frameUniforms;
-    private GpuTimers timers;
-    private FrameThrottle throttle;
-    private SkyMaps neutralSky;
-    private SunShadow noShadow;
-    private double simTime;
-    private long lastFrameEnd;
-    private double unsimulated;
+    private FrameTiming timing;
+    private SharedBindings shared;
     private long frame;
 
     /**
@@ -136,12 +115,9 @@ public final class Engine implements AutoCloseable {
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
-            scene = Framebuffer.scene(gl, width, height);
-            frameUniforms = new FrameUniforms(gl);
-            timers = new GpuTimers(gl);
-            throttle = new FrameThrottle(gl);
-            neutralSky = neutralSky(gl);
-            noShadow = SunShadow.none(gl);
+            scene = own.own(Framebuffer.scene(gl, width, height));
+            timing = own.own(new FrameTiming(gl, order.systems()));
+            shared = own.own(new SharedBindings(gl));
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
                 Owned owned = new Owned();
@@ -191,7 +167,7 @@ public final class Engine implements AutoCloseable {
 
     /** Simulation time, seconds: the number of updates times the step. */
     public double simTime() {
-        return simTime;
+        return clock.simTime();
     }
 
     /** Frames rendered so far. */
@@ -226,51 +202,31 @@ public final class Engine implements AutoCloseable {
     public void update() {
         double step = settings.get(EngineSettings.class).step();
         for (EngineSystem system : order.systems()) {
-            if (isEnabled(system.spec().name())) {
-                long t0 = System.nanoTime();
-                boolean timed = system.spec().isUpdatedOnGpu();
-                if (timed) {
-                    timers.begin("update." + system.spec().name());
-                }
-                system.update(world, step);
-                if (timed) {
-                    timers.end();
-                }
-                systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
+            String name = system.spec().name();
+            if (isEnabled(name)) {
+                timing.time(name, system.spec().isUpdatedOnGpu() ? "update." + name : null,
+                        () -> system.update(world, step));
             }
         }
         world.setResource(world.resource(TimeOfDay.class).advance(step));
-        simTime += step;
+        clock.stepped(step);
     }
 
     /**
-     * Slack when comparing the time not yet simulated with the step, seconds: far below any step, far above the
-     * rounding error of the sums, so 0.03 s at a 0.01 s step runs 3 steps, not 2 (0.03 − 0.01 − 0.01 &lt; 0.01 in
-     * doubles).
-     */
-    private static final double STEP_SLACK = 1e-9;
-
-    /**
      * Runs as many fixed steps as fit in {@code realSeconds} of wall-clock time plus what was left over, at most
-     * {@link EngineSettings#maxSteps()} (the window's loop; benchmarks call {@link #update()} once per frame).
+     * {@link EngineSettings#maxSteps()} ({@link FixedStepClock}; the window's loop, while benchmarks call
+     * {@link #update()} once per frame).
      */
     public void advance(double realSeconds) {
         EngineSettings s = settings.get(EngineSettings.class);
-        unsimulated += realSeconds;
-        int steps = 0;
-        while (unsimulated >= s.step() - STEP_SLACK && steps < s.maxSteps()) {
+        for (int steps = clock.stepsOwed(realSeconds, s.step(), s.maxSteps()); steps > 0; steps--) {
             update();
-            unsimulated -= s.step();
-            steps++;
-        }
-        if (steps == s.maxSteps()) {
-            unsimulated = 0;
         }
     }
 
     /** Renders every pass into the scene target and records the frame's statistics. */
     public void render() {
-        long frameStart = System.nanoTime();
+        timing.beginFrame();
         stats.reset();
         PassView viewer = new PassView(world.resource(Camera.class).view((float) scene.width() / scene.height()), scene);
         boolean shadowDrawn = false;
@@ -283,8 +239,7 @@ public final class Engine implements AutoCloseable {
             for (int v = 0; v < views.size(); v++) {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
-                frameUniforms.write(frameValues(view));
-                bindShared(shadowDrawn);
+                shared.bind(world, view, clock.simTime(), frame, shadowDrawn);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 view.target().bind();
                 glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
@@ -299,11 +254,8 @@ public final class Engine implements AutoCloseable {
                     if (!isEnabled(system.spec().name())) {
                         continue;
                     }
-                    long t0 = System.nanoTime();
-                    timers.begin(label + system.spec().name());
-                    system.render(pass, context);
-                    timers.end();
-                    systemNanos.merge(system.spec().name(), (double) (System.nanoTime() - t0), Double::sum);
+                    timing.time(system.spec().name(), label + system.spec().name(),
+                            () -> system.render(pass, context));
                 }
             }
             shadowDrawn |= pass == Pass.SHADOW && !views.isEmpty();
@@ -311,15 +263,8 @@ public final class Engine implements AutoCloseable {
         glFrontFace(GL_CCW);
         glDisable(GL_STENCIL_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        timers.endFrame(frame);
-        double cpuMs = (System.nanoTime() - frameStart) / 1e6;
-        // 4. at most two frames in flight, as with a swap chain, so timings measure frames and not a queue
-        throttle.endFrame();
-        long frameEnd = System.nanoTime();
-        double wallMs = (frameEnd - (lastFrameEnd != 0 ? lastFrameEnd : frameStart)) / 1e6;
-        lastFrameEnd = frameEnd;
-        awaitingGpu.add(cpuRecord(wallMs, cpuMs));
-        systemNanos.clear();
+        // 4. the frame's times queued for its GPU times; at most two frames in flight, as with a swap chain
+        timing.endFrame(frame, clock.simTime(), stats, counters);
         counters.clear();
         frame++;
     }
@@ -359,65 +304,13 @@ public final class Engine implements AutoCloseable {
         }
     }
 
-    private FrameUniforms.Values frameValues(PassView view) {
-        ViewCamera camera = view.camera();
-        Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
-        Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
-        return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
-                camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
-                exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
-                view.target().height());
-    }
-
-    /**
-     * Binds the shared textures and blocks: the sky's, or neutral stand-ins when no system models the sky; the sun's
-     * shadow once this frame's maps are drawn, else none (no system casts shadows, it is switched off or the sun is
-     * down; and a map being drawn must not be bound for reading).
-     */
-    private void bindShared(boolean shadowDrawn) {
-        SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
-        maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
-        maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
-        SunShadow shadow = shadowDrawn ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
-        shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
-        shadow.block().bindBase(SharedBlock.SHADOW.binding());
-    }
-
-    /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */
-    private static SkyMaps neutralSky(GlContext gl) {
-        FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
-        try {
-            Texture3D air = Texture3D.of(gl, 1, 1, 1, Texture2D.Format.RGBA16F, Texture3D.Sampling3D.LINEAR_CLAMP,
-                    clearAir);
-            return new SkyMaps(air, CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient()));
-        } finally {
-            MemoryUtil.memFree(clearAir);
-        }
-    }
-
-    private FrameRecord cpuRecord(double wallMs, double cpuMs) {
-        Map<String, Double> systemMs = new LinkedHashMap<>();
-        for (EngineSystem s : order.systems()) {
-            Double nanos = systemNanos.get(s.spec().name());
-            if (nanos != null) {
-                systemMs.put(s.spec().name(), nanos / 1e6);
-            }
-        }
-        return new FrameRecord((int) frame, simTime, wallMs, cpuMs, systemMs, Map.of(), stats.triangles(), stats.drawCalls(),
-                counters.snapshot());
-    }
-
     /**
      * Hands over the records of frames whose GPU timings have arrived, oldest first.
      *
      * @param wait true to wait for the GPU to finish every frame rendered so far
      */
     public void collectFrames(boolean wait, Consumer<FrameRecord> sink) {
-        timers.collect(wait, (frameIndex, gpuMs) -> {
-            FrameRecord cpu = awaitingGpu.pop();
-            sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.wallMs(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
-                    cpu.triangles(), cpu.drawCalls(), cpu.counters()));
-        });
+        timing.collect(wait, sink);
     }
 
     /** Reads the scene target back (waits for the GPU). */
@@ -445,8 +338,7 @@ public final class Engine implements AutoCloseable {
         if (width <= 0 || height <= 0 || (width == scene.width() && height == scene.height())) {
             return;
         }
-        scene.close();
-        scene = Framebuffer.scene(gl, width, height);
+        scene = own.replace(scene, Framebuffer.scene(gl, width, height));
     }
 
     /**
@@ -456,37 +348,12 @@ public final class Engine implements AutoCloseable {
     @Override
     public void close() {
         Owned all = new Owned();
+        all.own(own);
         initialised.forEach((system, owned) -> {
             all.own(owned);
             all.own(system);
         });
         initialised.clear();
-        try {
-            all.close();
-        } finally {
-            closeEngineObjects();
-        }
-    }
-
-    private void closeEngineObjects() {
-        if (neutralSky != null) {
-            neutralSky.environment().close();
-            neutralSky.aerialPerspective().close();
-        }
-        if (noShadow != null) {
-            noShadow.close();
-        }
-        if (throttle != null) {
-            throttle.close();
-        }
-        if (timers != null) {
-            timers.close();
-        }
-        if (frameUniforms != null) {
-            frameUniforms.close();
-        }
-        if (scene != null) {
-            scene.close();
-        }
+        all.close();
     }
 }

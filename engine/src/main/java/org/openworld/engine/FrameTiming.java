@@ -1,0 +1,109 @@
+package org.openworld.engine;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Owned;
+import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.FrameThrottle;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GpuTimers;
+
+/**
+ * What a frame cost (docs/benchmarks.md): each system's CPU time, summed over its update and its passes; each span's
+ * GPU time from timer queries, labelled {@code pass.system} ({@code shadow0.terrain} for the first of several views,
+ * {@code update.particles} for an update that works on the GPU); the frame's CPU time and its wall time from the end
+ * of the last frame. GPU times arrive a frame or two late, so each frame's CPU figures wait in a queue until they do
+ * and leave as one {@link FrameRecord}.
+ *
+ * <p>At most two frames are in flight ({@link FrameThrottle}), as with a swap chain: without it a driver that queues
+ * work would let the CPU run ahead and the wall times would measure the queue, not the frames.
+ */
+final class FrameTiming implements AutoCloseable {
+
+    private final Owned owned = new Owned();
+    private final GpuTimers timers;
+    private final FrameThrottle throttle;
+    /** The systems in resolved order, which is the order of each record's per-system times. */
+    private final List<EngineSystem> systems;
+    private final Map<String, Double> systemNanos = new LinkedHashMap<>();
+    private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
+    private long frameStart;
+    private long lastFrameEnd;
+
+    FrameTiming(GlContext gl, List<EngineSystem> systems) {
+        this.systems = systems;
+        try {
+            timers = owned.own(new GpuTimers(gl));
+            throttle = owned.own(new FrameThrottle(gl));
+        } catch (RuntimeException e) {
+            owned.close();
+            throw e;
+        }
+    }
+
+    /** The frame's rendering starts now. */
+    void beginFrame() {
+        frameStart = System.nanoTime();
+    }
+
+    /**
+     * Runs {@code work} for {@code system}, adding its CPU time to the system's, and times it on the GPU as the span
+     * {@code gpuSpan} (null: its work issues no GPU commands worth a span).
+     */
+    void time(String system, String gpuSpan, Runnable work) {
+        long t0 = System.nanoTime();
+        if (gpuSpan != null) {
+            timers.begin(gpuSpan);
+        }
+        work.run();
+        if (gpuSpan != null) {
+            timers.end();
+        }
+        systemNanos.merge(system, (double) (System.nanoTime() - t0), Double::sum);
+    }
+
+    /** Closes the frame's spans, waits for the frame before the last, and queues the frame's CPU record. */
+    void endFrame(long frame, double simTime, DrawStats stats, Counters counters) {
+        timers.endFrame(frame);
+        double cpuMs = (System.nanoTime() - frameStart) / 1e6;
+        throttle.endFrame();
+        long frameEnd = System.nanoTime();
+        double wallMs = (frameEnd - (lastFrameEnd != 0 ? lastFrameEnd : frameStart)) / 1e6;
+        lastFrameEnd = frameEnd;
+        Map<String, Double> systemMs = new LinkedHashMap<>();
+        for (EngineSystem s : systems) {
+            Double nanos = systemNanos.get(s.spec().name());
+            if (nanos != null) {
+                systemMs.put(s.spec().name(), nanos / 1e6);
+            }
+        }
+        awaitingGpu.add(new FrameRecord((int) frame, simTime, wallMs, cpuMs, systemMs, Map.of(), stats.triangles(),
+                stats.drawCalls(), counters.snapshot()));
+        systemNanos.clear();
+    }
+
+    /**
+     * Hands over the records of frames whose GPU timings have arrived, oldest first.
+     *
+     * @param wait true to wait for the GPU to finish every frame rendered so far
+     */
+    void collect(boolean wait, Consumer<FrameRecord> sink) {
+        timers.collect(wait, (frameIndex, gpuMs) -> {
+            FrameRecord cpu = awaitingGpu.pop();
+            sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.wallMs(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
+                    cpu.triangles(), cpu.drawCalls(), cpu.counters()));
+        });
+    }
+
+    @Override
+    public void close() {
+        owned.close();
+    }
+}

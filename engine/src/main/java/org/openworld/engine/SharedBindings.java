@@ -1,0 +1,90 @@
+package org.openworld.engine;
+
+import java.nio.FloatBuffer;
+import org.joml.Matrix4f;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.core.Owned;
+import org.openworld.engine.core.PassView;
+import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.Exposure;
+import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.SunShadow;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.CubeMapTexture;
+import org.openworld.engine.gl.FrameUniforms;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.SharedBlock;
+import org.openworld.engine.gl.SharedTexture;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Texture3D;
+
+/**
+ * What every shader of a pass can read without its system binding it (docs/design.md, "Passes"): the frame uniform
+ * block ({@code shaders/common/frame.glsl}: the pass camera, the sun, the exposure, the clock, the target's size),
+ * the sky's aerial-perspective volume and environment map, and the sun's shadow maps with their block. A world
+ * without a sky gets neutral stand-ins (clear air, a uniform sky as bright as the noon sun's ambient light), and a
+ * frame whose shadow maps are not drawn gets a map that shadows nothing, so a shader never branches on what the
+ * scene has.
+ */
+final class SharedBindings implements AutoCloseable {
+
+    private final Owned owned = new Owned();
+    private final FrameUniforms frameUniforms;
+    private final SkyMaps neutralSky;
+    private final SunShadow noShadow;
+
+    SharedBindings(GlContext gl) {
+        try {
+            frameUniforms = owned.own(new FrameUniforms(gl));
+            neutralSky = neutralSky(gl, owned);
+            noShadow = owned.own(SunShadow.none(gl));
+        } catch (RuntimeException e) {
+            owned.close();
+            throw e;
+        }
+    }
+
+    /**
+     * Writes the frame block for one view of a pass and binds the shared textures and blocks: the sky's, or the
+     * stand-ins; the sun's shadow once this frame's maps are drawn, else none (no system casts shadows, it is switched
+     * off or the sun is down; and a map being drawn must not be bound for reading).
+     */
+    void bind(World world, PassView view, double simTime, long frame, boolean shadowDrawn) {
+        frameUniforms.write(frameValues(world, view, simTime, frame));
+        SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
+        maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
+        maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
+        SunShadow shadow = shadowDrawn ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
+        shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
+        shadow.block().bindBase(SharedBlock.SHADOW.binding());
+    }
+
+    private static FrameUniforms.Values frameValues(World world, PassView view, double simTime, long frame) {
+        ViewCamera camera = view.camera();
+        Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
+        Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
+        return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
+                camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
+                exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
+                view.target().height());
+    }
+
+    /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */
+    private static SkyMaps neutralSky(GlContext gl, Owned owned) {
+        FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
+        try {
+            Texture3D air = owned.own(Texture3D.of(gl, 1, 1, 1, Texture2D.Format.RGBA16F,
+                    Texture3D.Sampling3D.LINEAR_CLAMP, clearAir));
+            return new SkyMaps(air, owned.own(CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient())));
+        } finally {
+            MemoryUtil.memFree(clearAir);
+        }
+    }
+
+    @Override
+    public void close() {
+        owned.close();
+    }
+}
