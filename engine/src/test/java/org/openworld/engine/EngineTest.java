@@ -6,8 +6,20 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.lwjgl.opengl.GL11C.GL_ALWAYS;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.GL_EQUAL;
+import static org.lwjgl.opengl.GL11C.GL_KEEP;
+import static org.lwjgl.opengl.GL11C.GL_REPLACE;
+import static org.lwjgl.opengl.GL11C.GL_STENCIL_BUFFER_BIT;
+import static org.lwjgl.opengl.GL11C.GL_STENCIL_TEST;
+import static org.lwjgl.opengl.GL11C.glClear;
+import static org.lwjgl.opengl.GL11C.glClearStencil;
 import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL11C.glEnable;
+import static org.lwjgl.opengl.GL11C.glStencilFunc;
+import static org.lwjgl.opengl.GL11C.glStencilMask;
+import static org.lwjgl.opengl.GL11C.glStencilOp;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 
@@ -135,6 +147,8 @@ class EngineTest {
         final UnaryOperator<ViewCamera> camera;
         Framebuffer target;
         boolean skip;
+        /** The viewer's camera of every passViews call, in order. */
+        final List<ViewCamera> viewers = new ArrayList<>();
         /** How many views (cascades) the pass is drawn with; the i-th gets the owner's camera moved up by i metres. */
         int views = 1;
 
@@ -159,6 +173,7 @@ class EngineTest {
 
         @Override
         public List<PassView> passViews(World world, PassView viewer) {
+            viewers.add(viewer.camera());
             if (skip) {
                 return List.of();
             }
@@ -288,6 +303,81 @@ class EngineTest {
             assertSame(mirror.target, targets.get(Pass.REFLECTION));
             assertSame(targets.get(Pass.MAIN), targets.get(Pass.OVERLAY));
             assertEquals(SIZE, targets.get(Pass.MAIN).width());
+        }
+    }
+
+    @Test
+    void anOwnerIsGivenTheCameraMainDrawsWithMadeAnewEachFrame() {
+        try (Engine engine = engineWithAllPasses()) {
+            engine.update();
+            engine.render();
+            engine.render();
+            List<ViewCamera> main = calls.stream().filter(c -> c.pass() == Pass.MAIN && c.system().equals("terrain"))
+                    .map(Call::camera).toList();
+            assertEquals(2, main.size());
+            assertEquals(2, mirror.viewers.size());
+            assertSame(main.get(0), mirror.viewers.get(0), "the reflection's viewer is MAIN's camera of that frame");
+            assertSame(main.get(1), mirror.viewers.get(1));
+            assertNotSame(main.get(0), main.get(1), "each frame makes its own viewer camera");
+        }
+    }
+
+    /** A {@link Drawing} that logs its {@link EngineSystem#beginPass} calls. */
+    static class Beginning extends Drawing {
+        Beginning(SystemSpec spec, List<String> log, List<Call> calls, Function<GlContext, Mesh> meshFactory,
+                  float... color) {
+            super(spec, log, calls, meshFactory, color);
+        }
+
+        @Override
+        public void beginPass(Pass pass, RenderContext context) {
+            log.add("begin " + pass.label() + " " + spec.name());
+        }
+    }
+
+    @Test
+    void everyWorkingSystemBeginsThePassBeforeTheFirstDraws() {
+        Beginning ground = new Beginning(SystemSpec.named("ground").draws(Pass.MAIN), log, calls,
+                GlTestSupport::quarterQuad, 0, 1, 0);
+        // drawn after the ground, but its rule is set before: as the water's stencil method, everything drawn in the
+        // pass marks the stencil 0 over a clear 0xFF, and the lake shows only where nothing was drawn
+        Beginning lake = new Beginning(SystemSpec.named("lake").after("ground").draws(Pass.MAIN), log, calls,
+                GlTestSupport::fullScreenTriangle, 0, 0, 1) {
+            @Override
+            public void beginPass(Pass pass, RenderContext context) {
+                super.beginPass(pass, context);
+                glClearStencil(0xFF);
+                glStencilMask(0xFF);
+                glClear(GL_STENCIL_BUFFER_BIT);
+                glEnable(GL_STENCIL_TEST);
+                glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            }
+
+            @Override
+            public void render(Pass pass, RenderContext context) {
+                glStencilFunc(GL_EQUAL, 0xFF, 0xFF);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                super.render(pass, context);
+                glDisable(GL_STENCIL_TEST);
+            }
+        };
+        Beginning idle = new Beginning(SystemSpec.named("idle").draws(Pass.MAIN), log, calls,
+                GlTestSupport::quarterQuad, 1, 0, 0);
+        Beginning label = new Beginning(SystemSpec.named("label").draws(Pass.OVERLAY), log, calls,
+                GlTestSupport::quarterQuad, 1, 1, 1);
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, lake, label, idle, ground)) {
+            engine.setEnabled("idle", false);
+            engine.update();
+            log.clear();
+            engine.render();
+            assertEquals(List.of("begin main ground", "begin main lake", "main ground", "main lake",
+                    "begin overlay label", "overlay label"), log, "switched off, idle neither begins nor draws");
+            engine.setEnabled("label", false);
+            engine.render();
+            Image image = engine.readImage();
+            assertEquals("0,255,0", rgb(image, SIZE / 4, SIZE * 3 / 4), "the ground kept its stencil mark");
+            assertEquals("0,0,255", rgb(image, SIZE * 3 / 4, SIZE / 4), "the lake where nothing was drawn");
         }
     }
 
