@@ -6,20 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.lwjgl.opengl.GL11C.GL_ALWAYS;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
-import static org.lwjgl.opengl.GL11C.GL_EQUAL;
-import static org.lwjgl.opengl.GL11C.GL_KEEP;
-import static org.lwjgl.opengl.GL11C.GL_REPLACE;
-import static org.lwjgl.opengl.GL11C.GL_STENCIL_BUFFER_BIT;
-import static org.lwjgl.opengl.GL11C.GL_STENCIL_TEST;
-import static org.lwjgl.opengl.GL11C.glClear;
-import static org.lwjgl.opengl.GL11C.glClearStencil;
+import static org.lwjgl.opengl.GL11C.glColorMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
-import static org.lwjgl.opengl.GL11C.glEnable;
-import static org.lwjgl.opengl.GL11C.glStencilFunc;
-import static org.lwjgl.opengl.GL11C.glStencilMask;
-import static org.lwjgl.opengl.GL11C.glStencilOp;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 
@@ -338,46 +327,39 @@ class EngineTest {
     @Test
     void everyWorkingSystemBeginsThePassBeforeTheFirstDraws() {
         Beginning ground = new Beginning(SystemSpec.named("ground").draws(Pass.MAIN), log, calls,
-                GlTestSupport::quarterQuad, 0, 1, 0);
-        // drawn after the ground, but its rule is set before: as the water's stencil method, everything drawn in the
-        // pass marks the stencil 0 over a clear 0xFF, and the lake shows only where nothing was drawn
-        Beginning lake = new Beginning(SystemSpec.named("lake").after("ground").draws(Pass.MAIN), log, calls,
-                GlTestSupport::fullScreenTriangle, 0, 0, 1) {
+                GlTestSupport::quarterQuad, 1, 1, 0);
+        // drawn after the ground, but the state it sets for the pass holds for the ground's drawing too, as the
+        // water's stencil rule holds for the terrain's: here, nothing drawn in MAIN writes red
+        Beginning filter = new Beginning(SystemSpec.named("filter").after("ground").draws(Pass.MAIN), log, calls,
+                GlTestSupport::quarterQuad, 1, 1, 1) {
             @Override
             public void beginPass(Pass pass, RenderContext context) {
                 super.beginPass(pass, context);
-                glClearStencil(0xFF);
-                glStencilMask(0xFF);
-                glClear(GL_STENCIL_BUFFER_BIT);
-                glEnable(GL_STENCIL_TEST);
-                glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                glColorMask(false, true, true, true);
             }
 
             @Override
             public void render(Pass pass, RenderContext context) {
-                glStencilFunc(GL_EQUAL, 0xFF, 0xFF);
-                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                super.render(pass, context);
-                glDisable(GL_STENCIL_TEST);
+                log.add(pass.label() + " filter");
+                glColorMask(true, true, true, true);
             }
         };
         Beginning idle = new Beginning(SystemSpec.named("idle").draws(Pass.MAIN), log, calls,
                 GlTestSupport::quarterQuad, 1, 0, 0);
         Beginning label = new Beginning(SystemSpec.named("label").draws(Pass.OVERLAY), log, calls,
                 GlTestSupport::quarterQuad, 1, 1, 1);
-        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, lake, label, idle, ground)) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, filter, label, idle, ground)) {
             engine.setEnabled("idle", false);
             engine.update();
             log.clear();
             engine.render();
-            assertEquals(List.of("begin main ground", "begin main lake", "main ground", "main lake",
+            assertEquals(List.of("begin main ground", "begin main filter", "main ground", "main filter",
                     "begin overlay label", "overlay label"), log, "switched off, idle neither begins nor draws");
             engine.setEnabled("label", false);
             engine.render();
             Image image = engine.readImage();
-            assertEquals("0,255,0", rgb(image, SIZE / 4, SIZE * 3 / 4), "the ground kept its stencil mark");
-            assertEquals("0,0,255", rgb(image, SIZE * 3 / 4, SIZE / 4), "the lake where nothing was drawn");
+            assertEquals("0,255,0", rgb(image, SIZE / 4, SIZE * 3 / 4), "the ground's yellow without its red");
+            assertEquals("0,0,0", rgb(image, SIZE * 3 / 4, SIZE / 4), "the clear colour where nothing was drawn");
         }
     }
 
