@@ -176,7 +176,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
      * Step 1 of the paper's stencil method, for MAIN when the water will be drawn by it: the stencil cleared to 0xFF
      * and every fragment that passes the depth test, whoever draws it, writing 0 ("stencil clear value 0xFF, the
      * terrain writes 0"). Set here, before the terrain and the sky draw, so they need not know of it; with the
-     * Fresnel method, under the water or with the water switched off, no stencil state is set at all.
+     * Fresnel method, under the water or with the water switched off, no stencil state is set at all. Cost: one
+     * stencil-only clear of the scene target per frame (the engine's own clear leaves the stencil at 0).
      */
     @Override
     public void beginPass(Pass pass, RenderContext context) {
@@ -198,6 +199,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         updateRipples(s);
         boolean underwater = underwater(s, context.camera());
         context.world().resource(Counters.class).put("water.underwater", underwater ? 1 : 0);
+        // whether the reflection pass ran for this very camera this frame (see mirroredViewer): read, never reset
         boolean reflected = mirroredViewer == context.camera();
         if (drawsByStencil(s, context.camera())) {
             drawStencil(s, reflected, context);
