@@ -21,6 +21,7 @@ uniform sampler2DArray uMatAlbedo; // layers MAT_GRASS, MAT_ROCK, MAT_SNOW; sRGB
 uniform sampler2DArray uMatDetail; // rg: tangent-space normal xy * 0.5 + 0.5; b: relief 0..1; a: gloss 0..1
 uniform float uMatDetailScale;     // metres per fine tile
 uniform int uMatSnowMode;          // MAT_SNOW_MAP or MAT_ALTITUDE_BANDS
+uniform vec2 uMatSnowBand;         // ALTITUDE_BANDS: normalised heights where snow starts and is full (SnowLines)
 uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
 uniform int uMatGlossMap;          // 1: highlight and sky reflection, scaled by the gloss maps
 
@@ -52,8 +53,6 @@ const float MAT_ROCK_SLOPE = 0.82;   // normal.y (35 deg) from which soil no lon
 const float MAT_ROCK_CLIFF = 0.68;   // ... fully rock at normal.y 0.68 (47 deg)
 const float MAT_SNOW_HOLDS = 0.62;   // normal.y (52 deg) beyond which snow starts to slide off...
 const float MAT_SNOW_SLIDES = 0.48;  // ... and is gone at normal.y 0.48 (61 deg)
-const float MAT_SNOW_LINE = 0.62;    // ALTITUDE_BANDS: normalised height of the snow line
-const float MAT_SNOW_BAND_EDGE = 0.004; // ALTITUDE_BANDS: half width of the transition, normalised height (sharp)
 const float MAT_EDGE_NOISE = 0.12;   // normalised height / slope by which the macro noise bends the blend edges
 const float MAT_LAYER_SOFTNESS = 0.15; // relief units over which a layer's cover fades (height-based blending)
 // 5. light
@@ -162,7 +161,7 @@ vec3 shadeTerrain(TerrainSurface s) {
         float sticks = smoothstep(MAT_SNOW_SLIDES, MAT_SNOW_HOLDS, n0.y);
         snowAmount = smoothstep(0.3, 0.7, s.snow + edge * 2.0) * sticks;
     } else {
-        snowAmount = smoothstep(MAT_SNOW_LINE - MAT_SNOW_BAND_EDGE, MAT_SNOW_LINE + MAT_SNOW_BAND_EDGE, s.height01);
+        snowAmount = smoothstep(uMatSnowBand.x, uMatSnowBand.y, s.height01);
     }
 
     // 3. layers: grass, rock over grass (its highest relief first), snow over both (hollows first)

@@ -39,7 +39,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *   <li>fixed-step {@code update}: every enabled system, in resolved order, advances by exactly one step;</li>
  *   <li>render passes SHADOW → REFLECTION → MAIN → OVERLAY: for each pass that some system draws in (and, for SHADOW
  *       and REFLECTION, whose {@link PassOwner} gives a view this frame), the frame uniform block is written with
- *       that pass's camera, its target is bound and cleared, and the systems draw in resolved order;</li>
+ *       that pass's camera, its target is bound and cleared, each system working in it sets up the pass
+ *       ({@link EngineSystem#beginPass}), and the systems draw in resolved order;</li>
  *   <li>the picture is in the scene target, to be read back (headless) or shown (window).</li>
  * </ol>
  * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as
@@ -246,10 +247,16 @@ public final class Engine implements AutoCloseable {
                 if (pass != Pass.OVERLAY) {
                     clear(pass);
                 }
-                // 3. the systems draw, each timed on the GPU as one span labelled pass.system, or passN.system
+                // 3. each system's state for the whole pass (EngineSystem.beginPass), before anyone draws
+                RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
+                for (EngineSystem system : drawing) {
+                    if (isEnabled(system.spec().name())) {
+                        system.beginPass(pass, context);
+                    }
+                }
+                // 4. the systems draw, each timed on the GPU as one span labelled pass.system, or passN.system
                 //    for the N-th of several views (shadow0.terrain, shadow1.terrain, ... one per cascade)
                 String label = pass.label() + (views.size() > 1 ? String.valueOf(v) : "") + ".";
-                RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
                 for (EngineSystem system : drawing) {
                     if (!isEnabled(system.spec().name())) {
                         continue;
@@ -260,10 +267,11 @@ public final class Engine implements AutoCloseable {
             }
             shadowDrawn |= pass == Pass.SHADOW && !views.isEmpty();
         }
+        // a neutral state for whatever draws next (the window's panel): front faces wind CCW, no stencil test
         glFrontFace(GL_CCW);
         glDisable(GL_STENCIL_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        // 4. the frame's times queued for its GPU times; at most two frames in flight, as with a swap chain
+        // 5. the frame's times queued for its GPU times; at most two frames in flight, as with a swap chain
         timing.endFrame(frame, clock.simTime(), stats, counters);
         counters.clear();
         frame++;
@@ -282,26 +290,16 @@ public final class Engine implements AutoCloseable {
     }
 
     /**
-     * Clears a pass's target. MAIN starts black, with the stencil at 0xFF everywhere and every fragment that passes
-     * the depth test writing 0: the first step of the paper's water (section 3.3), "stencil clear value 0xFF, the
-     * terrain writes 0", kept as the engine's rule so no drawing system need know of it. A system that marks its
-     * pixels otherwise (the water writes 0xFF) sets its own stencil state and puts this one back. An owned pass
-     * (shadow map, reflection) starts with alpha 0, so a reader can tell where nothing was drawn.
+     * Clears a pass's target: colour, depth and stencil (to 0). MAIN starts black; an owned pass (shadow map,
+     * reflection) starts with alpha 0, so a reader can tell where nothing was drawn. Nothing else: a system that needs
+     * a state for the whole pass (the water's stencil rule) sets it in its {@link EngineSystem#beginPass}.
      */
     private static void clear(Pass pass) {
-        boolean main = pass == Pass.MAIN;
-        glClearColor(0, 0, 0, main ? 1 : 0);
-        glClearStencil(0xFF);
+        glClearColor(0, 0, 0, pass == Pass.MAIN ? 1 : 0);
+        glClearStencil(0);
         glDepthMask(true);
         glStencilMask(0xFF);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        if (main) {
-            glEnable(GL_STENCIL_TEST);
-            glStencilFunc(GL_ALWAYS, 0, 0xFF);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        } else {
-            glDisable(GL_STENCIL_TEST);
-        }
     }
 
     /**

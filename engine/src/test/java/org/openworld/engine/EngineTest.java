@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.glColorMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
 import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
@@ -135,6 +136,8 @@ class EngineTest {
         final UnaryOperator<ViewCamera> camera;
         Framebuffer target;
         boolean skip;
+        /** The viewer's camera of every passViews call, in order. */
+        final List<ViewCamera> viewers = new ArrayList<>();
         /** How many views (cascades) the pass is drawn with; the i-th gets the owner's camera moved up by i metres. */
         int views = 1;
 
@@ -159,6 +162,7 @@ class EngineTest {
 
         @Override
         public List<PassView> passViews(World world, PassView viewer) {
+            viewers.add(viewer.camera());
             if (skip) {
                 return List.of();
             }
@@ -288,6 +292,74 @@ class EngineTest {
             assertSame(mirror.target, targets.get(Pass.REFLECTION));
             assertSame(targets.get(Pass.MAIN), targets.get(Pass.OVERLAY));
             assertEquals(SIZE, targets.get(Pass.MAIN).width());
+        }
+    }
+
+    @Test
+    void anOwnerIsGivenTheCameraMainDrawsWithMadeAnewEachFrame() {
+        try (Engine engine = engineWithAllPasses()) {
+            engine.update();
+            engine.render();
+            engine.render();
+            List<ViewCamera> main = calls.stream().filter(c -> c.pass() == Pass.MAIN && c.system().equals("terrain"))
+                    .map(Call::camera).toList();
+            assertEquals(2, main.size());
+            assertEquals(2, mirror.viewers.size());
+            assertSame(main.get(0), mirror.viewers.get(0), "the reflection's viewer is MAIN's camera of that frame");
+            assertSame(main.get(1), mirror.viewers.get(1));
+            assertNotSame(main.get(0), main.get(1), "each frame makes its own viewer camera");
+        }
+    }
+
+    /** A {@link Drawing} that logs its {@link EngineSystem#beginPass} calls. */
+    static class Beginning extends Drawing {
+        Beginning(SystemSpec spec, List<String> log, List<Call> calls, Function<GlContext, Mesh> meshFactory,
+                  float... color) {
+            super(spec, log, calls, meshFactory, color);
+        }
+
+        @Override
+        public void beginPass(Pass pass, RenderContext context) {
+            log.add("begin " + pass.label() + " " + spec.name());
+        }
+    }
+
+    @Test
+    void everyWorkingSystemBeginsThePassBeforeTheFirstDraws() {
+        Beginning ground = new Beginning(SystemSpec.named("ground").draws(Pass.MAIN), log, calls,
+                GlTestSupport::quarterQuad, 1, 1, 0);
+        // drawn after the ground, but the state it sets for the pass holds for the ground's drawing too, as the
+        // water's stencil rule holds for the terrain's: here, nothing drawn in MAIN writes red
+        Beginning filter = new Beginning(SystemSpec.named("filter").after("ground").draws(Pass.MAIN), log, calls,
+                GlTestSupport::quarterQuad, 1, 1, 1) {
+            @Override
+            public void beginPass(Pass pass, RenderContext context) {
+                super.beginPass(pass, context);
+                glColorMask(false, true, true, true);
+            }
+
+            @Override
+            public void render(Pass pass, RenderContext context) {
+                log.add(pass.label() + " filter");
+                glColorMask(true, true, true, true);
+            }
+        };
+        Beginning idle = new Beginning(SystemSpec.named("idle").draws(Pass.MAIN), log, calls,
+                GlTestSupport::quarterQuad, 1, 0, 0);
+        Beginning label = new Beginning(SystemSpec.named("label").draws(Pass.OVERLAY), log, calls,
+                GlTestSupport::quarterQuad, 1, 1, 1);
+        try (Engine engine = GlTestSupport.engine(GL.context(), SIZE, SIZE, filter, label, idle, ground)) {
+            engine.setEnabled("idle", false);
+            engine.update();
+            log.clear();
+            engine.render();
+            assertEquals(List.of("begin main ground", "begin main filter", "main ground", "main filter",
+                    "begin overlay label", "overlay label"), log, "switched off, idle neither begins nor draws");
+            engine.setEnabled("label", false);
+            engine.render();
+            Image image = engine.readImage();
+            assertEquals("0,255,0", rgb(image, SIZE / 4, SIZE * 3 / 4), "the ground's yellow without its red");
+            assertEquals("0,0,0", rgb(image, SIZE * 3 / 4, SIZE / 4), "the clear colour where nothing was drawn");
         }
     }
 

@@ -8,6 +8,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * <ol>
  *   <li>{@link #init}: create GPU resources, spawn entities, publish resources (once, on the GL thread);</li>
  *   <li>{@link #update}: advance by one fixed simulation step;</li>
+ *   <li>{@link #beginPass}: set up GL state that holds for a whole pass, before anyone draws in it;</li>
  *   <li>{@link #render}: draw in one pass, for each pass declared in {@link #spec()};</li>
  *   <li>{@link #close}: free everything {@code init} created, on the GL thread; also called after an
  *       {@code init} that failed half-way, so it must skip what was never created.</li>
@@ -32,6 +33,20 @@ public interface EngineSystem extends AutoCloseable {
      * @param step  the fixed simulation step, seconds
      */
     default void update(World world, double step) {
+    }
+
+    /**
+     * Called at the start of each pass this system works in (draws in or prepares), once per view of the pass: after
+     * the engine has bound the pass's target and cleared it (OVERLAY, drawn over the picture, is not cleared), before
+     * any system's {@link #render} in it, and only while this system is switched on. It is for GL state that the
+     * systems drawing <em>before</em> this one must already obey: the water's stencil method has every fragment drawn
+     * in MAIN mark the stencil, so it sets that rule here, and no other system need know of it.
+     *
+     * <p>Every working system's hook runs, in frame order, before the first one draws; so set only state that this
+     * system's technique owns and that the others' drawing does not change. The engine puts back a neutral state
+     * after the frame. Most systems need nothing here.
+     */
+    default void beginPass(Pass pass, RenderContext context) {
     }
 
     default void render(Pass pass, RenderContext context) {

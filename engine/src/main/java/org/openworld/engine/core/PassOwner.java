@@ -20,7 +20,9 @@ public interface PassOwner {
      *
      * @param world  the shared world
      * @param viewer MAIN's view this frame: the viewer's camera, from which a mirror's or the sun's cameras are made,
-     *               and the scene target, whose size a screen-aligned target follows
+     *               and the scene target, whose size a screen-aligned target follows. The camera is made anew each
+     *               frame and is the very object MAIN's systems get in their {@link RenderContext}, so an owner can
+     *               tell in MAIN whether its pass ran for this frame (the water's reflection)
      * @return the views the pass is drawn with, in order; none to skip the pass this frame
      */
     List<PassView> passViews(World world, PassView viewer);

@@ -2,11 +2,15 @@ package org.openworld.engine.core;
 
 import java.util.EnumSet;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 
 /**
  * What a system declares about itself, from which the engine derives the frame order: the resource and component
  * classes it reads and writes, the systems it must follow, and the passes it draws in.
+ *
+ * <p>Types and names keep the order they are declared in (Set.of would shuffle them per run), so
+ * {@code openworld info --frame} prints the same text every time.
  *
  * <p>Written as a small builder so a declaration reads like a sentence:
  * <pre>{@code
@@ -38,19 +42,19 @@ public final class SystemSpec {
 
     /** Resources or components this system reads; it runs after every system that writes them. */
     public SystemSpec reads(Class<?>... types) {
-        reads.addAll(Set.of(types));
+        reads.addAll(List.of(types));
         return this;
     }
 
     /** Resources or components this system writes; two writers of one type must be ordered with {@link #after}. */
     public SystemSpec writes(Class<?>... types) {
-        writes.addAll(Set.of(types));
+        writes.addAll(List.of(types));
         return this;
     }
 
     /** Systems, by name, that must run before this one (in update and in every pass). */
     public SystemSpec after(String... systems) {
-        after.addAll(Set.of(systems));
+        after.addAll(List.of(systems));
         return this;
     }
 

@@ -15,6 +15,13 @@
  * and REFLECTION what their {@link org.openworld.engine.core.PassOwner} (the shadow system, the water system) gives
  * each frame.
  *
+ * <p><b>Shared vocabulary.</b> Types that several systems write or read, and that no one system owns, live here
+ * rather than in a system's package: {@link org.openworld.engine.core.HeightField} (the ground, published by the
+ * terrain or a test scene) and {@link org.openworld.engine.core.Cullable} with its
+ * {@link org.openworld.engine.core.BoundsTree} (what a drawing system asks the culling to test). A system imports
+ * another system's package only for a type it declares in {@code reads}/{@code writes} (the engine's
+ * {@code SystemImportsTest} checks every import line).
+ *
  * <p><b>Limits.</b> The world is a hash map per component class: fine for thousands of entities, not for millions
  * (particles live on the GPU, not in the world).
  */

@@ -10,7 +10,7 @@
  * corners), a box inside never fails.
  *
  * <p><b>Hierarchy.</b> The {@link org.openworld.engine.culling.CullingSystem} walks each
- * {@link org.openworld.engine.culling.Cullable}'s {@link org.openworld.engine.culling.BoundsTree} (the terrain's
+ * {@link org.openworld.engine.core.Cullable}'s {@link org.openworld.engine.core.BoundsTree} (the terrain's
  * quadtree, with each node's box spanning its min and max heights) from the root: a node wholly outside or wholly
  * inside settles its whole subtree, so a pass tests a few hundred boxes of a tree of tens of thousands. It runs in
  * every pass that draws (main, light, mirror) with that pass's camera, before the drawers, and leaves a

@@ -2,8 +2,10 @@ package org.openworld.engine.environment;
 
 /**
  * Where snow lies on the ground, in metres: below {@code start} there is none, above {@code full} the ground is white,
- * and in between the chance rises (paper 2.2). Written by the terrain, which knows its relief; read by whatever grows
- * or falls on the ground (trees stop below the snow, flakes settle above it). A world without one has no snow line.
+ * and in between the chance rises (paper 2.2). Written by the terrain, which knows its relief, from the snow rule it
+ * draws with (at init and every update); read by whatever grows or falls on the ground (trees stop below the snow).
+ * It is the rule's line, not every pixel's: the drawn snow has a ragged fringe and slides off steep slopes. A world
+ * without one has no snow line.
  *
  * @param start height where snow may begin, metres
  * @param full  height above which snow is certain, metres; at least {@code start}

@@ -9,5 +9,9 @@
  *
  * <p>The sky system writes the first four, the shadow system the last. Without them the engine lights the world with
  * a high white sun, clear air and no shadows, so a system can be read and tested alone.
+ *
+ * <p>Beside the light, two facts about the world's surface that one system knows and others build on, so that no
+ * system need import another's settings: {@link org.openworld.engine.environment.WaterLevel} (the water system writes
+ * it, the minimap reads it) and {@link org.openworld.engine.environment.SnowLine} (the terrain writes it, in metres).
  */
 package org.openworld.engine.environment;

@@ -13,13 +13,14 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
-import org.openworld.engine.water.WaterSettings;
 
 /**
  * A top-down map of the ground around the camera, north up, in a corner of the picture, with a marker at the camera
@@ -54,7 +55,7 @@ public final class MinimapSystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         // transparent(): drawn over the finished picture, after every other system that draws in OVERLAY
-        return SystemSpec.named("minimap").reads(Settings.class, Camera.class, HeightField.class)
+        return SystemSpec.named("minimap").reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class)
                 .transparent().draws(Pass.OVERLAY)
                 .offByDefault(); // shots and figures unchanged unless asked for: --set system.minimap=on
     }
@@ -81,12 +82,11 @@ public final class MinimapSystem implements EngineSystem {
 
     @Override
     public void render(Pass pass, RenderContext context) {
-        Settings settings = context.world().resource(Settings.class);
-        MinimapSettings s = settings.get(MinimapSettings.class);
+        MinimapSettings s = context.world().resource(Settings.class).get(MinimapSettings.class);
         CameraPose pose = context.world().resource(Camera.class).pose();
         // 1. the map around the camera: built again only when the camera nears its edge or what it shows changed
         HeightField field = context.world().findResource(HeightField.class).orElse(HeightField.FLAT);
-        double water = waterLevel(settings);
+        double water = waterLevel(context.world());
         if (map == null || !map.covers(field, pose.x(), pose.z(), s.range(), water)) {
             map = ReliefMap.build(field, pose.x(), pose.z(), s.range(), water);
             ByteBuffer texels = MemoryUtil.memAlloc(map.rgba().length).put(map.rgba()).flip();
@@ -116,12 +116,11 @@ public final class MinimapSystem implements EngineSystem {
     }
 
     /**
-     * The height under which the map shows water: the water system's plane ({@code water.level}), or {@code -∞}
-     * when the scene has no water system, so no ground is drawn as water that the picture shows dry.
+     * The height under which the map shows water: the world's {@link WaterLevel} (the water system writes it), or
+     * {@code -∞} when the world has none, so no ground is drawn as water that the picture shows dry.
      */
-    static double waterLevel(Settings settings) {
-        return settings.groups().contains(WaterSettings.SETTINGS) ? settings.get(WaterSettings.class).level()
-                : Double.NEGATIVE_INFINITY;
+    static double waterLevel(World world) {
+        return world.findResource(WaterLevel.class).map(WaterLevel::height).orElse(Double.NEGATIVE_INFINITY);
     }
 
     /** How often the map was built: once when first drawn, then once per move of a quarter range (tests). */

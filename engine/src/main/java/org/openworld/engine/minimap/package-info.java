@@ -12,9 +12,10 @@
  * <pre>
  *   colour = land · (a + (1 − a) · max(0, n · l))      a = 0.3, the light on slopes turned away
  * </pre>
- * and ground below the water system's {@code water.level} is a flat blue (no water system: no water). The colours
- * go into an RGBA8 texture as display (sRGB) values. The grid is snapped to its own spacing, so a map built again
- * samples the same points and the picture does not swim.
+ * and ground below the world's {@link org.openworld.engine.environment.WaterLevel} (which the water system writes
+ * from {@code water.level}) is a flat blue (no water level in the world: no water). The colours go into an RGBA8
+ * texture as display (sRGB) values. The grid is snapped to its own spacing, so a map built again samples the same
+ * points and the picture does not swim.
  *
  * <p><b>Drawing</b> ({@code shaders/minimap/minimap.vert}, {@code minimap.frag}), in the
  * {@link org.openworld.engine.core.Pass#OVERLAY} pass, after every other system drawing there: one square of two

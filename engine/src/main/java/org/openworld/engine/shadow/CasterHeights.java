@@ -1,7 +1,7 @@
 package org.openworld.engine.shadow;
 
+import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.World;
-import org.openworld.engine.culling.Cullable;
 
 /**
  * The lowest and highest point of everything the culling system knows of (the roots of the bounds trees): what can

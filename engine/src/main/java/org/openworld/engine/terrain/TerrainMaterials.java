@@ -66,6 +66,8 @@ public final class TerrainMaterials implements AutoCloseable {
             case SNOW_MAP -> 0;
             case ALTITUDE_BANDS -> 1;
         });
+        u.snowBand.set((float) (SnowLines.BAND_LINE - SnowLines.BAND_EDGE),
+                (float) (SnowLines.BAND_LINE + SnowLines.BAND_EDGE));
         u.normalMap.set(settings.normalMap() ? 1 : 0);
         u.glossMap.set(settings.glossMap() ? 1 : 0);
     }
@@ -83,6 +85,7 @@ public final class TerrainMaterials implements AutoCloseable {
         private final Uniform.Int detail;
         private final Uniform.Float detailScale;
         private final Uniform.Int snowMode;
+        private final Uniform.Vec2 snowBand;
         private final Uniform.Int normalMap;
         private final Uniform.Int glossMap;
 
@@ -92,6 +95,7 @@ public final class TerrainMaterials implements AutoCloseable {
             detail = program.int1("uMatDetail");
             detailScale = program.float1("uMatDetailScale");
             snowMode = program.int1("uMatSnowMode");
+            snowBand = program.vec2("uMatSnowBand");
             normalMap = program.int1("uMatNormalMap");
             glossMap = program.int1("uMatGlossMap");
         }

@@ -1,6 +1,6 @@
 package org.openworld.engine.terrain;
 
-import org.openworld.engine.culling.BoundsTree;
+import org.openworld.engine.core.BoundsTree;
 
 /**
  * The quadtree of terrain patches over one tile of a {@link HeightPyramid}. A leaf covers N × N height samples; a

@@ -9,6 +9,7 @@ import org.joml.Vector3fc;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
@@ -16,8 +17,8 @@ import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
-import org.openworld.engine.culling.Cullable;
 import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.settings.Settings;
@@ -25,7 +26,7 @@ import org.openworld.engine.settings.SettingsGroup;
 
 /**
  * The mountains: generates (or imports) the height field with its pyramid and snow map, publishes it as the world's
- * {@link HeightField}, and draws it as geomipmapped patches chosen by a {@link PatchSelection} among those the
+ * {@link HeightField} and where its snow lies as the world's {@link SnowLine} (metres, {@link SnowLines}), and draws it as geomipmapped patches chosen by a {@link PatchSelection} among those the
  * culling system left visible.
  *
  * <p>Frame by frame: {@link #update} keeps the copies of a periodic tile centred on the camera (so the world has no
@@ -33,8 +34,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * chooses the cut and draws it with one instanced call per index pattern.
  *
  * <p>Order: the {@link Cullable} and the {@link HeightField} are attached at init and the copy offsets are refreshed in
- * update, which always precedes every pass's render, so neither needs an order edge; the terrain only declares that
- * it reads the {@link Visibility} the culling writes in each pass, and the {@link Camera} it follows.
+ * update, which always precedes every pass's render, so neither needs an order edge; the terrain declares that it
+ * reads the {@link Visibility} the culling writes in each pass and the {@link Camera} it follows, and that it writes
+ * the {@link SnowLine}: at init and again each update, as {@code materials.snow-mode} may change while it runs.
  */
 public final class TerrainSystem implements EngineSystem {
 
@@ -85,7 +87,7 @@ public final class TerrainSystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class)
-                .draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
+                .writes(SnowLine.class).draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -107,6 +109,7 @@ public final class TerrainSystem implements EngineSystem {
         data = TerrainData.create(terrain, seed, times);
         HeightMap base = data.pyramid().base();
         context.world().setResource(HeightField.class, base::heightAt);
+        publishSnowLine(context.world(), settings);
         // 2. the quadtree and its boxes, handed to the culling system
         int cells = settings.get(LodSettings.class).patchVertices() - 1;
         tree = new TerrainQuadtree(data.pyramid(), cells);
@@ -141,8 +144,15 @@ public final class TerrainSystem implements EngineSystem {
         p.int1("periodic").set(base.periodic() ? 1 : 0);
     }
 
+    /** The snow line in metres of the snow rule in use: the snow map's, or the altitude bands'. */
+    private void publishSnowLine(World world, Settings settings) {
+        world.setResource(SnowLines.of(data.pyramid().base(), settings.get(TerrainSettings.class),
+                settings.get(MaterialSettings.class).snowMode()));
+    }
+
     @Override
     public void update(World world, double step) {
+        publishSnowLine(world, world.resource(Settings.class));
         HeightMap base = data.pyramid().base();
         if (!base.periodic()) {
             return;

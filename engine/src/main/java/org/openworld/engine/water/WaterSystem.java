@@ -16,8 +16,10 @@ import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
@@ -36,7 +38,13 @@ import org.openworld.engine.water.WaterSettings.Method;
  * <p>Frame by frame: as the owner of {@link Pass#REFLECTION} it gives the engine the mirrored camera and its
  * reflection target (nothing while the eye is under the water); the terrain and the sky draw into it. In
  * {@link Pass#MAIN}, after them, it copies the scene's colour and depth (what lies behind the water) and draws the
- * water over the whole screen, one ray–plane intersection per pixel.
+ * water over the whole screen, one ray–plane intersection per pixel. The paper's stencil method sets its stencil
+ * rule in {@link #beginPass}, before the terrain and the sky draw in MAIN.
+ *
+ * <p>It publishes the plane's height as the world's {@link WaterLevel}, at init and in every update, so a change of
+ * {@code water.level} is seen by the systems that read it (the minimap) in the same step. Switched off, the water is
+ * not drawn but the level stays in the world as last written: the lake is still there for the map, as the terrain's
+ * height field stays when the terrain is switched off.
  */
 public final class WaterSystem implements EngineSystem, PassOwner {
 
@@ -76,8 +84,14 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     private double rippleDirection = Double.NaN;
     private Framebuffer reflection;
     private Framebuffer behind;
-    /** Whether the reflection pass ran this frame (the eye above the water); reset after MAIN. */
-    private boolean reflected;
+    /**
+     * The viewer's camera that the reflection target mirrors: written by {@link #passViews} when it gives the engine a
+     * reflection view, only read by {@link #render}, which uses the reflection when this is the very camera MAIN
+     * draws with. The engine makes the viewer's camera anew each frame and hands the same object to the owners of a
+     * pass and to MAIN's systems, so a frame whose reflection pass did not run (the eye under the water, or nothing
+     * drawing in it) finds an older camera here and shows no reflection: nothing needs resetting after MAIN.
+     */
+    private ViewCamera mirroredViewer;
     private double simTime;
     private FresnelUniforms fresnelUniforms;
     private StencilUniforms stencilUniforms;
@@ -94,8 +108,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     @Override
     public SystemSpec spec() {
         // after the terrain and (through the sky's maps) the sky: the water is drawn over what lies behind it
-        return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class).after("terrain")
-                .draws(Pass.MAIN);
+        return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class)
+                .writes(WaterLevel.class).after("terrain").draws(Pass.MAIN);
     }
 
     @Override
@@ -134,11 +148,13 @@ public final class WaterSystem implements EngineSystem, PassOwner {
             MemoryUtil.memFree(table);
         }
         updateRipples(context.settings().get(WaterSettings.class));
+        context.world().setResource(new WaterLevel(context.settings().get(WaterSettings.class).level()));
     }
 
     @Override
     public void update(World world, double step) {
         simTime += step;
+        world.setResource(new WaterLevel(world.resource(Settings.class).get(WaterSettings.class).level()));
     }
 
     @Override
@@ -150,26 +166,56 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         int width = s.reflection().of(viewer.target().width());
         int height = s.reflection().of(viewer.target().height());
         reflection = fit(reflection, width, height, Texture2D.Format.DEPTH32F, Texture2D.Sampling.LINEAR_CLAMP);
-        reflected = true;
+        mirroredViewer = viewer.camera();
         // the paper's method draws the mirrored scene whole; the Fresnel method cuts it at the water
         return List.of(new PassView(MirrorCamera.of(viewer.camera(), (float) s.level(), s.method() == Method.FRESNEL),
                 reflection));
+    }
+
+    /**
+     * Step 1 of the paper's stencil method, for MAIN when the water will be drawn by it: the stencil cleared to 0xFF
+     * and every fragment that passes the depth test, whoever draws it, writing 0 ("stencil clear value 0xFF, the
+     * terrain writes 0"). Set here, before the terrain and the sky draw, so they need not know of it; with the
+     * Fresnel method, under the water or with the water switched off, no stencil state is set at all. Cost: one
+     * stencil-only clear of the scene target per frame (the engine's own clear leaves the stencil at 0).
+     */
+    @Override
+    public void beginPass(Pass pass, RenderContext context) {
+        WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
+        if (pass != Pass.MAIN || !drawsByStencil(s, context.camera())) {
+            return;
+        }
+        glClearStencil(0xFF);
+        glStencilMask(0xFF);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     }
 
     @Override
     public void render(Pass pass, RenderContext context) {
         WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
         updateRipples(s);
-        Framebuffer scene = context.target();
-        boolean underwater = context.camera().position().y() < s.level();
+        boolean underwater = underwater(s, context.camera());
         context.world().resource(Counters.class).put("water.underwater", underwater ? 1 : 0);
-        if (underwater || s.method() == Method.FRESNEL) {
-            copyBehind(scene);
-            drawFresnel(s, underwater, context);
+        // whether the reflection pass ran for this very camera this frame (see mirroredViewer): read, never reset
+        boolean reflected = mirroredViewer == context.camera();
+        if (drawsByStencil(s, context.camera())) {
+            drawStencil(s, reflected, context);
         } else {
-            drawStencil(s, context);
+            copyBehind(context.target());
+            drawFresnel(s, underwater, reflected, context);
         }
-        reflected = false;
+    }
+
+    private static boolean underwater(WaterSettings s, ViewCamera camera) {
+        return camera.position().y() < s.level();
+    }
+
+    /** The paper's method when chosen and the eye is above the water; else (and always below it) the Fresnel one. */
+    private static boolean drawsByStencil(WaterSettings s, ViewCamera camera) {
+        return s.method() == Method.STENCIL && !underwater(s, camera);
     }
 
     /** What lies behind the water, the scene so far: colour and depth, copied as they are. */
@@ -183,7 +229,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         scene.bind();
     }
 
-    private void drawFresnel(WaterSettings s, boolean underwater, RenderContext context) {
+    private void drawFresnel(WaterSettings s, boolean underwater, boolean reflected, RenderContext context) {
         WaterOptics optics = WaterOptics.of(s.clarity());
         double slopeVariance = s.rmsSlope() * s.rmsSlope();
         fresnelProgram.use();
@@ -212,10 +258,10 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     }
 
     /**
-     * The paper's four steps; the engine did step 1 (stencil cleared to 0xFF, the terrain and sky wrote 0) and the
-     * reflection pass step 3 (the mirrored scene, front faces culled by the flipped winding, stencil off).
+     * The paper's four steps; {@link #beginPass} did step 1 (stencil cleared to 0xFF, the terrain and sky wrote 0)
+     * and the reflection pass step 3 (the mirrored scene, front faces culled by the flipped winding, stencil off).
      */
-    private void drawStencil(WaterSettings s, RenderContext context) {
+    private void drawStencil(WaterSettings s, boolean reflected, RenderContext context) {
         stencilProgram.use();
         stencilUniforms.level().set((float) s.level());
         stencilUniforms.alpha().set((float) s.alpha());
@@ -245,9 +291,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
             glDepthMask(true);
             glEnable(GL_DEPTH_TEST);
         }
-        // the engine's rule again: whatever is drawn next marks its pixels 0
-        glStencilFunc(GL_ALWAYS, 0, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        // the stencil has served: what is drawn after the water neither tests nor marks it
+        glDisable(GL_STENCIL_TEST);
     }
 
     /** (Re)synthesises the ripples when the wind changes (at start-up, or from the settings panel). */

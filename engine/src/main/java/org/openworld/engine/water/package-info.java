@@ -6,8 +6,9 @@
  * fragment shader intersects the view ray with the plane ({@code t = (level − eye.y) / dir.y}) and writes the hit's
  * depth. It needs no mesh, so it reaches the horizon in every direction and never shows an edge.
  *
- * <p><b>The paper's method</b> ({@code water.method=STENCIL}), step by step: (1) the engine clears the stencil to
- * 0xFF and every opaque fragment writes 0; (2) the water plane writes 0xFF where it is the nearest surface, and
+ * <p><b>The paper's method</b> ({@code water.method=STENCIL}), step by step: (1) at the start of MAIN, before anything
+ * is drawn ({@code WaterSystem.beginPass}), the stencil is cleared to 0xFF and every opaque fragment then writes 0;
+ * (2) the water plane writes 0xFF where it is the nearest surface, and
  * only its alpha, the reflectivity {@code water.alpha}; (3) the reflection pass draws the scene upside down (the
  * mirrored camera, front faces culled by the flipped winding) into a second framebuffer; (4) a full-screen quad of
  * that picture, where the stencil is 0xFF, blended by destination alpha:

@@ -19,6 +19,8 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.BoundsTree;
+import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Pass;

@@ -7,9 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.Engine;
+import org.openworld.engine.core.World;
+import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsException;
-import org.openworld.engine.water.WaterSystem;
 
 /** The minimap's keys, where its square goes, and the water level it takes. */
 class MinimapSettingsTest {
@@ -46,12 +47,11 @@ class MinimapSettingsTest {
     }
 
     @Test
-    void theWaterLevelIsTheWaterSystemsOrNoneWithoutOne() {
-        Settings dry = Engine.settingsFor(List.of(new MinimapSystem()));
-        assertEquals(Double.NEGATIVE_INFINITY, MinimapSystem.waterLevel(dry));
-        Settings wet = Engine.settingsFor(List.of(new MinimapSystem(), new WaterSystem()));
-        wet.set("water.level", "35");
-        assertEquals(35, MinimapSystem.waterLevel(wet));
+    void theWaterLevelIsTheWorldsOrNoneWithoutOne() {
+        World world = new World();
+        assertEquals(Double.NEGATIVE_INFINITY, MinimapSystem.waterLevel(world));
+        world.setResource(new WaterLevel(35));
+        assertEquals(35, MinimapSystem.waterLevel(world));
     }
 
     static MinimapSettings withCorner(MinimapSettings s, MinimapSettings.Corner corner) {

@@ -6,23 +6,18 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
-import org.openworld.engine.EngineSettings;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
-import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.gl.GlObjects;
 import org.openworld.engine.gl.Image;
-import org.openworld.engine.gl.ShaderSources;
-import org.openworld.engine.settings.Settings;
 import org.openworld.engine.testscene.TestSceneSystem;
-import org.openworld.engine.water.WaterSettings;
 
 /** The minimap on real GL, over the test scene: where it draws, its marker, north, water, rebuilds, clean-up. */
 class MinimapSystemTest {
@@ -147,14 +142,11 @@ class MinimapSystemTest {
 
     @Test
     void groundBelowTheWaterLevelIsBlueAndTheMapFollowsTheLevel() {
-        // a lake 1 km north of the camera, 20 m deep; the water system's settings say where the water is
+        // a lake 1 km north of the camera, 20 m deep; the world's water level (as the water system writes it) says
+        // where the water is
         HeightField lake = (x, z) -> Math.hypot(x, z + 1000) < 400 ? -20 : 30;
-        List<EngineSystem> systems = List.of(new TestSceneSystem(), minimap);
-        Settings settings = new Settings(List.of(EngineSettings.GROUP, MinimapSettings.SETTINGS,
-                WaterSettings.SETTINGS), Map.of("test-scene", true, "minimap", true));
-        settings.apply("minimap.size=0.9");
-        try (Engine engine = new Engine(GL.context(), ShaderSources.classpath(), settings, systems, W, H)) {
-            place(engine, lake, 0);
+        try (Engine engine = engine(lake, 0, "system.minimap=on", "minimap.size=0.9")) {
+            engine.world().setResource(new WaterLevel(0));
             engine.render();
             Image image = engine.readImage();
             MinimapSettings.Square square = square(engine);
@@ -164,7 +156,7 @@ class MinimapSystemTest {
             assertTrue(isBlue(image, cx, cy - kilometre), "the lake, 1 km up the map");
             assertFalse(isBlue(image, cx, cy + kilometre), "dry land 1 km south");
             // the water drained below the lake's bed: the map is built again, all land
-            engine.settings().set("water.level", "-50");
+            engine.world().setResource(new WaterLevel(-50));
             engine.render();
             assertFalse(isBlue(engine.readImage(), cx, cy - kilometre), "no lake below the level");
             assertEquals(2, minimap.builds());

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.openworld.engine.culling.BoundsTree;
+import org.openworld.engine.core.BoundsTree;
 
 class TerrainQuadtreeTest {
 

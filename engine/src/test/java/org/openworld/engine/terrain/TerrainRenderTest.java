@@ -16,6 +16,7 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.sky.SkySystem;
@@ -75,6 +76,26 @@ class TerrainRenderTest {
      * The default world (2048² samples, seed 1) from the demo's starting pose at noon, with the default materials:
      * snow (bright, grey) high in the picture, grass (green) low.
      */
+    @Test
+    void theTerrainPublishesTheSnowLineOfTheRuleInUseInMetres() {
+        TerrainSystem terrain = new TerrainSystem();
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=256", "terrain.spacing=8", "terrain.snow-base=0.4", "terrain.snow-full=0.7"),
+                terrain)) {
+            HeightMap base = terrain.data().pyramid().base();
+            double range = base.max() - base.min();
+            // at init, before any update: the snow map's 40 % to 70 % of the way up the generated relief
+            SnowLine line = engine.world().resource(SnowLine.class);
+            assertEquals(base.min() + 0.4 * range, line.start(), 1e-3);
+            assertEquals(base.min() + 0.7 * range, line.full(), 1e-3);
+            // the rule switched while running: the next update publishes the altitude band's line
+            engine.settings().set("materials.snow-mode", "altitude-bands");
+            engine.update();
+            line = engine.world().resource(SnowLine.class);
+            assertEquals(base.min() + SnowLines.BAND_LINE * range, (line.start() + line.full()) / 2, 1e-3);
+        }
+    }
+
     @Test
     void defaultWorldShowsSnowAboveAndGreenBelow() throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,

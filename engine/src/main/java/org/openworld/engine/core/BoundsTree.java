@@ -1,9 +1,9 @@
-package org.openworld.engine.culling;
+package org.openworld.engine.core;
 
 /**
  * A tree of axis-aligned bounding boxes, each node's box containing its children's, in flat arrays so a traversal
  * touches no objects. A system that wants its objects culled (the terrain's quadtree) builds one and attaches it to
- * an entity in a {@link Cullable}; the {@link CullingSystem} walks it for every pass camera.
+ * an entity in a {@link Cullable}; the culling system walks it for every pass camera.
  *
  * <p>Node 0 is the root. The children of node {@code i} are {@code firstChild(i) .. firstChild(i) + childCount(i) - 1};
  * a leaf has no children.
