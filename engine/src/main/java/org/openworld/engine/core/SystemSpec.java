@@ -2,6 +2,7 @@ package org.openworld.engine.core;
 
 import java.util.EnumSet;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 
 /**
@@ -12,6 +13,8 @@ import java.util.Set;
  * <pre>{@code
  * SystemSpec.named("camera").reads(InputState.class, HeightField.class).writes(Camera.class)
  * }</pre>
+ * Reads, writes and followed systems keep the order they were declared in, so {@code openworld info} prints the same
+ * text on every run.
  */
 public final class SystemSpec {
 
@@ -38,19 +41,19 @@ public final class SystemSpec {
 
     /** Resources or components this system reads; it runs after every system that writes them. */
     public SystemSpec reads(Class<?>... types) {
-        reads.addAll(Set.of(types));
+        reads.addAll(List.of(types));
         return this;
     }
 
     /** Resources or components this system writes; two writers of one type must be ordered with {@link #after}. */
     public SystemSpec writes(Class<?>... types) {
-        writes.addAll(Set.of(types));
+        writes.addAll(List.of(types));
         return this;
     }
 
     /** Systems, by name, that must run before this one (in update and in every pass). */
     public SystemSpec after(String... systems) {
-        after.addAll(Set.of(systems));
+        after.addAll(List.of(systems));
         return this;
     }
 
