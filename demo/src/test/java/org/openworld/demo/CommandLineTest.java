@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.bench.SummaryJson;
+import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
 /** The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. */
@@ -83,7 +84,7 @@ class CommandLineTest {
     @Test
     void invalidSetValueNamesTheKeyAndRange() {
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--set", "engine.step=5");
-        assertEquals(Main.EXIT_USER_ERROR, code);
+        assertEquals(ExitCode.USER_MISTAKE.code(), code);
         assertTrue(console.stderr().contains("engine.step") && console.stderr().contains("0.001 .. 0.1"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), "no stack trace for a user's mistake: " + console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
@@ -91,21 +92,21 @@ class CommandLineTest {
 
     @Test
     void negativeDaySpeedNamesTheRange() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
         assertTrue(console.stderr().contains("--day-speed -2.0: expected 0 .. 8640.0"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
     void invalidTimeIsACommandLineError() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
         assertTrue(console.stderr().contains("--time") && console.stderr().contains("hours 0–23"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
     void unknownSetKeyIsAnError() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("settings", "--set", "camera.fovv=70"));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("settings", "--set", "camera.fovv=70"));
         assertTrue(console.stderr().contains("unknown setting 'camera.fovv'"), console.stderr());
     }
 
@@ -114,7 +115,7 @@ class CommandLineTest {
         Path path = dir.resolve("broken.path");
         Files.writeString(path, "# a path\n0 0 100 0 0 0\n1 0 100 abc 0 0\n");
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--path", path.toString());
-        assertEquals(Main.EXIT_USER_ERROR, code);
+        assertEquals(ExitCode.USER_MISTAKE.code(), code);
         assertTrue(console.stderr().contains(path + ":3:9:"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
@@ -179,7 +180,7 @@ class CommandLineTest {
         assertEquals("3", settings.text("sky.exposure"), "--set wins");
 
         Files.writeString(config, "camera.fov=75\ncamera.fov=500\n");
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(),
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(),
                 "--config", config.toString()));
         assertTrue(console.stderr().contains(config + ":2: camera.fov=500") && console.stderr().contains("20 .. 120"),
                 console.stderr());
@@ -189,7 +190,7 @@ class CommandLineTest {
 
     @Test
     void benchWithoutPathSaysWhatItNeeds() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("bench", "--out", dir.toString()));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("bench", "--out", dir.toString()));
         assertTrue(console.stderr().contains("--path"), console.stderr());
     }
 }
