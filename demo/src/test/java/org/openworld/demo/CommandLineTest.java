@@ -92,14 +92,16 @@ class CommandLineTest {
 
     @Test
     void negativeDaySpeedNamesTheRange() {
-        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
+        assertEquals(ExitCode.USER_MISTAKE.code(),
+                Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
         assertTrue(console.stderr().contains("--day-speed -2.0: expected 0 .. 8640.0"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
     void invalidTimeIsACommandLineError() {
-        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
+        assertEquals(ExitCode.USER_MISTAKE.code(),
+                Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
         assertTrue(console.stderr().contains("--time") && console.stderr().contains("hours 0–23"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }

@@ -117,7 +117,8 @@ class DiffCommandTest {
     @Test
     void aNegativeThresholdIsAUserError() throws Exception {
         Path a = png("a.png");
-        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("diff", a.toString(), a.toString(), "--threshold", "-1"));
+        assertEquals(ExitCode.USER_MISTAKE.code(),
+                Main.execute("diff", a.toString(), a.toString(), "--threshold", "-1"));
         assertTrue(console.stderr().contains("--threshold -1.0"), console.stderr());
         assertFalse(console.stdout().contains("changed"), "no comparison printed: " + console.stdout());
     }

@@ -12,7 +12,8 @@ import java.util.List;
  * A text a test compares with a file kept in the repository (a snapshot): any change to the text fails the test with
  * a line diff, until someone who meant the change updates the file on purpose by running the test with
  * {@code -Dsnapshot.update=true}, for example
- * {@code ./mvnw -B -o -pl engine,demo test -Dtest=InfoFrameSnapshotTest -Dsurefire.failIfNoSpecifiedTests=false -Dsnapshot.update=true},
+ * {@code ./mvnw -B -o -pl engine,demo test -Dtest=InfoFrameSnapshotTest -Dsurefire.failIfNoSpecifiedTests=false
+ * -Dsnapshot.update=true},
  * and commits the file with the change that caused it.
  *
  * <p>Snapshots live under {@code demo/src/test/resources/snapshots/}, read and written in the source tree (tests run
@@ -41,9 +42,10 @@ final class Snapshot {
         }
         String expected = Files.exists(file) ? Files.readString(file) : "";
         if (!expected.equals(actual)) {
-            fail(file.toAbsolutePath().normalize() + " no longer matches (- snapshot, + now):\n" + diff(expected.lines().toList(),
-                    actual.lines().toList()) + "If the change is meant, update the snapshot: run this test with -D"
-                    + UPDATE_PROPERTY + "=true and commit the file.");
+            fail(file.toAbsolutePath().normalize() + " no longer matches (- snapshot, + now):\n"
+                    + diff(expected.lines().toList(), actual.lines().toList())
+                    + "If the change is meant, update the snapshot: run this test with -D" + UPDATE_PROPERTY
+                    + "=true and commit the file.");
         }
     }
 

@@ -7,8 +7,8 @@ package org.openworld.engine.colour;
  *
  * <p>{@link #fromSrgb} decodes 8-bit sRGB (IEC 61966-2-1) to linear light, converts it to CIE XYZ with the sRGB
  * primaries, and then to L*a*b* relative to the D65 white that sRGB is defined for, so sRGB white is L* = 100,
- * a* = b* = 0, and every grey has a* = b* = 0. The decoding goes through a 256-entry table, so a conversion costs two matrix rows and three cube
- * roots.
+ * a* = b* = 0, and every grey has a* = b* = 0. The decoding goes through a 256-entry table, so a conversion costs
+ * three matrix rows and three cube roots.
  */
 public record Lab(double l, double a, double b) {
 
