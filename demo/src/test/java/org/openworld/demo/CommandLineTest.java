@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -13,7 +14,10 @@ import org.openworld.engine.bench.SummaryJson;
 import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
-/** The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. */
+/**
+ * The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. The tests that run a
+ * rendering command carry the tag {@code gl}, the others run in {@code -Dgroups='!gl'} too.
+ */
 class CommandLineTest {
 
     @TempDir
@@ -23,6 +27,7 @@ class CommandLineTest {
     final ConsoleCapture console = new ConsoleCapture();
 
     @Test
+    @Tag("gl")
     void shotWritesAnImageOfTheAskedSize() throws Exception {
         Path png = dir.resolve("shot.png");
         assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90"), console.stderr());
@@ -36,6 +41,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void shotWithUiDrawsThePanelOverThePicture() throws Exception {
         Path plain = dir.resolve("plain.png");
         Path ui = dir.resolve("ui.png");
@@ -60,6 +66,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void cameraOptionMovesTheView() throws Exception {
         Path up = dir.resolve("up.png");
         Path down = dir.resolve("down.png");
@@ -82,6 +89,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void invalidSetValueNamesTheKeyAndRange() {
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--set", "engine.step=5");
         assertEquals(ExitCode.USER_MISTAKE.code(), code);
@@ -91,6 +99,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void negativeDaySpeedNamesTheRange() {
         assertEquals(ExitCode.USER_MISTAKE.code(),
                 Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
@@ -99,6 +108,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void invalidTimeIsACommandLineError() {
         assertEquals(ExitCode.USER_MISTAKE.code(),
                 Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
@@ -113,6 +123,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void brokenCameraPathNamesFileLineAndColumn() throws Exception {
         Path path = dir.resolve("broken.path");
         Files.writeString(path, "# a path\n0 0 100 0 0 0\n1 0 100 abc 0 0\n");
@@ -132,6 +143,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void infoPrintsRendererAndFrameOrder() {
         assertEquals(0, Main.execute("info"));
         assertTrue(console.stdout().contains("context:   headless-"), console.stdout());
@@ -139,6 +151,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void benchWritesTheThreeFilesAndCompares() throws Exception {
         Path a = dir.resolve("a");
         assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", a.toString(),
@@ -159,6 +172,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void benchCanSwitchASystemOff() throws Exception {
         Path out = dir.resolve("no-water");
         assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", out.toString(),
@@ -169,6 +183,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void configFileIsReadAndSetWinsOverIt() throws Exception {
         Path config = dir.resolve("mine.settings");
         Files.writeString(config, "# saved by hand\ncamera.fov=75\nsky.exposure=2\n");
@@ -191,6 +206,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void benchWithoutPathSaysWhatItNeeds() {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("bench", "--out", dir.toString()));
         assertTrue(console.stderr().contains("--path"), console.stderr());

@@ -16,6 +16,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -23,6 +24,7 @@ import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
 /** {@code openworld figures} as a user runs it: real OpenGL (headless), a small world, real files and the gallery. */
+@Tag("gl")
 class FiguresCommandTest {
 
     /** A small render and world keep each shot to a few seconds on llvmpipe. */

@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -25,6 +26,7 @@ import org.openworld.engine.testscene.TestSceneSystem;
 import org.openworld.engine.water.WaterSettings;
 
 /** The minimap on real GL, over the test scene: where it draws, its marker, north, water, rebuilds, clean-up. */
+@GlTest
 class MinimapSystemTest {
 
     static final int W = 320;
