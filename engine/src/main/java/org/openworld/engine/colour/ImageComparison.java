@@ -9,8 +9,9 @@ import org.openworld.engine.gl.Image;
  * figures can use it to say "these two renders look the same" with a number.
  *
  * <p>A pixel is <em>changed</em> when any of its four channels differs, alpha included; its colour difference compares
- * the RGB colours only, so a change of alpha alone counts as changed with ΔE00 0. The work is one CIELAB conversion
- * per changed pixel and colour: a 1920×1080 pair compares in well under a second.
+ * the RGB colours only, so a change of alpha alone counts as changed with ΔE00 0. The cost is two CIELAB
+ * conversions and one ΔE00 per changed pixel, nothing for an equal one: about 1 s for a 1920×1080 pair in which
+ * every pixel differs (measured on a busy two-core machine), far less for two renders that differ in places.
  */
 public final class ImageComparison {
 
