@@ -1,30 +1,24 @@
 package org.openworld.demo;
 
+import java.io.IOException;
 import java.util.Set;
-import org.openworld.engine.bench.SummaryFileException;
-import org.openworld.engine.camera.CameraPathFormatException;
-import org.openworld.engine.core.SystemOrderException;
-import org.openworld.engine.gl.GlUnavailableException;
-import org.openworld.engine.gl.ShaderException;
-import org.openworld.engine.settings.SettingsException;
-import org.openworld.engine.terrain.HeightImportException;
+import org.openworld.engine.failure.ExitCode;
+import org.openworld.engine.failure.UserFacing;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
  * {@code openworld}: the demo's command line. Without a command it runs the interactive window ({@code run}).
  *
- * <p>Exit codes: 0 success; 1 a failure inside the program (a shader that does not compile, an I/O error);
- * 2 a mistake in the command line or an input file (named with what was expected); 3 no usable OpenGL.
+ * <p>Exit codes ({@link ExitCode}): 0 success; 1 a failure inside the program (a shader that does not compile, an I/O
+ * error); 2 a mistake in the command line or an input file (named with what was expected); 3 no usable OpenGL. Each
+ * error type carries its own code ({@link UserFacing}); picocli's own errors in the command line exit with 2.
  */
 @Command(name = "openworld", mixinStandardHelpOptions = true, version = "OpenWorld 0.1",
         description = "Renders large outdoor worlds in real time. Without a command: 'run'.",
         subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, HeightmapCommand.class, FiguresCommand.class,
-            SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
+            DiffCommand.class, SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
 public final class Main {
-
-    static final int EXIT_USER_ERROR = 2;
-    static final int EXIT_NO_GL = 3;
 
     private static final Set<String> TOP_LEVEL_FLAGS = Set.of("-h", "--help", "-V", "--version");
 
@@ -41,27 +35,24 @@ public final class Main {
         return cli.execute(effective);
     }
 
+    /**
+     * Prints a failure that ended a command and returns the exit code: the error's own message and code when it is
+     * {@link UserFacing}; the JDK's message for an I/O error (it names the file); a stack trace for anything else,
+     * which is a bug.
+     */
     private static int report(Exception e, CommandLine commandLine) {
         var err = commandLine.getErr();
-        if (e instanceof GlUnavailableException) {
-            err.println(e.getMessage());
-            return EXIT_NO_GL;
+        String program = commandLine.getCommandSpec().root().name();
+        if (e instanceof UserFacing failure) {
+            err.println(failure.userMessage(program));
+            return failure.exitCode().code();
         }
-        if (e instanceof CameraPathFormatException) {
-            err.println(e.getMessage());
-            return EXIT_USER_ERROR;
-        }
-        if (e instanceof UserError || e instanceof SettingsException || e instanceof SummaryFileException
-                || e instanceof HeightImportException) {
-            err.println("openworld: " + e.getMessage());
-            return EXIT_USER_ERROR;
-        }
-        if (e instanceof ShaderException || e instanceof SystemOrderException || e instanceof java.io.IOException) {
-            err.println("openworld: " + e.getMessage());
-            return 1;
+        if (e instanceof IOException) {
+            err.println(program + ": " + e.getMessage());
+            return ExitCode.INTERNAL_FAILURE.code();
         }
         e.printStackTrace(err);
-        return 1;
+        return ExitCode.INTERNAL_FAILURE.code();
     }
 
     private static String[] prepend(String first, String[] rest) {

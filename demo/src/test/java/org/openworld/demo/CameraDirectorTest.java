@@ -11,6 +11,7 @@ import static org.lwjgl.opengl.GL12C.GL_TEXTURE_3D;
 
 import java.nio.file.Path;
 import java.util.Arrays;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.camera.CameraDirection;
@@ -25,6 +26,7 @@ import picocli.CommandLine;
  * picture the same pose gives after any number of frames, and the sky's tables of a shot are made for the shot's own
  * altitude.
  */
+@Tag("gl")
 class CameraDirectorTest {
 
     /** A small world that does not move: no clouds (they drift and evolve), no water (its ripples move). */

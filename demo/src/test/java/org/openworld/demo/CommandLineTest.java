@@ -6,13 +6,18 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.bench.SummaryJson;
+import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
-/** The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. */
+/**
+ * The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. The tests that run a
+ * rendering command carry the tag {@code gl}, the others run in {@code -Dgroups='!gl'} too.
+ */
 class CommandLineTest {
 
     @TempDir
@@ -22,6 +27,7 @@ class CommandLineTest {
     final ConsoleCapture console = new ConsoleCapture();
 
     @Test
+    @Tag("gl")
     void shotWritesAnImageOfTheAskedSize() throws Exception {
         Path png = dir.resolve("shot.png");
         assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90"), console.stderr());
@@ -35,6 +41,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void shotWithUiDrawsThePanelOverThePicture() throws Exception {
         Path plain = dir.resolve("plain.png");
         Path ui = dir.resolve("ui.png");
@@ -59,6 +66,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void cameraOptionMovesTheView() throws Exception {
         Path up = dir.resolve("up.png");
         Path down = dir.resolve("down.png");
@@ -81,40 +89,46 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void invalidSetValueNamesTheKeyAndRange() {
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--set", "engine.step=5");
-        assertEquals(Main.EXIT_USER_ERROR, code);
+        assertEquals(ExitCode.USER_MISTAKE.code(), code);
         assertTrue(console.stderr().contains("engine.step") && console.stderr().contains("0.001 .. 0.1"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), "no stack trace for a user's mistake: " + console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
+    @Tag("gl")
     void negativeDaySpeedNamesTheRange() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
+        assertEquals(ExitCode.USER_MISTAKE.code(),
+                Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--day-speed", "-2"));
         assertTrue(console.stderr().contains("--day-speed -2.0: expected 0 .. 8640.0"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
+    @Tag("gl")
     void invalidTimeIsACommandLineError() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
+        assertEquals(ExitCode.USER_MISTAKE.code(),
+                Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--time", "25:00"));
         assertTrue(console.stderr().contains("--time") && console.stderr().contains("hours 0–23"), console.stderr());
         assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     @Test
     void unknownSetKeyIsAnError() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("settings", "--set", "camera.fovv=70"));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("settings", "--set", "camera.fovv=70"));
         assertTrue(console.stderr().contains("unknown setting 'camera.fovv'"), console.stderr());
     }
 
     @Test
+    @Tag("gl")
     void brokenCameraPathNamesFileLineAndColumn() throws Exception {
         Path path = dir.resolve("broken.path");
         Files.writeString(path, "# a path\n0 0 100 0 0 0\n1 0 100 abc 0 0\n");
         int code = Main.execute("shot", "--out", dir.resolve("x.png").toString(), "--path", path.toString());
-        assertEquals(Main.EXIT_USER_ERROR, code);
+        assertEquals(ExitCode.USER_MISTAKE.code(), code);
         assertTrue(console.stderr().contains(path + ":3:9:"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
@@ -129,6 +143,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void infoPrintsRendererAndFrameOrder() {
         assertEquals(0, Main.execute("info"));
         assertTrue(console.stdout().contains("context:   headless-"), console.stdout());
@@ -136,6 +151,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void benchWritesTheThreeFilesAndCompares() throws Exception {
         Path a = dir.resolve("a");
         assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", a.toString(),
@@ -156,6 +172,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void benchCanSwitchASystemOff() throws Exception {
         Path out = dir.resolve("no-water");
         assertEquals(0, Main.execute("bench", "--path", "../assets/paths/valley.path", "--out", out.toString(),
@@ -166,6 +183,7 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void configFileIsReadAndSetWinsOverIt() throws Exception {
         Path config = dir.resolve("mine.settings");
         Files.writeString(config, "# saved by hand\ncamera.fov=75\nsky.exposure=2\n");
@@ -179,7 +197,7 @@ class CommandLineTest {
         assertEquals("3", settings.text("sky.exposure"), "--set wins");
 
         Files.writeString(config, "camera.fov=75\ncamera.fov=500\n");
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("shot", "--out", dir.resolve("x.png").toString(),
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(),
                 "--config", config.toString()));
         assertTrue(console.stderr().contains(config + ":2: camera.fov=500") && console.stderr().contains("20 .. 120"),
                 console.stderr());
@@ -188,8 +206,9 @@ class CommandLineTest {
     }
 
     @Test
+    @Tag("gl")
     void benchWithoutPathSaysWhatItNeeds() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("bench", "--out", dir.toString()));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("bench", "--out", dir.toString()));
         assertTrue(console.stderr().contains("--path"), console.stderr());
     }
 }

@@ -16,12 +16,15 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
 /** {@code openworld figures} as a user runs it: real OpenGL (headless), a small world, real files and the gallery. */
+@Tag("gl")
 class FiguresCommandTest {
 
     /** A small render and world keep each shot to a few seconds on llvmpipe. */
@@ -91,7 +94,7 @@ class FiguresCommandTest {
     @Test
     void unknownFigureIsAUserErrorListingTheFiguresAndMakesNothing() {
         Path out = dir.resolve("none");
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("figures", "--out", out.toString(), "--only", "7"));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("figures", "--out", out.toString(), "--only", "7"));
         assertTrue(console.stderr().contains("--only 7"), console.stderr());
         assertTrue(console.stderr().contains("1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13, 14"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
@@ -101,7 +104,7 @@ class FiguresCommandTest {
     @Test
     void badOverrideIsAUserErrorBeforeAnyPicture() {
         Path out = dir.resolve("none");
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("figures", "--out", out.toString(), "--only", "2",
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("figures", "--out", out.toString(), "--only", "2",
                 "--set", "shadow.kernal=3"));
         assertTrue(console.stderr().contains("shadow.kernal"), console.stderr());
         assertFalse(Files.exists(out), "nothing made, not even figure 2's maps, which do not read shadow.*");

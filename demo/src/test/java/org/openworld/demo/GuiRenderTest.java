@@ -6,6 +6,7 @@ import static org.lwjgl.glfw.GLFW.glfwSetWindowSize;
 
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.Engine;
 import org.openworld.engine.camera.Camera;
@@ -16,6 +17,7 @@ import picocli.CommandLine;
  * The panel, HUD and controls drawn by Dear ImGui over a real picture, headless: each shows where it should and
  * nowhere else, and hidden leaves the picture as it was.
  */
+@Tag("gl")
 class GuiRenderTest {
 
     private static final int W = 640;

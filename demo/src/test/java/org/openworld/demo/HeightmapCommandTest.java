@@ -11,6 +11,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
 /** {@code openworld heightmap} as a user runs it: files, printed stages, the generation benchmark, errors. */
@@ -77,7 +78,7 @@ class HeightmapCommandTest {
     @Test
     void outThatIsAFileIsAUserError() throws Exception {
         Path file = Files.writeString(dir.resolve("taken"), "x");
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", file.toString()));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--out", file.toString()));
         assertTrue(console.stderr().contains(file + " is a file"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
@@ -85,7 +86,7 @@ class HeightmapCommandTest {
     @Test
     void badImportFileIsAUserErrorNamingTheFile() throws Exception {
         Path file = Files.write(dir.resolve("heights.raw"), new byte[1000]);
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", dir.resolve("o").toString(),
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--out", dir.resolve("o").toString(),
                 "--set", "terrain.import-file=" + file));
         assertTrue(console.stderr().contains(file.toString()) && console.stderr().contains("250 float32 samples"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
@@ -93,7 +94,7 @@ class HeightmapCommandTest {
 
     @Test
     void repeatMustBePositive() {
-        assertEquals(Main.EXIT_USER_ERROR, Main.execute("heightmap", "--out", dir.toString(), "--repeat", "0"));
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--out", dir.toString(), "--repeat", "0"));
         assertTrue(console.stderr().contains("--repeat"), console.stderr());
     }
 }

@@ -45,6 +45,7 @@ import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 
 /** The frame loop on real GL: pass order, pass cameras, frame records, switching systems off, fixed steps, cleanup. */
+@GlTest
 class EngineTest {
 
     static final int SIZE = 64;

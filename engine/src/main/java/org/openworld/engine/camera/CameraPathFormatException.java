@@ -1,5 +1,8 @@
 package org.openworld.engine.camera;
 
+import org.openworld.engine.failure.ExitCode;
+import org.openworld.engine.failure.UserFacing;
+
 /**
  * A camera path file that cannot be read, with the place and the reason in the form compilers use and editors
  * understand: {@code file:line:column: expected WHAT, found WHAT}, for example
@@ -10,7 +13,7 @@ package org.openworld.engine.camera;
  * <p>Checked, because a broken hand-edited file is an expected outcome that the caller must answer: the command line
  * prints {@link #getMessage()} alone and exits with code 2, so the message carries everything a user needs.
  */
-public final class CameraPathFormatException extends Exception {
+public final class CameraPathFormatException extends Exception implements UserFacing {
 
     /**
      * @param source   the file as the user named it
@@ -21,5 +24,16 @@ public final class CameraPathFormatException extends Exception {
      */
     public CameraPathFormatException(String source, int line, int column, String expected, String found) {
         super(source + ":" + line + ":" + column + ": expected " + expected + ", found " + found);
+    }
+
+    @Override
+    public ExitCode exitCode() {
+        return ExitCode.USER_MISTAKE;
+    }
+
+    /** Printed as it is: the message starts with its place, {@code file:line:column:}. */
+    @Override
+    public String userMessage(String program) {
+        return getMessage();
     }
 }

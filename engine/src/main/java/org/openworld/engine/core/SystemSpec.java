@@ -16,6 +16,8 @@ import java.util.Set;
  * <pre>{@code
  * SystemSpec.named("camera").reads(InputState.class, HeightField.class).writes(Camera.class)
  * }</pre>
+ * Reads, writes and followed systems keep the order they were declared in, so {@code openworld info} prints the same
+ * text on every run.
  */
 public final class SystemSpec {
 

@@ -200,6 +200,18 @@ class SystemOrderTest {
     }
 
     @Test
+    void describeListsReadsAndWritesInTheOrderDeclaredOnEveryRun() {
+        // A set's own order would change from one JVM to the next, and so would openworld info's text.
+        SystemOrder order = SystemOrder.resolve(List.of(system(SystemSpec.named("many")
+                .reads(String.class, Integer.class, Long.class, Double.class, Float.class, Short.class, Byte.class)
+                .writes(Terrain.class, Wind.class, Character.class, Boolean.class))));
+
+        assertTrue(order.describe().contains(
+                "writes Terrain,Wind,Character,Boolean; reads String,Integer,Long,Double,Float,Short,Byte"),
+                order.describe());
+    }
+
+    @Test
     void systemNamesMustBeKebabCase() {
         assertThrows(IllegalArgumentException.class, () -> SystemSpec.named("Sky"));
         assertThrows(IllegalArgumentException.class, () -> SystemSpec.named("sky system"));

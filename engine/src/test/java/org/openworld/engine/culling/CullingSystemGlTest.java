@@ -14,6 +14,7 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.bench.FrameRecord;
@@ -33,6 +34,7 @@ import org.openworld.engine.gl.Image;
  * The culling system in the engine's frame, headless: a probe system that draws in the main pass and reads
  * {@link Visibility} records what it is told about three boxes around a camera at (0, 10, 0).
  */
+@GlTest
 class CullingSystemGlTest {
 
     @RegisterExtension

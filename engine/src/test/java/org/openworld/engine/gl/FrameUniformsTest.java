@@ -10,6 +10,7 @@ import org.joml.Vector3f;
 import org.joml.Vector3fc;
 import org.joml.Vector4f;
 import org.junit.jupiter.api.Test;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.HeadlessGl;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
@@ -32,6 +33,7 @@ import org.openworld.engine.environment.TimeOfDay;
  * writes each member back out as a colour, and the pixels must carry the Java-side values. A Java field order or
  * offset that differs from the GLSL block shows up as a wrong column.
  */
+@GlTest
 class FrameUniformsTest {
 
     /** 9 columns of 8 pixels, one block member (or check) per column. */

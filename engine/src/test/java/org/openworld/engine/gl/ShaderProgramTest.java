@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.HeadlessGl;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -19,6 +20,7 @@ import org.openworld.engine.GlTestSupport;
  * Programs built by the real driver (Mesa llvmpipe here) from files on disk, as in dev mode: error locations mapped
  * back through includes, missing uniforms, and reloads that fail or succeed.
  */
+@GlTest
 class ShaderProgramTest {
 
     @RegisterExtension

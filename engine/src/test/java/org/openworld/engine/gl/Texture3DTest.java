@@ -9,6 +9,7 @@ import java.util.function.IntBinaryOperator;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 
@@ -16,6 +17,7 @@ import org.openworld.engine.HeadlessGl;
  * A 3D texture uploaded and read back through a shader on the real driver: texel centres return their values,
  * linear filtering blends slices, and the two samplings wrap or clamp. The extension checks that nothing leaks.
  */
+@GlTest
 class Texture3DTest {
 
     @RegisterExtension

@@ -9,6 +9,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -20,6 +21,7 @@ import org.openworld.engine.gl.Image;
 import org.openworld.engine.testscene.TestSceneSystem;
 
 /** The minimap on real GL, over the test scene: where it draws, its marker, north, water, rebuilds, clean-up. */
+@GlTest
 class MinimapSystemTest {
 
     static final int W = 320;

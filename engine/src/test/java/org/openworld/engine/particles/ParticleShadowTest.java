@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -25,6 +26,7 @@ import org.openworld.engine.terrain.TerrainSystem;
  * Flakes in a wall's shadow ({@link WallWorld}: a sun in the east 35° up): west of the wall, up to 114 m from it at
  * the eye's height, the flakes lose the sun.
  */
+@GlTest
 class ParticleShadowTest {
 
     @RegisterExtension

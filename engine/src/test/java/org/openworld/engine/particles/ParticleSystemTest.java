@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -21,6 +22,7 @@ import org.openworld.engine.gl.GlObjects;
 import org.openworld.engine.gl.Image;
 
 /** The snow on real GL: the transform feedback against the CPU reference, the cube, the ground, the picture. */
+@GlTest
 class ParticleSystemTest {
 
     static final int W = 320;

@@ -27,6 +27,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.bench.FrameRecord;
@@ -48,6 +49,7 @@ import org.openworld.engine.terrain.TerrainSystem;
  * A small system of the test's own calls the probe in the OVERLAY pass, as the shadow system does when
  * {@code shadow.measure} is on.
  */
+@GlTest
 class ShadowProbeTest {
 
     @RegisterExtension

@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -34,6 +35,7 @@ import org.openworld.engine.water.WaterSystem;
  * centre (x from −16 to 0 m), lit by a sun in the east 35° up, so the wall's shadow lies on the ground west of it,
  * 100 / tan 35° = 143 m long (x from −159 to −16 m).
  */
+@GlTest
 class ShadowRenderTest {
 
     @RegisterExtension

@@ -18,6 +18,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.Framebuffer;
@@ -37,6 +38,7 @@ import org.openworld.engine.sky.CloudSettings.Mapping;
  * above the bottom row. The fixture writes the cloud's opacity to alpha, which the checks read; the pictures, made
  * opaque, are written to {@code target/test-images/clouds-*.png} to look at.
  */
+@GlTest
 class CloudLayerTest {
 
     static final int WIDTH = 320;

@@ -11,6 +11,7 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -31,6 +32,7 @@ import org.openworld.engine.gl.ShaderProgram;
  * {@code common/environment.glsl} in four directions on three faces (+Y, +X, −Z, −X) and compared with
  * {@link SkyReference}. A wrong face axis or a missing draw shows as a wrong colour in one column.
  */
+@GlTest
 class EnvironmentMapTest {
 
     @RegisterExtension

@@ -15,6 +15,7 @@ import org.joml.Vector4f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.bench.FrameRecord;
@@ -29,6 +30,7 @@ import org.openworld.engine.gl.Image;
  * The sky as drawn by the GPU against the CPU's physics: the same radiance at sampled directions, noon against
  * sunset, and tables rebuilt only when the sun moved. Clouds off, so the sky is the atmosphere's alone.
  */
+@GlTest
 class SkyRenderTest {
 
     @RegisterExtension

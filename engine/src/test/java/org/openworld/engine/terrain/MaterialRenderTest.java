@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -42,6 +43,7 @@ import org.openworld.engine.sky.SkySystem;
  * the result. {@code material-cases.frag} lays out eight cases in a 4 × 2 grid of cells (its header lists them);
  * the pictures go to {@code target/test-images/material-*.png}.
  */
+@GlTest
 class MaterialRenderTest {
 
     @RegisterExtension

@@ -11,6 +11,7 @@ import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
@@ -25,6 +26,7 @@ import org.openworld.engine.sky.SkySystem;
  * The terrain rendered headless on small worlds: the stitching leaves no crack between levels, and the default
  * materials put snow on the heights and grass in the valleys. Pictures go to {@code target/test-images/}.
  */
+@GlTest
 class TerrainRenderTest {
 
     static final int WIDTH = 320;

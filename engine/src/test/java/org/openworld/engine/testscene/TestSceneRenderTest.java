@@ -12,6 +12,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
@@ -26,6 +27,7 @@ import org.openworld.engine.sky.SolarPosition;
  * The test scene under the daylight system, rendered headless at fixed poses and times. The pictures are written to
  * {@code target/test-images/} to look at; the assertions check what any sky-over-ground picture must show.
  */
+@GlTest
 class TestSceneRenderTest {
 
     static final int WIDTH = 320;

@@ -19,6 +19,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.bench.FrameRecord;
@@ -33,6 +34,7 @@ import org.openworld.engine.terrain.TerrainSystem;
  * The water on real GL, over imported worlds built for the purpose: a flat sea bed 20 m under the water with a
  * 32 m square tower rising 80 m out of it, or the bed alone with a bank 2 m under the surface.
  */
+@GlTest
 class WaterRenderTest {
 
     @RegisterExtension

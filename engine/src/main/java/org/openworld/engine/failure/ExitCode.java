@@ -1,0 +1,27 @@
+package org.openworld.engine.failure;
+
+/**
+ * The exit codes of {@code openworld}, as the README's "Commands" section documents them. Scripts branch on these
+ * numbers, so they never change meaning.
+ */
+public enum ExitCode {
+    /** The command did what was asked (a comparison that finds differences included). */
+    OK(0),
+    /** A failure inside the program: a shader that does not compile, a file that cannot be written, a bug. */
+    INTERNAL_FAILURE(1),
+    /** A mistake in the command line or in an input file; the message names it and says what was expected. */
+    USER_MISTAKE(2),
+    /** No usable OpenGL context could be made; the message says what was tried and what to install. */
+    NO_OPENGL(3);
+
+    private final int code;
+
+    ExitCode(int code) {
+        this.code = code;
+    }
+
+    /** The number the process exits with. */
+    public int code() {
+        return code;
+    }
+}
