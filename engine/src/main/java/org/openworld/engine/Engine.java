@@ -31,22 +31,23 @@ import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyMaps;
-import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.CubeMapTexture;
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.FrameThrottle;
 import org.openworld.engine.gl.FrameUniforms;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuTimers;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Texture3D;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
@@ -387,7 +388,7 @@ public final class Engine implements AutoCloseable {
     private static SkyMaps neutralSky(GlContext gl) {
         FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
         try {
-            Texture3D air = Texture3D.of(gl, 1, 1, 1, Texture2D.Format.RGBA16F, Texture3D.Sampling3D.LINEAR_CLAMP,
+            Texture3D air = Texture3D.of(gl, 1, 1, 1, Format.RGBA16F, Sampling.LINEAR_CLAMP,
                     clearAir);
             return new SkyMaps(air, CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient()));
         } finally {

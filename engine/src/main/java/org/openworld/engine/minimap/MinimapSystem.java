@@ -13,7 +13,9 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
@@ -75,8 +77,8 @@ public final class MinimapSystem implements EngineSystem {
         // the square, corners (0, 0) to (1, 1), which the vertex shader places in the picture
         quad = new Mesh(context.gl(), new float[] {0, 0, 1, 0, 1, 1, 0, 1}, new int[] {0, 1, 2, 0, 2, 3},
                 new Mesh.Attribute(0, 2));
-        relief = Texture2D.empty(context.gl(), ReliefMap.TEXELS, ReliefMap.TEXELS, Texture2D.Format.RGBA8,
-                Texture2D.Sampling.LINEAR_CLAMP);
+        relief = Texture2D.empty(context.gl(), ReliefMap.TEXELS, ReliefMap.TEXELS, Format.RGBA8,
+                Sampling.LINEAR_CLAMP);
     }
 
     @Override

@@ -27,8 +27,10 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Wind;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
@@ -108,8 +110,8 @@ public final class ParticleSystem implements EngineSystem {
                 updateProgram.vec4("uVolume"), updateProgram.int1("uStepKey"), updateProgram.vec4("uGround"));
         drawProgram = context.shaders().program("particles/flake.vert", "particles/flake.frag");
         flakeUniform = drawProgram.vec4("uFlake");
-        groundTexture = Texture2D.empty(gl, GROUND_SAMPLES, GROUND_SAMPLES, Texture2D.Format.R32F,
-                Texture2D.Sampling.NEAREST_CLAMP);
+        groundTexture = Texture2D.empty(gl, GROUND_SAMPLES, GROUND_SAMPLES, Format.R32F,
+                Sampling.NEAREST_CLAMP);
     }
 
     @Override

@@ -11,12 +11,13 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Sun;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -35,7 +36,6 @@ import org.openworld.engine.gl.Uniform;
 final class ShadowProbe implements AutoCloseable {
 
     /** Four floats per texel, read back exactly: the visibility and a world point in metres. */
-    private static final Texture2D.Format RGBA32F = new Texture2D.Format(GL_RGBA32F, GL_RGBA, GL_FLOAT);
     /** Texture units: the copied depth, the previous frame's points. */
     private static final int UNIT_DEPTH = 0;
     private static final int UNIT_POINTS = 1;
@@ -138,11 +138,11 @@ final class ShadowProbe implements AutoCloseable {
             return;
         }
         closeTargets();
-        depthCopy = new Framebuffer(gl, width, height, null, Texture2D.Format.DEPTH24_STENCIL8,
-                Texture2D.Sampling.NEAREST_CLAMP);
-        probed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
-        lastProbed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
-        revisited = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
+        depthCopy = new Framebuffer(gl, width, height, null, Format.DEPTH24_STENCIL8,
+                Sampling.NEAREST_CLAMP);
+        probed = new Framebuffer(gl, width, height, Format.RGBA32F, null, Sampling.NEAREST_CLAMP);
+        lastProbed = new Framebuffer(gl, width, height, Format.RGBA32F, null, Sampling.NEAREST_CLAMP);
+        revisited = new Framebuffer(gl, width, height, Format.RGBA32F, null, Sampling.NEAREST_CLAMP);
         haveLast = false;
         readBack = MemoryUtil.memAllocFloat(width * height * ShadowStatistics.CHANNELS);
         pixels = new float[width * height * ShadowStatistics.CHANNELS];

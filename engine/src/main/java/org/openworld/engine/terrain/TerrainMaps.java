@@ -3,7 +3,9 @@ package org.openworld.engine.terrain;
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture2D;
 
 /**
@@ -34,19 +36,19 @@ final class TerrainMaps implements AutoCloseable {
 
     TerrainMaps(GlContext gl, HeightPyramid pyramid, SnowMap snowMap) {
         HeightMap base = pyramid.base();
-        Texture2D.Sampling wrap = base.periodic() ? Texture2D.Sampling.TRILINEAR_REPEAT : Texture2D.Sampling.TRILINEAR_CLAMP;
+        Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
         Texture2D h = null;
         Texture2D g = null;
         Texture2D s = null;
         try {
-            h = Texture2D.withMips(gl, base.size(), base.size(), Texture2D.Format.R32F, Texture2D.Sampling.NEAREST_MIPMAP);
+            h = Texture2D.withMips(gl, base.size(), base.size(), Format.R32F, Sampling.NEAREST_MIPMAP);
             for (int k = 0; k < pyramid.levelCount(); k++) {
                 uploadHeights(h, k, pyramid.level(k));
             }
-            g = Texture2D.withMips(gl, base.size(), base.size(), Texture2D.Format.RG16F, wrap);
+            g = Texture2D.withMips(gl, base.size(), base.size(), Format.RG16F, wrap);
             uploadGradients(g, base);
             g.generateMipmaps();
-            s = Texture2D.withMips(gl, snowMap.size(), snowMap.size(), Texture2D.Format.R8, wrap);
+            s = Texture2D.withMips(gl, snowMap.size(), snowMap.size(), Format.R8, wrap);
             byte[] soft = blur(snowMap.coverage(), snowMap.size(), snowMap.periodic());
             ByteBuffer coverage = MemoryUtil.memAlloc(soft.length).put(soft).flip();
             try {

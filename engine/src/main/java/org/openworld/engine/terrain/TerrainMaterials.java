@@ -1,9 +1,9 @@
 package org.openworld.engine.terrain;
 
 import java.util.List;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderProgram;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.terrain.TerrainTextures.Material;
@@ -35,10 +35,10 @@ public final class TerrainMaterials implements AutoCloseable {
     public TerrainMaterials(GlContext gl, TerrainTextures textures) {
         int n = textures.size();
         List<Material> layers = List.of(Material.values());
-        albedo = TextureArray.repeatingMipmapped(gl, n, n, TextureArray.SRGB8_ALPHA8,
+        albedo = TextureArray.repeatingMipmapped(gl, n, n, Format.SRGB8_ALPHA8,
                 layers.stream().map(textures::albedo).toList());
         try {
-            detail = TextureArray.repeatingMipmapped(gl, n, n, Texture2D.Format.RGBA8,
+            detail = TextureArray.repeatingMipmapped(gl, n, n, Format.RGBA8,
                     layers.stream().map(textures::detail).toList());
         } catch (RuntimeException e) {
             albedo.close();

@@ -18,9 +18,11 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
@@ -126,7 +128,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         stencilProgram.sampler("reflection", UNIT_REFLECTION);
         stencilUniforms = new StencilUniforms(stencilProgram.float1("uLevel"), stencilProgram.int1("uStep"),
                 stencilProgram.float1("uAlpha"));
-        fresnelTable = Texture2D.empty(gl, FRESNEL_SIZE, 2, Texture2D.Format.R16F, Texture2D.Sampling.LINEAR_CLAMP);
+        fresnelTable = Texture2D.empty(gl, FRESNEL_SIZE, 2, Format.R16F, Sampling.LINEAR_CLAMP);
         FloatBuffer table = MemoryUtil.memAllocFloat(2 * FRESNEL_SIZE).put(Fresnel.table(FRESNEL_SIZE)).flip();
         try {
             fresnelTable.upload(0, 0, 2, table);
@@ -149,7 +151,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         }
         int width = s.reflection().of(viewer.target().width());
         int height = s.reflection().of(viewer.target().height());
-        reflection = fit(reflection, width, height, Texture2D.Format.DEPTH32F, Texture2D.Sampling.LINEAR_CLAMP);
+        reflection = fit(reflection, width, height, Format.DEPTH32F, Sampling.LINEAR_CLAMP);
         reflected = true;
         // the paper's method draws the mirrored scene whole; the Fresnel method cuts it at the water
         return List.of(new PassView(MirrorCamera.of(viewer.camera(), (float) s.level(), s.method() == Method.FRESNEL),
@@ -174,8 +176,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     /** What lies behind the water, the scene so far: colour and depth, copied as they are. */
     private void copyBehind(Framebuffer scene) {
-        behind = fit(behind, scene.width(), scene.height(), Texture2D.Format.DEPTH24_STENCIL8,
-                Texture2D.Sampling.NEAREST_CLAMP);
+        behind = fit(behind, scene.width(), scene.height(), Format.DEPTH24_STENCIL8,
+                Sampling.NEAREST_CLAMP);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, behind.id());
         glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, scene.width(), scene.height(),
@@ -262,22 +264,22 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         if (ripples != null) {
             ripples.close();
         }
-        ripples = TextureArray.repeatingMipmapped(gl, RIPPLE_SIZE, RIPPLE_SIZE, Texture2D.Format.RGBA8,
+        ripples = TextureArray.repeatingMipmapped(gl, RIPPLE_SIZE, RIPPLE_SIZE, Format.RGBA8,
                 field.texels(rippleSlopeScale));
         rippleWind = s.wind();
         rippleDirection = s.windDirection();
     }
 
     /** A colour + depth target of this size: {@code current} if it fits, else a new one. */
-    private Framebuffer fit(Framebuffer current, int width, int height, Texture2D.Format depth,
-                            Texture2D.Sampling sampling) {
+    private Framebuffer fit(Framebuffer current, int width, int height, Format depth,
+                            Sampling sampling) {
         if (current != null && current.width() == width && current.height() == height) {
             return current;
         }
         if (current != null) {
             current.close();
         }
-        return new Framebuffer(gl, width, height, Texture2D.Format.RGBA8, depth, sampling);
+        return new Framebuffer(gl, width, height, Format.RGBA8, depth, sampling);
     }
 
     /** The reflection pass's target, null before the first reflection (tools and tests read it back). */
