@@ -79,6 +79,8 @@ public final class Engine implements AutoCloseable {
     private final Counters counters = new Counters();
     /** The systems whose init has begun, in order, with what each has handed to {@link EngineContext#own}. */
     private final Map<EngineSystem, Owned> initialised = new LinkedHashMap<>();
+    /** The engine's own GL objects, labelled {@code engine.*}; closed after every system. */
+    private final Owned owned = new Owned("engine");
     private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
     private final Map<String, Double> systemNanos = new LinkedHashMap<>();
     private Framebuffer scene;
@@ -137,17 +139,17 @@ public final class Engine implements AutoCloseable {
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
-            scene = Framebuffer.scene(gl, width, height);
-            frameUniforms = new FrameUniforms(gl);
-            timers = new GpuTimers(gl);
-            throttle = new FrameThrottle(gl);
-            neutralSky = neutralSky(gl);
-            noShadow = SunShadow.none(gl);
+            scene = owned.own("scene", Framebuffer.scene(gl, width, height));
+            frameUniforms = owned.own("frame", new FrameUniforms(gl));
+            timers = owned.own(new GpuTimers(gl));
+            throttle = owned.own(new FrameThrottle(gl));
+            neutralSky = neutralSky(gl, owned);
+            noShadow = owned.own("noShadow", SunShadow.none(gl));
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
-                Owned owned = new Owned();
-                initialised.put(system, owned);
-                system.init(new EngineContext(gl, world, this.shaders, settings, owned));
+                Owned made = new Owned(system.spec().name());
+                initialised.put(system, made);
+                system.init(new EngineContext(gl, world, this.shaders, settings, made));
             }
         } catch (RuntimeException e) {
             close();
@@ -385,12 +387,13 @@ public final class Engine implements AutoCloseable {
     }
 
     /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */
-    private static SkyMaps neutralSky(GlContext gl) {
+    private static SkyMaps neutralSky(GlContext gl, Owned owned) {
         FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
         try {
-            Texture3D air = Texture3D.of(gl, 1, 1, 1, Format.RGBA16F, Sampling.LINEAR_CLAMP,
-                    clearAir);
-            return new SkyMaps(air, CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient()));
+            Texture3D air = owned.own("neutralAir",
+                    Texture3D.of(gl, 1, 1, 1, Format.RGBA16F, Sampling.LINEAR_CLAMP, clearAir));
+            return new SkyMaps(air, owned.own("neutralSky",
+                    CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient())));
         } finally {
             MemoryUtil.memFree(clearAir);
         }
@@ -446,8 +449,7 @@ public final class Engine implements AutoCloseable {
         if (width <= 0 || height <= 0 || (width == scene.width() && height == scene.height())) {
             return;
         }
-        scene.close();
-        scene = Framebuffer.scene(gl, width, height);
+        scene = owned.replace("scene", scene, Framebuffer.scene(gl, width, height));
     }
 
     /**
@@ -457,37 +459,12 @@ public final class Engine implements AutoCloseable {
     @Override
     public void close() {
         Owned all = new Owned();
-        initialised.forEach((system, owned) -> {
-            all.own(owned);
+        all.own(owned);
+        initialised.forEach((system, made) -> {
+            all.own(made);
             all.own(system);
         });
         initialised.clear();
-        try {
-            all.close();
-        } finally {
-            closeEngineObjects();
-        }
-    }
-
-    private void closeEngineObjects() {
-        if (neutralSky != null) {
-            neutralSky.environment().close();
-            neutralSky.aerialPerspective().close();
-        }
-        if (noShadow != null) {
-            noShadow.close();
-        }
-        if (throttle != null) {
-            throttle.close();
-        }
-        if (timers != null) {
-            timers.close();
-        }
-        if (frameUniforms != null) {
-            frameUniforms.close();
-        }
-        if (scene != null) {
-            scene.close();
-        }
+        all.close();
     }
 }

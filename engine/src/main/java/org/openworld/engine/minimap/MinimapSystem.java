@@ -68,17 +68,17 @@ public final class MinimapSystem implements EngineSystem {
 
     @Override
     public void init(EngineContext context) {
-        program = context.shaders().program("minimap/minimap.vert", "minimap/minimap.frag");
+        program = context.own("program", context.shaders().program("minimap/minimap.vert", "minimap/minimap.frag"));
         program.sampler("relief", UNIT_RELIEF);
         squareUniform = program.vec3("uSquare");
         cameraUniform = program.vec3("uCamera");
         headingUniform = program.vec2("uHeading");
         markerUniform = program.vec2("uMarker");
         // the square, corners (0, 0) to (1, 1), which the vertex shader places in the picture
-        quad = new Mesh(context.gl(), new float[] {0, 0, 1, 0, 1, 1, 0, 1}, new int[] {0, 1, 2, 0, 2, 3},
-                new Mesh.Attribute(0, 2));
-        relief = Texture2D.empty(context.gl(), ReliefMap.TEXELS, ReliefMap.TEXELS, Format.RGBA8,
-                Sampling.LINEAR_CLAMP);
+        quad = context.own("quad", new Mesh(context.gl(), new float[] {0, 0, 1, 0, 1, 1, 0, 1},
+                new int[] {0, 1, 2, 0, 2, 3}, new Mesh.Attribute(0, 2)));
+        relief = context.own("relief", Texture2D.empty(context.gl(), ReliefMap.TEXELS, ReliefMap.TEXELS,
+                Format.RGBA8, Sampling.LINEAR_CLAMP));
     }
 
     @Override
@@ -129,19 +129,5 @@ public final class MinimapSystem implements EngineSystem {
     /** How often the map was built: once when first drawn, then once per move of a quarter range (tests). */
     int builds() {
         return builds;
-    }
-
-    /** Frees what {@link #init} created, in reverse order; skips what a failed init never made. */
-    @Override
-    public void close() {
-        if (relief != null) {
-            relief.close();
-        }
-        if (quad != null) {
-            quad.close();
-        }
-        if (program != null) {
-            program.close();
-        }
     }
 }
