@@ -61,8 +61,8 @@ final class Launch implements AutoCloseable {
         ShaderSources shaders = options.dev ? devShaders() : ShaderSources.classpath();
         List<EngineSystem> systems = DemoScene.systems();
         GlContext gl = window
-                ? GlContext.window(title, options.size.width(), options.size.height(), vsync)
-                : GlContext.headless();
+                ? GlContext.window(title, options.size.width(), options.size.height(), vsync, options.dev)
+                : GlContext.headless(options.dev);
         try {
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
             engine.world().setResource(new TimeOfDay(options.hours, daySpeed));

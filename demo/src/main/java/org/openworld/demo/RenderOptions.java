@@ -72,6 +72,7 @@ final class RenderOptions {
         return window || (!headless && commandDefault);
     }
 
-    @Option(names = "--dev", description = "Read shaders from ./shaders on disk; F5 reloads them in the window.")
+    @Option(names = "--dev", description = "Read shaders from ./shaders on disk (F5 reloads them in the window); "
+            + "a GL debug context whose driver messages are printed on stderr.")
     boolean dev;
 }

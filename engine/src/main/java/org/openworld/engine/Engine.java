@@ -28,6 +28,7 @@ import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
@@ -63,8 +64,8 @@ public final class Engine implements AutoCloseable {
     private final Counters counters = new Counters();
     /** The systems whose init has begun, in order, with what each has handed to {@link EngineContext#own}. */
     private final Map<EngineSystem, Owned> initialised = new LinkedHashMap<>();
-    /** The engine's own GL objects: the scene target, the timers, the shared bindings. */
-    private final Owned own = new Owned();
+    /** The engine's own GL objects, labelled {@code engine.*}: the scene target, the timers, the shared bindings. */
+    private final Owned owned = new Owned("engine");
     private final FixedStepClock clock = new FixedStepClock();
     private Framebuffer scene;
     private FrameTiming timing;
@@ -116,14 +117,14 @@ public final class Engine implements AutoCloseable {
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
-            scene = own.own(Framebuffer.scene(gl, width, height));
-            timing = own.own(new FrameTiming(gl, order.systems()));
-            shared = own.own(new SharedBindings(gl));
+            scene = owned.own("scene", Framebuffer.scene(gl, width, height));
+            timing = new FrameTiming(gl, owned, order.systems());
+            shared = new SharedBindings(gl, owned);
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
-                Owned owned = new Owned();
-                initialised.put(system, owned);
-                system.init(new EngineContext(gl, world, this.shaders, settings, owned));
+                Owned made = new Owned(system.spec().name());
+                initialised.put(system, made);
+                system.init(new EngineContext(gl, world, this.shaders, settings, made));
             }
         } catch (RuntimeException e) {
             close();
@@ -336,7 +337,7 @@ public final class Engine implements AutoCloseable {
         if (width <= 0 || height <= 0 || (width == scene.width() && height == scene.height())) {
             return;
         }
-        scene = own.replace(scene, Framebuffer.scene(gl, width, height));
+        scene = owned.replace("scene", scene, Framebuffer.scene(gl, width, height));
     }
 
     /**
@@ -346,9 +347,9 @@ public final class Engine implements AutoCloseable {
     @Override
     public void close() {
         Owned all = new Owned();
-        all.own(own);
-        initialised.forEach((system, owned) -> {
-            all.own(owned);
+        all.own(owned);
+        initialised.forEach((system, made) -> {
+            all.own(made);
             all.own(system);
         });
         initialised.clear();

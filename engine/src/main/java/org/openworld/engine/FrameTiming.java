@@ -25,9 +25,8 @@ import org.openworld.engine.gl.GpuTimers;
  * <p>At most two frames are in flight ({@link FrameThrottle}), as with a swap chain: without it a driver that queues
  * work would let the CPU run ahead and the wall times would measure the queue, not the frames.
  */
-final class FrameTiming implements AutoCloseable {
+final class FrameTiming {
 
-    private final Owned owned = new Owned();
     private final GpuTimers timers;
     private final FrameThrottle throttle;
     /** The systems in resolved order, which is the order of each record's per-system times. */
@@ -37,15 +36,11 @@ final class FrameTiming implements AutoCloseable {
     private long frameStart;
     private long lastFrameEnd;
 
-    FrameTiming(GlContext gl, List<EngineSystem> systems) {
+    /** Makes the timer queries and the throttle's fences, handing them to {@code owned} (the engine's). */
+    FrameTiming(GlContext gl, Owned owned, List<EngineSystem> systems) {
         this.systems = systems;
-        try {
-            timers = owned.own(new GpuTimers(gl));
-            throttle = owned.own(new FrameThrottle(gl));
-        } catch (RuntimeException e) {
-            owned.close();
-            throw e;
-        }
+        timers = owned.own(new GpuTimers(gl));
+        throttle = owned.own(new FrameThrottle(gl));
     }
 
     /** The frame's rendering starts now. */
@@ -100,10 +95,5 @@ final class FrameTiming implements AutoCloseable {
             sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.wallMs(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
                     cpu.triangles(), cpu.drawCalls(), cpu.counters()));
         });
-    }
-
-    @Override
-    public void close() {
-        owned.close();
     }
 }

@@ -17,7 +17,8 @@ import org.openworld.engine.gl.FrameUniforms;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
-import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Format;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture3D;
 
 /**
@@ -28,22 +29,17 @@ import org.openworld.engine.gl.Texture3D;
  * frame whose shadow maps are not drawn gets a map that shadows nothing, so a shader never branches on what the
  * scene has.
  */
-final class SharedBindings implements AutoCloseable {
+final class SharedBindings {
 
-    private final Owned owned = new Owned();
     private final FrameUniforms frameUniforms;
     private final SkyMaps neutralSky;
     private final SunShadow noShadow;
 
-    SharedBindings(GlContext gl) {
-        try {
-            frameUniforms = owned.own(new FrameUniforms(gl));
-            neutralSky = neutralSky(gl, owned);
-            noShadow = owned.own(SunShadow.none(gl));
-        } catch (RuntimeException e) {
-            owned.close();
-            throw e;
-        }
+    /** Makes the frame block and the stand-ins, handing them to {@code owned} (the engine's). */
+    SharedBindings(GlContext gl, Owned owned) {
+        frameUniforms = owned.own("frame", new FrameUniforms(gl));
+        neutralSky = neutralSky(gl, owned);
+        noShadow = owned.own("noShadow", SunShadow.none(gl));
     }
 
     /**
@@ -75,16 +71,12 @@ final class SharedBindings implements AutoCloseable {
     private static SkyMaps neutralSky(GlContext gl, Owned owned) {
         FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
         try {
-            Texture3D air = owned.own(Texture3D.of(gl, 1, 1, 1, Texture2D.Format.RGBA16F,
-                    Texture3D.Sampling3D.LINEAR_CLAMP, clearAir));
-            return new SkyMaps(air, owned.own(CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient())));
+            Texture3D air = owned.own("neutralAir",
+                    Texture3D.of(gl, 1, 1, 1, Format.RGBA16F, Sampling.LINEAR_CLAMP, clearAir));
+            return new SkyMaps(air, owned.own("neutralSky",
+                    CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient())));
         } finally {
             MemoryUtil.memFree(clearAir);
         }
-    }
-
-    @Override
-    public void close() {
-        owned.close();
     }
 }

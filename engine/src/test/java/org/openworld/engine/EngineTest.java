@@ -35,13 +35,14 @@ import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 
 /** The frame loop on real GL: pass order, pass cameras, frame records, switching systems off, fixed steps, cleanup. */
@@ -152,8 +153,8 @@ class EngineTest {
         @Override
         public void init(EngineContext context) {
             super.init(context);
-            target = new Framebuffer(context.gl(), 16, 16, Texture2D.Format.RGBA8, Texture2D.Format.DEPTH32F,
-                    Texture2D.Sampling.NEAREST_CLAMP);
+            target = new Framebuffer(context.gl(), 16, 16, Format.RGBA8, Format.DEPTH32F,
+                    Sampling.NEAREST_CLAMP);
         }
 
         @Override

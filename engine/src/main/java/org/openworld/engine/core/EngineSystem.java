@@ -10,8 +10,10 @@ import org.openworld.engine.settings.SettingsGroup;
  *   <li>{@link #update}: advance by one fixed simulation step;</li>
  *   <li>{@link #beginPass}: set up GL state that holds for a whole pass, before anyone draws in it;</li>
  *   <li>{@link #render}: draw in one pass, for each pass declared in {@link #spec()};</li>
- *   <li>{@link #close}: free everything {@code init} created, on the GL thread; also called after an
- *       {@code init} that failed half-way, so it must skip what was never created.</li>
+ *   <li>{@link #close}: free what {@code init} made outside {@link EngineContext#own} (a worker thread, native
+ *       memory), on the GL thread; also called after an {@code init} that failed half-way, so it must skip what was
+ *       never made. What was handed to {@code context.own} the engine closes afterwards, newest first: most
+ *       systems write no {@code close} at all.</li>
  * </ol>
  * Switching a system off ({@code Engine.setEnabled}) skips its update and render; it never reallocates.
  */

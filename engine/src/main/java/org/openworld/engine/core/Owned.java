@@ -1,7 +1,9 @@
 package org.openworld.engine.core;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
+import org.openworld.engine.gl.Labelled;
 
 /**
  * What one owner (a system, the engine) has made and must close: objects are added as they are made and closed in
@@ -9,10 +11,46 @@ import java.util.List;
  * reports every failure at the end, the first as the exception and the others suppressed in it; an object is never
  * closed twice. An init that fails half-way therefore leaves nothing behind: what was owned so far is closed, what
  * was never made was never added.
+ *
+ * <p>A GL object is owned with its role, {@code own("heights", texture)}, and labelled {@code owner.role}
+ * ({@code terrain.heights}) for GPU debuggers ({@link Labelled}), in the style of the owner's timer spans.
  */
 public final class Owned implements AutoCloseable {
 
+    private final String owner;
     private final List<AutoCloseable> things = new ArrayList<>();
+
+    /** @param owner the first part of every label: a system's name, or {@code engine} */
+    public Owned(String owner) {
+        this.owner = owner;
+    }
+
+    /** An owner whose objects are labelled by their role alone. */
+    public Owned() {
+        this(null);
+    }
+
+    /**
+     * Takes a GL object into ownership as {@link #own(AutoCloseable)} does, and labels it {@code owner.role}:
+     * {@code heights = owned.own("heights", Texture2D.withMips(..))}.
+     */
+    public <T extends Labelled> T own(String role, T thing) {
+        own(thing);
+        thing.label(label(role));
+        return thing;
+    }
+
+    /** {@link #replace(AutoCloseable, AutoCloseable)} for a GL object, labelled {@code owner.role} as it is owned. */
+    public <T extends Labelled> T replace(String role, AutoCloseable old, T fresh) {
+        replace(old, fresh);
+        fresh.label(label(role));
+        return fresh;
+    }
+
+    /** The label of the object with this role: {@code owner.role}. */
+    public String label(String role) {
+        return owner == null ? role : owner + "." + role;
+    }
 
     /** Takes {@code thing} into ownership and hands it back, so a field is set in one line: {@code x = own(make())}. */
     public <T extends AutoCloseable> T own(T thing) {
@@ -28,10 +66,18 @@ public final class Owned implements AutoCloseable {
      * dropped from the list, so it is not closed again at the end.
      */
     public <T extends AutoCloseable> T replace(AutoCloseable old, T fresh) {
+        drop(old);
+        return own(fresh);
+    }
+
+    /**
+     * Closes {@code old} now, if it is owned here, and owns it no longer (a target that is not re-made); null or an
+     * object owned elsewhere is left alone.
+     */
+    public void drop(AutoCloseable old) {
         if (old != null && things.remove(old)) {
             closeAll(List.of(old));
         }
-        return own(fresh);
     }
 
     /** How many objects are owned now. */
@@ -44,7 +90,7 @@ public final class Owned implements AutoCloseable {
     public void close() {
         List<AutoCloseable> reversed = new ArrayList<>(things);
         things.clear();
-        java.util.Collections.reverse(reversed);
+        Collections.reverse(reversed);
         closeAll(reversed);
     }
 

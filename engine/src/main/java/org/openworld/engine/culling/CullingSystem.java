@@ -169,12 +169,4 @@ public final class CullingSystem implements EngineSystem {
             }
         }
     }
-
-    @Override
-    public void close() {
-        if (outline != null) {
-            outline.close();
-            outline = null;
-        }
-    }
 }

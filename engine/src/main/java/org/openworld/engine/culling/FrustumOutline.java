@@ -17,7 +17,7 @@ import org.openworld.engine.gl.Uniform;
  * {@code shaders/culling/outline.vert} turns towards the screen; the static mesh holds only which corners each edge
  * joins, and the corners come as uniforms.
  */
-final class FrustumOutline implements AutoCloseable {
+final class FrustumOutline {
 
     /** Width of the drawn edges, pixels: visible at a glance without hiding what lies behind. */
     private static final float WIDTH_PX = 3;
@@ -33,17 +33,12 @@ final class FrustumOutline implements AutoCloseable {
     private final Vector3d corner = new Vector3d();
 
     FrustumOutline(EngineContext context) {
-        program = context.shaders().program("culling/outline.vert", "culling/outline.frag");
-        try {
-            for (int i = 0; i < CORNERS; i++) {
-                wsCorners[i] = program.vec3("wsCorners[" + i + "]");
-            }
-            halfWidthPx = program.float1("halfWidthPx");
-        } catch (RuntimeException e) {
-            program.close();
-            throw e;
+        program = context.own("outline", context.shaders().program("culling/outline.vert", "culling/outline.frag"));
+        for (int i = 0; i < CORNERS; i++) {
+            wsCorners[i] = program.vec3("wsCorners[" + i + "]");
         }
-        ribbons = edgeRibbons(context);
+        halfWidthPx = program.float1("halfWidthPx");
+        ribbons = context.own("outline.ribbons", edgeRibbons(context));
     }
 
     /**
@@ -98,11 +93,5 @@ final class FrustumOutline implements AutoCloseable {
         halfWidthPx.set(WIDTH_PX / 2);
         ribbons.draw(stats);
         glDepthMask(true);
-    }
-
-    @Override
-    public void close() {
-        ribbons.close();
-        program.close();
     }
 }

@@ -8,6 +8,7 @@ import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.gl.DepthTextureArray;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.gl.Labelled;
 
 /**
  * Where the sun cannot reach, for every lit shader: the shadow maps and the uniform block that says how to read them
@@ -19,7 +20,7 @@ import org.openworld.engine.gl.GpuBuffer;
  * @param map   one depth layer per cascade
  * @param block {@link #BLOCK_SIZE} bytes, laid out as {@code ShadowBlock} in {@code shaders/common/shadow.glsl}
  */
-public record SunShadow(DepthTextureArray map, GpuBuffer block) implements AutoCloseable {
+public record SunShadow(DepthTextureArray map, GpuBuffer block) implements Labelled {
 
     /** Bytes of the std140 block: 4 matrices and 5 vectors, each a mat4 or vec4, so no padding. */
     public static final int BLOCK_SIZE = 4 * 64 + 5 * 16;
@@ -35,6 +36,13 @@ public record SunShadow(DepthTextureArray map, GpuBuffer block) implements AutoC
             MemoryUtil.memFree(zeros);
         }
         return new SunShadow(DepthTextureArray.empty(gl), block);
+    }
+
+    /** Names the map {@code name.map} and the block {@code name.block}. */
+    @Override
+    public void label(String name) {
+        map.label(name + ".map");
+        block.label(name + ".block");
     }
 
     @Override

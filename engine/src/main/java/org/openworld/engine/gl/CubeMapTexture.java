@@ -8,6 +8,7 @@ import java.util.function.IntConsumer;
 import org.joml.Matrix3f;
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
+import org.lwjgl.opengl.GL30C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
@@ -23,12 +24,11 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class CubeMapTexture extends GlTexture {
 
-    private final int size;
     private int framebuffer;
 
+    /** Trilinear, clamped at the faces' edges (seamless filtering joins them, see {@link #bind}). */
     private CubeMapTexture(GlContext gl, int size) {
-        super(gl, GL_TEXTURE_CUBE_MAP);
-        this.size = size;
+        super(gl, GL_TEXTURE_CUBE_MAP, size, size, 1, Format.RGB16F, Sampling.TRILINEAR_CLAMP);
     }
 
     /**
@@ -39,11 +39,7 @@ public final class CubeMapTexture extends GlTexture {
      * @param radiance linear RGB for a unit direction in world space
      */
     public static CubeMapTexture fromDirections(GlContext gl, int size, Function<Vector3fc, Vector3fc> radiance) {
-        if (size <= 0) {
-            throw new IllegalArgumentException("cube map face size must be positive, got " + size);
-        }
         CubeMapTexture t = new CubeMapTexture(gl, size);
-        t.setSampling();
         FloatBuffer face = MemoryUtil.memAllocFloat(3 * size * size);
         try {
             Vector3f dir = new Vector3f();
@@ -76,15 +72,13 @@ public final class CubeMapTexture extends GlTexture {
             throw new IllegalArgumentException("cube map face size must be a power of two, got " + size);
         }
         CubeMapTexture t = new CubeMapTexture(gl, size);
-        t.setSampling();
         for (int f = 0; f < 6; f++) {
             for (int level = 0, s = size; s >= 1; level++, s /= 2) {
                 glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, level, GL_RGB16F, s, s, 0, GL_RGB, GL_FLOAT,
                         (FloatBuffer) null);
             }
         }
-        t.framebuffer = glGenFramebuffers();
-        gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
+        t.framebuffer = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
         return t;
     }
 
@@ -101,7 +95,7 @@ public final class CubeMapTexture extends GlTexture {
         int[] viewport = new int[4];
         glGetIntegerv(GL_VIEWPORT, viewport);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glViewport(0, 0, size, size);
+        glViewport(0, 0, size(), size());
         for (int f = 0; f < 6; f++) {
             glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, id(), 0);
             drawFace.accept(f);
@@ -130,15 +124,6 @@ public final class CubeMapTexture extends GlTexture {
         };
     }
 
-    /** Trilinear, clamped at the faces' edges (seamless filtering joins them, see {@link #bind}). */
-    private void setSampling() {
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-    }
-
     /** The unit direction through the centre of texel (x, y) of face f (see {@link #faceAxes}). */
     private static Vector3f direction(int f, int x, int y, int size, Vector3f out) {
         float s = 2 * (x + 0.5f) / size - 1;
@@ -152,17 +137,21 @@ public final class CubeMapTexture extends GlTexture {
         super.bind(unit);
     }
 
+    /** Texels along a face's side. */
     public int size() {
-        return size;
+        return width();
+    }
+
+    /** Names the cube map, and its render target's framebuffer as {@code name.target}. */
+    @Override
+    public void label(String name) {
+        super.label(name);
+        gl.debug().label(GL_FRAMEBUFFER, framebuffer, name + ".target");
     }
 
     @Override
     public void close() {
-        if (framebuffer != 0) {
-            glDeleteFramebuffers(framebuffer);
-            gl.objects().deleted(GlObjects.Kind.FRAMEBUFFER);
-            framebuffer = 0;
-        }
+        framebuffer = gl.objects().delete(GlObjects.Kind.FRAMEBUFFER, framebuffer, GL30C::glDeleteFramebuffers);
         super.close();
     }
 }

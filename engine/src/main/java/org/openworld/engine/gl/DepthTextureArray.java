@@ -14,22 +14,13 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class DepthTextureArray extends GlTexture {
 
-    private final int size;
-    private final int layers;
-
     private DepthTextureArray(GlContext gl, int size, int layers, FloatBuffer depths) {
-        super(gl, GL_TEXTURE_2D_ARRAY);
-        this.size = size;
-        this.layers = layers;
+        super(gl, GL_TEXTURE_2D_ARRAY, size, size, layers, Format.DEPTH32F, Sampling.NEAREST_BORDER);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, size, size, layers, 0, GL_DEPTH_COMPONENT,
-                GL_FLOAT, depths);
-        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, format().internalFormat(), size, size, layers, 0, format().format(),
+                format().type(), depths);
         glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, new float[] {1, 1, 1, 1});
-        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+        setLevels(1);
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     }
@@ -41,10 +32,6 @@ public final class DepthTextureArray extends GlTexture {
      * @param layers maps, one per cascade
      */
     public static DepthTextureArray of(GlContext gl, int size, int layers) {
-        if (size <= 0 || layers <= 0) {
-            throw new IllegalArgumentException("depth array needs a positive size and layer count, got " + size
-                    + "² × " + layers);
-        }
         return new DepthTextureArray(gl, size, layers, null);
     }
 
@@ -63,7 +50,7 @@ public final class DepthTextureArray extends GlTexture {
      * layer after layer. For tests and tools.
      */
     public float[] read() {
-        FloatBuffer depths = MemoryUtil.memAllocFloat(size * size * layers);
+        FloatBuffer depths = MemoryUtil.memAllocFloat(size() * size() * layers());
         try {
             bindForUpdate();
             glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -76,11 +63,13 @@ public final class DepthTextureArray extends GlTexture {
         }
     }
 
+    /** Texels along a map's side. */
     public int size() {
-        return size;
+        return width();
     }
 
+    /** Maps, one per cascade. */
     public int layers() {
-        return layers;
+        return depth();
     }
 }

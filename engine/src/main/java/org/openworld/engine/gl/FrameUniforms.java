@@ -14,7 +14,7 @@ import org.lwjgl.system.MemoryUtil;
  * block must match; std140 makes that simple because every member is a vec4 or a mat4 (16-byte aligned, no padding
  * rules to remember).
  */
-public final class FrameUniforms implements AutoCloseable {
+public final class FrameUniforms implements Labelled {
 
     private static final int MAT4 = 64;
     private static final int VEC4 = 16;
@@ -60,6 +60,11 @@ public final class FrameUniforms implements AutoCloseable {
     private int vec4(int offset, float x, float y, float z, float w) {
         data.putFloat(offset, x).putFloat(offset + 4, y).putFloat(offset + 8, z).putFloat(offset + 12, w);
         return offset + VEC4;
+    }
+
+    @Override
+    public void label(String name) {
+        buffer.label(name);
     }
 
     @Override

@@ -3,6 +3,7 @@ package org.openworld.engine.gl;
 import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.ByteBuffer;
+import org.lwjgl.opengl.GL30C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
@@ -10,7 +11,7 @@ import org.lwjgl.system.MemoryUtil;
  * or one layer of a {@link DepthTextureArray}, which it borrows. The engine's scene target is RGBA8 +
  * depth24/stencil8; the water's reflection is colour + depth; each shadow cascade is a depth layer.
  */
-public final class Framebuffer implements AutoCloseable {
+public final class Framebuffer implements Labelled {
 
     private final GlContext gl;
     private final Texture2D color;
@@ -23,13 +24,12 @@ public final class Framebuffer implements AutoCloseable {
      * @param colorFormat the colour attachment's format, or null for a depth-only target
      * @param depthFormat the depth attachment's format ({@code DEPTH24_STENCIL8} also gives a stencil), or null
      */
-    public Framebuffer(GlContext gl, int width, int height, Texture2D.Format colorFormat, Texture2D.Format depthFormat,
-                       Texture2D.Sampling sampling) {
+    public Framebuffer(GlContext gl, int width, int height, Format colorFormat, Format depthFormat,
+                       Sampling sampling) {
         this.gl = gl;
         this.width = width;
         this.height = height;
-        this.id = glGenFramebuffers();
-        gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
+        this.id = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
         glBindFramebuffer(GL_FRAMEBUFFER, id);
         color = colorFormat == null ? null : Texture2D.empty(gl, width, height, colorFormat, sampling);
         depth = depthFormat == null ? null : Texture2D.empty(gl, width, height, depthFormat, sampling);
@@ -40,7 +40,7 @@ public final class Framebuffer implements AutoCloseable {
             glReadBuffer(GL_NONE);
         }
         if (depth != null) {
-            int attachment = depthFormat == Texture2D.Format.DEPTH24_STENCIL8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+            int attachment = depthFormat.hasStencil() ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
             glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, depth.id(), 0);
         }
         checkComplete();
@@ -53,8 +53,7 @@ public final class Framebuffer implements AutoCloseable {
         this.height = depth.size();
         this.color = null;
         this.depth = null;
-        this.id = glGenFramebuffers();
-        gl.objects().created(GlObjects.Kind.FRAMEBUFFER);
+        this.id = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
         glBindFramebuffer(GL_FRAMEBUFFER, id);
         glDrawBuffer(GL_NONE);
         glReadBuffer(GL_NONE);
@@ -82,8 +81,7 @@ public final class Framebuffer implements AutoCloseable {
 
     /** The usual scene target: RGBA8 colour and depth24 + stencil8, nearest sampling. */
     public static Framebuffer scene(GlContext gl, int width, int height) {
-        return new Framebuffer(gl, width, height, Texture2D.Format.RGBA8, Texture2D.Format.DEPTH24_STENCIL8,
-                Texture2D.Sampling.NEAREST_CLAMP);
+        return new Framebuffer(gl, width, height, Format.RGBA8, Format.DEPTH24_STENCIL8, Sampling.NEAREST_CLAMP);
     }
 
     /** Binds for drawing and sets the viewport to the whole target. */
@@ -138,6 +136,18 @@ public final class Framebuffer implements AutoCloseable {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
+    /** Names the framebuffer and its own attachments, {@code name.color} and {@code name.depth}. */
+    @Override
+    public void label(String name) {
+        gl.debug().label(GL_FRAMEBUFFER, id, name);
+        if (color != null) {
+            color.label(name + ".color");
+        }
+        if (depth != null) {
+            depth.label(name + ".depth");
+        }
+    }
+
     @Override
     public void close() {
         if (color != null) {
@@ -146,10 +156,6 @@ public final class Framebuffer implements AutoCloseable {
         if (depth != null) {
             depth.close();
         }
-        if (id != 0) {
-            glDeleteFramebuffers(id);
-            gl.objects().deleted(GlObjects.Kind.FRAMEBUFFER);
-            id = 0;
-        }
+        id = gl.objects().delete(GlObjects.Kind.FRAMEBUFFER, id, GL30C::glDeleteFramebuffers);
     }
 }

@@ -22,7 +22,9 @@ import org.lwjgl.system.MemoryStack;
  * </ol>
  * A headless context renders into framebuffer objects, never into its (invisible) default framebuffer.
  *
- * <p>We ask for OpenGL 4.5 core and accept 3.3 core, the floor every technique here is written for.
+ * <p>We ask for OpenGL 4.5 core and accept 3.3 core, the floor every technique here is written for. With
+ * {@code debug} ({@code --dev}) the context is a debug context ({@code GLFW_OPENGL_DEBUG_CONTEXT}, which GLFW passes
+ * on to EGL as well) and every driver message is printed on stderr through {@link GlDebug#printMessages}.
  */
 public final class GlContext implements AutoCloseable {
 
@@ -55,6 +57,7 @@ public final class GlContext implements AutoCloseable {
     private final Mode mode;
     private final GlObjects objects = new GlObjects();
     private final GLFWErrorCallback errorCallback;
+    private final GlDebug debug;
 
     private GlContext(long window, Mode mode, GLFWErrorCallback errorCallback) {
         this.window = window;
@@ -62,18 +65,28 @@ public final class GlContext implements AutoCloseable {
         this.errorCallback = errorCallback;
         glfwMakeContextCurrent(window);
         GL.createCapabilities();
+        this.debug = new GlDebug();
     }
 
     /** A headless context: EGL on GLFW's null platform first, then a hidden window on an X display. */
     public static GlContext headless() {
+        return headless(false);
+    }
+
+    /**
+     * A headless context, as {@link #headless()}.
+     *
+     * @param debug a debug context, its driver messages printed on stderr ({@code --dev})
+     */
+    public static GlContext headless(boolean debug) {
         List<String> tried = new ArrayList<>();
-        Attempt egl = tryCreate(Mode.HEADLESS_EGL, GLFW_PLATFORM_NULL, 64, 64, false, null);
+        Attempt egl = tryCreate(Mode.HEADLESS_EGL, GLFW_PLATFORM_NULL, 64, 64, false, null, debug);
         if (egl.context != null) {
             return egl.context;
         }
         tried.add("headless-egl (GLFW null platform + EGL): " + egl.failure);
         if (System.getenv("DISPLAY") != null) {
-            Attempt x11 = tryCreate(Mode.HEADLESS_X11, GLFW_PLATFORM_X11, 64, 64, false, null);
+            Attempt x11 = tryCreate(Mode.HEADLESS_X11, GLFW_PLATFORM_X11, 64, 64, false, null, debug);
             if (x11.context != null) {
                 return x11.context;
             }
@@ -86,7 +99,16 @@ public final class GlContext implements AutoCloseable {
 
     /** A visible, resizable window with an OpenGL context. */
     public static GlContext window(String title, int width, int height, boolean vsync) {
-        Attempt attempt = tryCreate(Mode.WINDOW, GLFW_ANY_PLATFORM, width, height, true, title);
+        return window(title, width, height, vsync, false);
+    }
+
+    /**
+     * A window, as {@link #window(String, int, int, boolean)}.
+     *
+     * @param debug a debug context, its driver messages printed on stderr ({@code --dev})
+     */
+    public static GlContext window(String title, int width, int height, boolean vsync, boolean debug) {
+        Attempt attempt = tryCreate(Mode.WINDOW, GLFW_ANY_PLATFORM, width, height, true, title, debug);
         if (attempt.context == null) {
             throw unavailable(List.of("window: " + attempt.failure));
         }
@@ -97,7 +119,8 @@ public final class GlContext implements AutoCloseable {
     private record Attempt(GlContext context, String failure) {
     }
 
-    private static Attempt tryCreate(Mode mode, int platform, int width, int height, boolean visible, String title) {
+    private static Attempt tryCreate(Mode mode, int platform, int width, int height, boolean visible, String title,
+                                     boolean debug) {
         List<String> errors = new ArrayList<>();
         GLFWErrorCallback callback = GLFWErrorCallback.create((code, description) ->
                 errors.add(GLFWErrorCallback.getDescription(description)));
@@ -123,6 +146,7 @@ public final class GlContext implements AutoCloseable {
             glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
             glfwWindowHint(GLFW_DEPTH_BITS, 24);
             glfwWindowHint(GLFW_STENCIL_BITS, 8);
+            glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
             if (mode == Mode.HEADLESS_EGL) {
                 glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
             }
@@ -130,6 +154,9 @@ public final class GlContext implements AutoCloseable {
             if (window != NULL) {
                 GlContext context = new GlContext(window, mode, callback);
                 if (context.versionAtLeast(3, 3)) {
+                    if (debug) {
+                        context.debug.printMessages(System.err::println);
+                    }
                     return new Attempt(context, null);
                 }
                 String got = context.version();
@@ -168,6 +195,11 @@ public final class GlContext implements AutoCloseable {
 
     public GlObjects objects() {
         return objects;
+    }
+
+    /** Object labels, debug groups and driver messages ({@code KHR_debug}), no-ops where the driver lacks them. */
+    public GlDebug debug() {
+        return debug;
     }
 
     public String renderer() {
@@ -210,6 +242,7 @@ public final class GlContext implements AutoCloseable {
     /** Destroys the window and ends GLFW; GL objects must have been closed before. */
     @Override
     public void close() {
+        debug.close();
         GL.setCapabilities(null);
         glfwDestroyWindow(window);
         glfwTerminate();

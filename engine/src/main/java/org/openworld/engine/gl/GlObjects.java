@@ -2,6 +2,8 @@ package org.openworld.engine.gl;
 
 import java.util.EnumMap;
 import java.util.Map;
+import java.util.function.IntConsumer;
+import java.util.function.IntSupplier;
 
 /**
  * Counts the live GL objects of one context by kind. Every wrapper in this package registers on creation and
@@ -13,6 +15,26 @@ public final class GlObjects {
     public enum Kind { PROGRAM, SHADER, BUFFER, VERTEX_ARRAY, TEXTURE, FRAMEBUFFER, RENDERBUFFER, QUERY, SYNC }
 
     private final Map<Kind, Integer> live = new EnumMap<>(Kind.class);
+
+    /** Makes one GL name with {@code glGen} (e.g. {@code glGenTextures}) and counts it. */
+    int create(Kind kind, IntSupplier glGen) {
+        int name = glGen.getAsInt();
+        created(kind);
+        return name;
+    }
+
+    /**
+     * Deletes one GL name with {@code glDelete} (e.g. {@code glDeleteTextures}) and counts it, unless it is 0 (never
+     * made, or deleted already); returns 0 for the owner to keep, so closing twice deletes once:
+     * {@code id = gl.objects().delete(Kind.TEXTURE, id, GL11C::glDeleteTextures)}.
+     */
+    int delete(Kind kind, int name, IntConsumer glDelete) {
+        if (name != 0) {
+            glDelete.accept(name);
+            deleted(kind);
+        }
+        return 0;
+    }
 
     void created(Kind kind) {
         live.merge(kind, 1, Integer::sum);

@@ -3,13 +3,15 @@ package org.openworld.engine.gl;
 import static org.lwjgl.opengl.GL15C.*;
 import static org.lwjgl.opengl.GL30C.GL_TRANSFORM_FEEDBACK_BUFFER;
 import static org.lwjgl.opengl.GL30C.glBindBufferBase;
+import static org.lwjgl.opengl.GL43C.GL_BUFFER;
 
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
+import org.lwjgl.opengl.GL15C;
 
 /** One GL buffer object: vertices, indices, uniforms or transform-feedback storage. */
-public final class GpuBuffer implements AutoCloseable {
+public final class GpuBuffer implements Labelled {
 
     private final GlContext gl;
     private final int target;
@@ -21,8 +23,7 @@ public final class GpuBuffer implements AutoCloseable {
     public GpuBuffer(GlContext gl, int target) {
         this.gl = gl;
         this.target = target;
-        this.id = glGenBuffers();
-        gl.objects().created(GlObjects.Kind.BUFFER);
+        this.id = gl.objects().create(GlObjects.Kind.BUFFER, GL15C::glGenBuffers);
     }
 
     public int id() {
@@ -70,11 +71,12 @@ public final class GpuBuffer implements AutoCloseable {
     }
 
     @Override
+    public void label(String name) {
+        gl.debug().label(GL_BUFFER, id, name);
+    }
+
+    @Override
     public void close() {
-        if (id != 0) {
-            glDeleteBuffers(id);
-            gl.objects().deleted(GlObjects.Kind.BUFFER);
-            id = 0;
-        }
+        id = gl.objects().delete(GlObjects.Kind.BUFFER, id, GL15C::glDeleteBuffers);
     }
 }

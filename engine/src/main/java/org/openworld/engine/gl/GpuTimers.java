@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.BiConsumer;
+import org.lwjgl.opengl.GL15C;
 
 /**
  * GPU time per labelled span (one span per system in each pass), from {@code GL_TIME_ELAPSED} queries.
@@ -18,7 +19,8 @@ import java.util.function.BiConsumer;
  * <p>The GPU runs a frame or two behind the CPU, so results are read when they are available, not when the span
  * ends: asking at once would stall the pipeline. Spans are grouped by frame; {@link #collect} hands over every
  * finished frame in order, and {@code collect(true)} waits for all (end of a benchmark). Spans cannot nest, as
- * timer queries cannot.
+ * timer queries cannot. Each span is also a {@code KHR_debug} group of the same label ({@code main.terrain}), so a
+ * capture in RenderDoc or Nsight is grouped as the timings are.
  */
 public final class GpuTimers implements AutoCloseable {
 
@@ -38,14 +40,18 @@ public final class GpuTimers implements AutoCloseable {
         this.gl = gl;
     }
 
+    /** Opens a span, and a debug group of the same label ({@link GlDebug#pushGroup}) for GPU debuggers. */
     public void begin(String label) {
         int query = free.isEmpty() ? newQuery() : free.pop();
         current.add(new Span(label, query));
+        gl.debug().pushGroup(label);
         glBeginQuery(GL_TIME_ELAPSED, query);
     }
 
+    /** Closes the open span and its debug group. */
     public void end() {
         glEndQuery(GL_TIME_ELAPSED);
+        gl.debug().popGroup();
     }
 
     /** Closes the current frame's group of spans. */
@@ -80,8 +86,7 @@ public final class GpuTimers implements AutoCloseable {
 
     private int newQuery() {
         created++;
-        gl.objects().created(GlObjects.Kind.QUERY);
-        return glGenQueries();
+        return gl.objects().create(GlObjects.Kind.QUERY, GL15C::glGenQueries);
     }
 
     @Override
@@ -91,8 +96,7 @@ public final class GpuTimers implements AutoCloseable {
         pending.clear();
         current.clear();
         while (!free.isEmpty()) {
-            glDeleteQueries(free.pop());
-            gl.objects().deleted(GlObjects.Kind.QUERY);
+            gl.objects().delete(GlObjects.Kind.QUERY, free.pop(), GL15C::glDeleteQueries);
             created--;
         }
         if (created != 0) {

@@ -10,7 +10,7 @@ import org.lwjgl.system.MemoryUtil;
  * Indexed triangles in one vertex array: interleaved float attributes in one buffer, 32-bit indices in another.
  * Every draw goes through here so the frame's triangle and draw-call counts are exact.
  */
-public final class Mesh implements AutoCloseable {
+public final class Mesh implements Labelled {
 
     /** One vertex attribute: its shader location and its number of floats. */
     public record Attribute(int location, int components) {
@@ -73,6 +73,14 @@ public final class Mesh implements AutoCloseable {
         vao.bind();
         glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0);
         stats.add(1, triangleCount());
+    }
+
+    /** Names the vertex array, and its buffers {@code name.vertices} and {@code name.indices}. */
+    @Override
+    public void label(String name) {
+        vao.label(name);
+        vertices.label(name + ".vertices");
+        indices.label(name + ".indices");
     }
 
     @Override

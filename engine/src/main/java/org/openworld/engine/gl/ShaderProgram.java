@@ -7,6 +7,7 @@ import static org.lwjgl.opengl.GL31C.GL_INVALID_INDEX;
 import static org.lwjgl.opengl.GL31C.glGetUniformBlockIndex;
 import static org.lwjgl.opengl.GL31C.glUniformBlockBinding;
 import static org.lwjgl.opengl.GL32C.GL_GEOMETRY_SHADER;
+import static org.lwjgl.opengl.GL43C.GL_PROGRAM;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -25,7 +26,7 @@ import java.util.function.Consumer;
  * <p>{@link #reload()} rebuilds from the current sources (dev mode, F5): on failure the old program stays in use and
  * the error is thrown for the caller to print.
  */
-public final class ShaderProgram implements AutoCloseable {
+public final class ShaderProgram implements Labelled {
 
     private final GlContext gl;
     private final ShaderSources sources;
@@ -34,6 +35,7 @@ public final class ShaderProgram implements AutoCloseable {
     private final List<Uniform> uniforms = new ArrayList<>();
     private final Consumer<ShaderProgram> onClose;
     private int id;
+    private String label;
 
     private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages, List<String> captured,
                           Consumer<ShaderProgram> onClose) {
@@ -134,6 +136,16 @@ public final class ShaderProgram implements AutoCloseable {
         }
         deleteProgram(id);
         id = fresh;
+        if (label != null) {
+            label(label);
+        }
+    }
+
+    /** Names the program; a {@link #reload()} names the rebuilt one the same. */
+    @Override
+    public void label(String name) {
+        label = name;
+        gl.debug().label(GL_PROGRAM, id, name);
     }
 
     private int link() {

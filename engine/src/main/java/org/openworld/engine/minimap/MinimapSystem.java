@@ -15,7 +15,9 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.WaterLevel;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
@@ -67,17 +69,17 @@ public final class MinimapSystem implements EngineSystem {
 
     @Override
     public void init(EngineContext context) {
-        program = context.shaders().program("minimap/minimap.vert", "minimap/minimap.frag");
+        program = context.own("program", context.shaders().program("minimap/minimap.vert", "minimap/minimap.frag"));
         program.sampler("relief", UNIT_RELIEF);
         squareUniform = program.vec3("uSquare");
         cameraUniform = program.vec3("uCamera");
         headingUniform = program.vec2("uHeading");
         markerUniform = program.vec2("uMarker");
         // the square, corners (0, 0) to (1, 1), which the vertex shader places in the picture
-        quad = new Mesh(context.gl(), new float[] {0, 0, 1, 0, 1, 1, 0, 1}, new int[] {0, 1, 2, 0, 2, 3},
-                new Mesh.Attribute(0, 2));
-        relief = Texture2D.empty(context.gl(), ReliefMap.TEXELS, ReliefMap.TEXELS, Texture2D.Format.RGBA8,
-                Texture2D.Sampling.LINEAR_CLAMP);
+        quad = context.own("quad", new Mesh(context.gl(), new float[] {0, 0, 1, 0, 1, 1, 0, 1},
+                new int[] {0, 1, 2, 0, 2, 3}, new Mesh.Attribute(0, 2)));
+        relief = context.own("relief", Texture2D.empty(context.gl(), ReliefMap.TEXELS, ReliefMap.TEXELS,
+                Format.RGBA8, Sampling.LINEAR_CLAMP));
     }
 
     @Override
@@ -126,19 +128,5 @@ public final class MinimapSystem implements EngineSystem {
     /** How often the map was built: once when first drawn, then once per move of a quarter range (tests). */
     int builds() {
         return builds;
-    }
-
-    /** Frees what {@link #init} created, in reverse order; skips what a failed init never made. */
-    @Override
-    public void close() {
-        if (relief != null) {
-            relief.close();
-        }
-        if (quad != null) {
-            quad.close();
-        }
-        if (program != null) {
-            program.close();
-        }
     }
 }

@@ -22,13 +22,16 @@ import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Wind;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuBuffer;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
@@ -64,6 +67,8 @@ public final class ParticleSystem implements EngineSystem {
     private static final int VELOCITY = 1;
 
     private GlContext gl;
+    /** What this system owns, for the state buffers re-made when the flake count changes. */
+    private Owned owned;
     private ShaderProgram updateProgram;
     private ShaderProgram drawProgram;
     private UpdateUniforms updateUniforms;
@@ -102,14 +107,16 @@ public final class ParticleSystem implements EngineSystem {
     @Override
     public void init(EngineContext context) {
         gl = context.gl();
-        updateProgram = context.shaders().feedbackProgram("particles/update.vert", "outPosition", "outVelocity");
+        owned = context.owned();
+        updateProgram = context.own("update", context.shaders().feedbackProgram("particles/update.vert",
+                "outPosition", "outVelocity"));
         updateProgram.sampler("ground", UNIT_GROUND);
         updateUniforms = new UpdateUniforms(updateProgram.vec4("uForces"), updateProgram.vec3("uWind"),
                 updateProgram.vec4("uVolume"), updateProgram.int1("uStepKey"), updateProgram.vec4("uGround"));
-        drawProgram = context.shaders().program("particles/flake.vert", "particles/flake.frag");
+        drawProgram = context.own("draw", context.shaders().program("particles/flake.vert", "particles/flake.frag"));
         flakeUniform = drawProgram.vec4("uFlake");
-        groundTexture = Texture2D.empty(gl, GROUND_SAMPLES, GROUND_SAMPLES, Texture2D.Format.R32F,
-                Texture2D.Sampling.NEAREST_CLAMP);
+        groundTexture = context.own("ground", Texture2D.empty(gl, GROUND_SAMPLES, GROUND_SAMPLES, Format.R32F,
+                Sampling.NEAREST_CLAMP));
     }
 
     @Override
@@ -207,17 +214,16 @@ public final class ParticleSystem implements EngineSystem {
         return new Vector3f(world.findResource(Wind.class).orElse(Wind.CALM).velocity()).mul((float) s.windShare());
     }
 
-    /** New state buffers holding {@code state}, in place of the old ones. */
+    /** New state buffers holding {@code state}, in place of the old ones, which are closed as they are replaced. */
     private void build(float[] state) {
-        closeBuffers();
         count = state.length / SnowMotion.FLOATS;
         FloatBuffer data = MemoryUtil.memAllocFloat(state.length).put(state).flip();
         try {
             for (int i = 0; i < 2; i++) {
-                states[i] = new GpuBuffer(gl, GL_ARRAY_BUFFER);
+                states[i] = owned.replace("state" + i, states[i], new GpuBuffer(gl, GL_ARRAY_BUFFER));
                 states[i].upload(data, GL_DYNAMIC_COPY);
-                updateFrom[i] = layout(states[i], 0);
-                drawFrom[i] = layout(states[i], 1);
+                updateFrom[i] = owned.replace("update" + i, updateFrom[i], layout(states[i], 0));
+                drawFrom[i] = owned.replace("draw" + i, drawFrom[i], layout(states[i], 1));
             }
         } finally {
             MemoryUtil.memFree(data);
@@ -261,35 +267,5 @@ public final class ParticleSystem implements EngineSystem {
     /** The ground patch under the cube, null before it first snowed. */
     GroundPatch ground() {
         return ground;
-    }
-
-    private void closeBuffers() {
-        for (int i = 0; i < 2; i++) {
-            for (AutoCloseable c : new AutoCloseable[] {updateFrom[i], drawFrom[i], states[i]}) {
-                close(c);
-            }
-            updateFrom[i] = null;
-            drawFrom[i] = null;
-            states[i] = null;
-        }
-        count = 0;
-    }
-
-    @Override
-    public void close() {
-        closeBuffers();
-        for (AutoCloseable c : new AutoCloseable[] {groundTexture, drawProgram, updateProgram}) {
-            close(c);
-        }
-    }
-
-    private static void close(AutoCloseable c) {
-        if (c != null) {
-            try {
-                c.close();
-            } catch (Exception e) {
-                throw new IllegalStateException(e);
-            }
-        }
     }
 }

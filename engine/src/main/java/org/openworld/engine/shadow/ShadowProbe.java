@@ -3,20 +3,20 @@ package org.openworld.engine.shadow;
 import static org.lwjgl.opengl.GL11C.*;
 import static org.lwjgl.opengl.GL30C.*;
 
-import java.nio.FloatBuffer;
 import org.joml.Vector3fc;
-import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Sun;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
-import org.openworld.engine.gl.ShaderLibrary;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -32,15 +32,15 @@ import org.openworld.engine.gl.Uniform;
  * for that reason. Pixels on a silhouette take a normal from two surfaces. With no {@link HeightField} in the world
  * the ground is taken as flat at sea level.
  */
-final class ShadowProbe implements AutoCloseable {
+final class ShadowProbe {
 
-    /** Four floats per texel, read back exactly: the visibility and a world point in metres. */
-    private static final Texture2D.Format RGBA32F = new Texture2D.Format(GL_RGBA32F, GL_RGBA, GL_FLOAT);
     /** Texture units: the copied depth, the previous frame's points. */
     private static final int UNIT_DEPTH = 0;
     private static final int UNIT_POINTS = 1;
 
     private final GlContext gl;
+    /** The system's owner, which closes the targets as they are re-made and everything at the end. */
+    private final Owned owned;
     private final Mesh fullScreen;
     private final ShaderProgram program;
     private final Uniform.Int revisit;
@@ -53,14 +53,14 @@ final class ShadowProbe implements AutoCloseable {
     /** This frame's visibility at the last frame's points. */
     private Framebuffer revisited;
     private boolean haveLast;
-    private FloatBuffer readBack;
     private float[] pixels;
     private float[] revisitedPixels;
 
-    ShadowProbe(GlContext gl, ShaderLibrary shaders) {
-        this.gl = gl;
-        fullScreen = Mesh.fullScreenTriangle(gl);
-        program = shaders.program("shadow/probe.vert", "shadow/probe.frag");
+    ShadowProbe(EngineContext context) {
+        this.gl = context.gl();
+        this.owned = context.owned();
+        fullScreen = context.own("probe.fullScreen", Mesh.fullScreenTriangle(gl));
+        program = context.own("probe", context.shaders().program("shadow/probe.vert", "shadow/probe.frag"));
         program.sampler("sceneDepth", UNIT_DEPTH);
         program.sampler("points", UNIT_POINTS);
         revisit = program.int1("revisit");
@@ -104,8 +104,7 @@ final class ShadowProbe implements AutoCloseable {
         fullScreen.draw(context.stats());
         glBindFramebuffer(GL_READ_FRAMEBUFFER, target.id());
         glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_FLOAT, readBack);
-        readBack.get(0, out);
+        glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_FLOAT, out);
     }
 
     private void count(RenderContext context, float[] lastPointsNow) {
@@ -132,46 +131,23 @@ final class ShadowProbe implements AutoCloseable {
         return casters.high() > Double.NEGATIVE_INFINITY ? casters.high() : Double.POSITIVE_INFINITY;
     }
 
-    /** (Re)makes the targets and the read-back buffer when the picture's size changed: not every frame. */
+    /** (Re)makes the targets and the read-back arrays when the picture's size changed: not every frame. */
     private void fit(int width, int height) {
         if (probed != null && probed.width() == width && probed.height() == height) {
             return;
         }
-        closeTargets();
-        depthCopy = new Framebuffer(gl, width, height, null, Texture2D.Format.DEPTH24_STENCIL8,
-                Texture2D.Sampling.NEAREST_CLAMP);
-        probed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
-        lastProbed = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
-        revisited = new Framebuffer(gl, width, height, RGBA32F, null, Texture2D.Sampling.NEAREST_CLAMP);
+        depthCopy = owned.replace("probe.depth", depthCopy,
+                new Framebuffer(gl, width, height, null, Format.DEPTH24_STENCIL8, Sampling.NEAREST_CLAMP));
+        probed = owned.replace("probe.points", probed, points(width, height));
+        lastProbed = owned.replace("probe.points", lastProbed, points(width, height));
+        revisited = owned.replace("probe.revisited", revisited, points(width, height));
         haveLast = false;
-        readBack = MemoryUtil.memAllocFloat(width * height * ShadowStatistics.CHANNELS);
         pixels = new float[width * height * ShadowStatistics.CHANNELS];
         revisitedPixels = new float[pixels.length];
     }
 
-    private void closeTargets() {
-        for (Framebuffer target : new Framebuffer[] {probed, lastProbed, revisited}) {
-            if (target != null) {
-                target.close();
-            }
-        }
-        probed = null;
-        lastProbed = null;
-        revisited = null;
-        if (depthCopy != null) {
-            depthCopy.close();
-            depthCopy = null;
-        }
-        if (readBack != null) {
-            MemoryUtil.memFree(readBack);
-            readBack = null;
-        }
-    }
-
-    @Override
-    public void close() {
-        closeTargets();
-        program.close();
-        fullScreen.close();
+    /** One RGBA32F texel per pixel: a visibility and a world point, read back exactly. */
+    private Framebuffer points(int width, int height) {
+        return new Framebuffer(gl, width, height, Format.RGBA32F, null, Sampling.NEAREST_CLAMP);
     }
 }

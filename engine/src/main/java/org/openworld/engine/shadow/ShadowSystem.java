@@ -13,6 +13,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
@@ -59,6 +60,8 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
     static final double MIN_SUN_SINE = Math.sin(Math.toRadians(1));
 
     private GlContext gl;
+    /** What this system owns, for the maps re-made when their size or number changes. */
+    private Owned owned;
     private DepthTextureArray maps;
     private final List<Framebuffer> layers = new ArrayList<>();
     private GpuBuffer block;
@@ -85,9 +88,10 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
     @Override
     public void init(EngineContext context) {
         gl = context.gl();
-        block = new GpuBuffer(gl, GL_UNIFORM_BUFFER);
+        owned = context.owned();
+        block = context.own("block", new GpuBuffer(gl, GL_UNIFORM_BUFFER));
         block.allocate(SunShadow.BLOCK_SIZE, GL_DYNAMIC_DRAW);
-        probe = new ShadowProbe(gl, context.shaders());
+        probe = new ShadowProbe(context);
         fitMaps(context.settings().get(ShadowSettings.class), context.world());
     }
 
@@ -96,10 +100,11 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         if (maps != null && maps.size() == s.resolution() && maps.layers() == s.maps()) {
             return;
         }
-        closeMaps();
-        maps = DepthTextureArray.of(gl, s.resolution(), s.maps());
+        layers.forEach(owned::drop);
+        layers.clear();
+        maps = owned.replace("maps", maps, DepthTextureArray.of(gl, s.resolution(), s.maps()));
         for (int i = 0; i < s.maps(); i++) {
-            layers.add(Framebuffer.onLayer(gl, maps, i));
+            layers.add(owned.own("map" + i, Framebuffer.onLayer(gl, maps, i)));
         }
         world.setResource(new SunShadow(maps, block));
     }
@@ -176,24 +181,9 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         }
     }
 
-    private void closeMaps() {
-        layers.forEach(Framebuffer::close);
-        layers.clear();
-        if (maps != null) {
-            maps.close();
-            maps = null;
-        }
-    }
-
+    /** Frees the block's staging memory; the GL objects were handed to {@code context.own}, the engine closes them. */
     @Override
     public void close() {
-        if (probe != null) {
-            probe.close();
-        }
-        closeMaps();
-        if (block != null) {
-            block.close();
-        }
         MemoryUtil.memFree(blockData);
     }
 }

@@ -26,8 +26,10 @@ import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.environment.Wind;
 import org.openworld.engine.gl.CubeMapTexture;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Texture3D;
@@ -119,7 +121,7 @@ public final class SkySystem implements EngineSystem {
         CloudSettings c = settings.get(CloudSettings.class);
         int seed = settings.get(EngineSettings.class).seed();
         cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), seed);
-        program = context.shaders().program("sky/sky.vert", "sky/sky.frag");
+        program = context.own("program", context.shaders().program("sky/sky.vert", "sky/sky.frag"));
         program.sampler("skyView", 0);
         program.sampler("cloudField", 1);
         cubeFace = program.int1("uCubeFace");
@@ -128,13 +130,13 @@ public final class SkySystem implements EngineSystem {
         sunDisc = program.int1("uSunDisc");
         cloudParams = program.vec4("cloudParams");
         cloudMotion = program.vec4("cloudMotion");
-        fullScreen = Mesh.fullScreenTriangle(gl);
-        skyView = Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Texture2D.Format.RGB16F,
-                Texture2D.Sampling.LINEAR_CLAMP);
-        air = Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT, AerialPerspective.DEPTH,
-                Texture2D.Format.RGBA16F, Texture3D.Sampling3D.LINEAR_CLAMP, null);
-        clouds = upload(gl, cloudField);
-        environment = CubeMapTexture.renderTarget(gl, ENVIRONMENT_SIZE);
+        fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
+        skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB16F,
+                Sampling.LINEAR_CLAMP));
+        air = context.own("aerialPerspective", Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT,
+                AerialPerspective.DEPTH, Format.RGBA16F, Sampling.LINEAR_CLAMP, null));
+        clouds = context.own("clouds", upload(gl, cloudField));
+        environment = context.own("environment", CubeMapTexture.renderTarget(gl, ENVIRONMENT_SIZE));
         context.world().setResource(new SkyMaps(air, environment));
         update(context.world(), 0);
     }
@@ -142,8 +144,8 @@ public final class SkySystem implements EngineSystem {
     private static Texture3D upload(GlContext gl, CloudField field) {
         FloatBuffer data = MemoryUtil.memAllocFloat(field.values().length).put(field.values()).flip();
         try {
-            return Texture3D.of(gl, field.resolution(), field.resolution(), field.frames(), Texture2D.Format.R16F,
-                    Texture3D.Sampling3D.LINEAR_REPEAT, data);
+            return Texture3D.of(gl, field.resolution(), field.resolution(), field.frames(), Format.R16F,
+                    Sampling.LINEAR_REPEAT, data);
         } finally {
             MemoryUtil.memFree(data);
         }
@@ -278,26 +280,9 @@ public final class SkySystem implements EngineSystem {
         }
     }
 
+    /** Stops the table worker; the GL objects were handed to {@code context.own} and the engine closes them. */
     @Override
     public void close() {
         worker.shutdownNow();
-        if (environment != null) {
-            environment.close();
-        }
-        if (clouds != null) {
-            clouds.close();
-        }
-        if (air != null) {
-            air.close();
-        }
-        if (skyView != null) {
-            skyView.close();
-        }
-        if (fullScreen != null) {
-            fullScreen.close();
-        }
-        if (program != null) {
-            program.close();
-        }
     }
 }

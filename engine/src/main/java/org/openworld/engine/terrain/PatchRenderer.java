@@ -6,6 +6,7 @@ import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuBuffer;
@@ -48,16 +49,21 @@ final class PatchRenderer implements AutoCloseable {
     private final int[] cursor;
     private int[] slotPattern = new int[0];
 
-    PatchRenderer(GlContext gl, PatchPatterns patterns) {
+    /**
+     * Makes the shared geometry, handed to the system's owner ({@code terrain.patches}, {@code terrain.patches.grid},
+     * ...); the renderer itself holds only the staging memory, which {@link #close()} frees.
+     */
+    PatchRenderer(EngineContext context, PatchPatterns patterns) {
+        GlContext gl = context.gl();
         this.patterns = patterns;
         this.runStart = new int[patterns.patternCount()];
         this.runLength = new int[patterns.patternCount()];
         this.cursor = new int[patterns.patternCount()];
-        vao = new VertexArray(gl);
+        vao = context.own("patches", new VertexArray(gl));
         vao.bind();
-        grid = new GpuBuffer(gl, GL_ARRAY_BUFFER);
-        elements = new GpuBuffer(gl, GL_ELEMENT_ARRAY_BUFFER);
-        instances = new GpuBuffer(gl, GL_ARRAY_BUFFER);
+        grid = context.own("patches.grid", new GpuBuffer(gl, GL_ARRAY_BUFFER));
+        elements = context.own("patches.elements", new GpuBuffer(gl, GL_ELEMENT_ARRAY_BUFFER));
+        instances = context.own("patches.instances", new GpuBuffer(gl, GL_ARRAY_BUFFER));
         uploadGrid(patterns.cells());
         IntBuffer indices = MemoryUtil.memAllocInt(patterns.indices().length).put(patterns.indices()).flip();
         try {
@@ -170,10 +176,6 @@ final class PatchRenderer implements AutoCloseable {
 
     @Override
     public void close() {
-        grid.close();
-        elements.close();
-        instances.close();
-        vao.close();
         if (staging != null) {
             MemoryUtil.memFree(staging);
             staging = null;

@@ -3,7 +3,10 @@ package org.openworld.engine.terrain;
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture2D;
 
 /**
@@ -21,7 +24,7 @@ import org.openworld.engine.gl.Texture2D;
  * Periodic maps repeat; imported ones clamp. Uploads go in strips of rows, so an 8192² map needs a staging buffer
  * of a few megabytes, not of the whole map.
  */
-final class TerrainMaps implements AutoCloseable {
+final class TerrainMaps {
 
     /** Passes of the (1 4 6 4 1)/16 kernel over the snow map; variances add, σ = √(passes · 1) texels. */
     static final int SNOW_BLUR_PASSES = 3;
@@ -32,40 +35,28 @@ final class TerrainMaps implements AutoCloseable {
     final Texture2D gradients;
     final Texture2D snow;
 
-    TerrainMaps(GlContext gl, HeightPyramid pyramid, SnowMap snowMap) {
+    /** Makes and fills the three maps, handed to the system's owner as {@code terrain.heights}, ... */
+    TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap) {
+        GlContext gl = context.gl();
         HeightMap base = pyramid.base();
-        Texture2D.Sampling wrap = base.periodic() ? Texture2D.Sampling.TRILINEAR_REPEAT : Texture2D.Sampling.TRILINEAR_CLAMP;
-        Texture2D h = null;
-        Texture2D g = null;
-        Texture2D s = null;
-        try {
-            h = Texture2D.withMips(gl, base.size(), base.size(), Texture2D.Format.R32F, Texture2D.Sampling.NEAREST_MIPMAP);
-            for (int k = 0; k < pyramid.levelCount(); k++) {
-                uploadHeights(h, k, pyramid.level(k));
-            }
-            g = Texture2D.withMips(gl, base.size(), base.size(), Texture2D.Format.RG16F, wrap);
-            uploadGradients(g, base);
-            g.generateMipmaps();
-            s = Texture2D.withMips(gl, snowMap.size(), snowMap.size(), Texture2D.Format.R8, wrap);
-            byte[] soft = blur(snowMap.coverage(), snowMap.size(), snowMap.periodic());
-            ByteBuffer coverage = MemoryUtil.memAlloc(soft.length).put(soft).flip();
-            try {
-                s.upload(0, 0, snowMap.size(), coverage);
-            } finally {
-                MemoryUtil.memFree(coverage);
-            }
-            s.generateMipmaps();
-        } catch (RuntimeException e) {
-            for (Texture2D t : new Texture2D[] {s, g, h}) {
-                if (t != null) {
-                    t.close();
-                }
-            }
-            throw e;
+        Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
+        heights = context.own("heights",
+                Texture2D.withMips(gl, base.size(), base.size(), Format.R32F, Sampling.NEAREST_MIPMAP));
+        for (int k = 0; k < pyramid.levelCount(); k++) {
+            uploadHeights(heights, k, pyramid.level(k));
         }
-        heights = h;
-        gradients = g;
-        snow = s;
+        gradients = context.own("gradients", Texture2D.withMips(gl, base.size(), base.size(), Format.RG16F, wrap));
+        uploadGradients(gradients, base);
+        gradients.generateMipmaps();
+        snow = context.own("snow", Texture2D.withMips(gl, snowMap.size(), snowMap.size(), Format.R8, wrap));
+        byte[] soft = blur(snowMap.coverage(), snowMap.size(), snowMap.periodic());
+        ByteBuffer coverage = MemoryUtil.memAlloc(soft.length).put(soft).flip();
+        try {
+            snow.upload(0, 0, snowMap.size(), coverage);
+        } finally {
+            MemoryUtil.memFree(coverage);
+        }
+        snow.generateMipmaps();
     }
 
     /** The coverage low-passed along rows and then columns, {@link #SNOW_BLUR_PASSES} times, wrapping or clamping. */
@@ -137,12 +128,5 @@ final class TerrainMaps implements AutoCloseable {
         } finally {
             MemoryUtil.memFree(strip);
         }
-    }
-
-    @Override
-    public void close() {
-        snow.close();
-        gradients.close();
-        heights.close();
     }
 }

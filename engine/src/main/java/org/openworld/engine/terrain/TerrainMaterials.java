@@ -1,9 +1,11 @@
 package org.openworld.engine.terrain;
 
 import java.util.List;
+import org.openworld.engine.core.Owned;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Labelled;
 import org.openworld.engine.gl.ShaderProgram;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.terrain.TerrainTextures.Material;
@@ -18,11 +20,12 @@ import org.openworld.engine.terrain.TerrainTextures.Material;
  * {@code materials.bind(u, settings, firstUnit)}, which takes texture units {@code firstUnit} to
  * {@code firstUnit + UNITS - 1}.
  */
-public final class TerrainMaterials implements AutoCloseable {
+public final class TerrainMaterials implements Labelled {
 
     /** Texture units taken from {@code firstUnit}: albedo array, detail array. */
     public static final int UNITS = 2;
 
+    private final Owned arrays = new Owned();
     private final TextureArray albedo;
     private final TextureArray detail;
 
@@ -35,13 +38,13 @@ public final class TerrainMaterials implements AutoCloseable {
     public TerrainMaterials(GlContext gl, TerrainTextures textures) {
         int n = textures.size();
         List<Material> layers = List.of(Material.values());
-        albedo = TextureArray.repeatingMipmapped(gl, n, n, TextureArray.SRGB8_ALPHA8,
-                layers.stream().map(textures::albedo).toList());
         try {
-            detail = TextureArray.repeatingMipmapped(gl, n, n, Texture2D.Format.RGBA8,
-                    layers.stream().map(textures::detail).toList());
+            albedo = arrays.own(TextureArray.repeatingMipmapped(gl, n, n, Format.SRGB8_ALPHA8,
+                    layers.stream().map(textures::albedo).toList()));
+            detail = arrays.own(TextureArray.repeatingMipmapped(gl, n, n, Format.RGBA8,
+                    layers.stream().map(textures::detail).toList()));
         } catch (RuntimeException e) {
-            albedo.close();
+            arrays.close();
             throw e;
         }
     }
@@ -72,10 +75,16 @@ public final class TerrainMaterials implements AutoCloseable {
         u.glossMap.set(settings.glossMap() ? 1 : 0);
     }
 
+    /** Names the arrays {@code name.albedo} and {@code name.detail}. */
+    @Override
+    public void label(String name) {
+        albedo.label(name + ".albedo");
+        detail.label(name + ".detail");
+    }
+
     @Override
     public void close() {
-        detail.close();
-        albedo.close();
+        arrays.close();
     }
 
     /** The resolved uniform handles of material.glsl in one program. */

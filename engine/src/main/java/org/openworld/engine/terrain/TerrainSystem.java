@@ -119,12 +119,12 @@ public final class TerrainSystem implements EngineSystem {
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
         // 3. the GPU side: maps, materials, the shared patch geometry and the program
-        maps = new TerrainMaps(context.gl(), data.pyramid(), data.snow());
-        materials = new TerrainMaterials(context.gl(), seed);
-        renderer = new PatchRenderer(context.gl(), patterns);
-        depthProgram = context.shaders().program("terrain/terrain.vert", "terrain/depth.frag");
+        maps = new TerrainMaps(context, data.pyramid(), data.snow());
+        materials = context.own("materials", new TerrainMaterials(context.gl(), seed));
+        renderer = context.own(new PatchRenderer(context, patterns));
+        depthProgram = context.own("depth", context.shaders().program("terrain/terrain.vert", "terrain/depth.frag"));
         setPatchUniforms(depthProgram, base, cells);
-        program = context.shaders().program("terrain/terrain.vert", "terrain/terrain.frag");
+        program = context.own("program", context.shaders().program("terrain/terrain.vert", "terrain/terrain.frag"));
         setPatchUniforms(program, base, cells);
         program.sampler("gradients", UNIT_GRADIENTS);
         program.sampler("snowMap", UNIT_SNOW);
@@ -242,18 +242,5 @@ public final class TerrainSystem implements EngineSystem {
     /** The generated or imported data, once initialised (tests and tools read the heights the terrain draws). */
     public TerrainData data() {
         return data;
-    }
-
-    @Override
-    public void close() {
-        for (AutoCloseable c : new AutoCloseable[] {program, depthProgram, renderer, materials, maps}) {
-            if (c != null) {
-                try {
-                    c.close();
-                } catch (Exception e) {
-                    throw new IllegalStateException(e);
-                }
-            }
-        }
     }
 }

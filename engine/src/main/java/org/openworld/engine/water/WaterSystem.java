@@ -11,6 +11,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
@@ -20,9 +21,11 @@ import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.WaterLevel;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
@@ -74,6 +77,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     private static final int UNIT_RIPPLES = 4;
 
     private GlContext gl;
+    /** What this system owns, for the targets and ripples re-made when the size or the wind changes. */
+    private Owned owned;
     private Mesh fullScreen;
     private ShaderProgram fresnelProgram;
     private ShaderProgram stencilProgram;
@@ -125,8 +130,9 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     @Override
     public void init(EngineContext context) {
         gl = context.gl();
-        fullScreen = Mesh.fullScreenTriangle(gl);
-        fresnelProgram = context.shaders().program("water/water.vert", "water/fresnel.frag");
+        owned = context.owned();
+        fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
+        fresnelProgram = context.own("fresnel", context.shaders().program("water/water.vert", "water/fresnel.frag"));
         fresnelProgram.sampler("reflection", UNIT_REFLECTION);
         fresnelProgram.sampler("refraction", UNIT_REFRACTION);
         fresnelProgram.sampler("depthCopy", UNIT_DEPTH);
@@ -136,11 +142,12 @@ public final class WaterSystem implements EngineSystem, PassOwner {
                 fresnelProgram.int1("uUnderwater"), fresnelProgram.vec3("uExtinction"), fresnelProgram.vec3("uBody"),
                 fresnelProgram.vec3("uInside"),
                 fresnelProgram.vec4("uRipple"), fresnelProgram.float1("uMicroSlope2"));
-        stencilProgram = context.shaders().program("water/water.vert", "water/stencil.frag");
+        stencilProgram = context.own("stencil", context.shaders().program("water/water.vert", "water/stencil.frag"));
         stencilProgram.sampler("reflection", UNIT_REFLECTION);
         stencilUniforms = new StencilUniforms(stencilProgram.float1("uLevel"), stencilProgram.int1("uStep"),
                 stencilProgram.float1("uAlpha"));
-        fresnelTable = Texture2D.empty(gl, FRESNEL_SIZE, 2, Texture2D.Format.R16F, Texture2D.Sampling.LINEAR_CLAMP);
+        fresnelTable = context.own("fresnelTable",
+                Texture2D.empty(gl, FRESNEL_SIZE, 2, Format.R16F, Sampling.LINEAR_CLAMP));
         FloatBuffer table = MemoryUtil.memAllocFloat(2 * FRESNEL_SIZE).put(Fresnel.table(FRESNEL_SIZE)).flip();
         try {
             fresnelTable.upload(0, 0, 2, table);
@@ -165,7 +172,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         }
         int width = s.reflection().of(viewer.target().width());
         int height = s.reflection().of(viewer.target().height());
-        reflection = fit(reflection, width, height, Texture2D.Format.DEPTH32F, Texture2D.Sampling.LINEAR_CLAMP);
+        reflection = fit("reflection", reflection, width, height, Format.DEPTH32F, Sampling.LINEAR_CLAMP);
         mirroredViewer = viewer.camera();
         // the paper's method draws the mirrored scene whole; the Fresnel method cuts it at the water
         return List.of(new PassView(MirrorCamera.of(viewer.camera(), (float) s.level(), s.method() == Method.FRESNEL),
@@ -220,8 +227,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     /** What lies behind the water, the scene so far: colour and depth, copied as they are. */
     private void copyBehind(Framebuffer scene) {
-        behind = fit(behind, scene.width(), scene.height(), Texture2D.Format.DEPTH24_STENCIL8,
-                Texture2D.Sampling.NEAREST_CLAMP);
+        behind = fit("behind", behind, scene.width(), scene.height(), Format.DEPTH24_STENCIL8,
+                Sampling.NEAREST_CLAMP);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, behind.id());
         glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, scene.width(), scene.height(),
@@ -304,43 +311,23 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         RippleField field = RippleField.synthesize(RIPPLE_SIZE, RIPPLE_FRAMES, RIPPLE_TILE, RIPPLE_PERIOD, s.wind(),
                 s.windDirection(), resolvedRms, 2017);
         rippleSlopeScale = (float) (SLOPE_RANGE * resolvedRms);
-        if (ripples != null) {
-            ripples.close();
-        }
-        ripples = TextureArray.repeatingMipmapped(gl, RIPPLE_SIZE, RIPPLE_SIZE, Texture2D.Format.RGBA8,
-                field.texels(rippleSlopeScale));
+        ripples = owned.replace("ripples", ripples, TextureArray.repeatingMipmapped(gl, RIPPLE_SIZE, RIPPLE_SIZE,
+                Format.RGBA8, field.texels(rippleSlopeScale)));
         rippleWind = s.wind();
         rippleDirection = s.windDirection();
     }
 
-    /** A colour + depth target of this size: {@code current} if it fits, else a new one. */
-    private Framebuffer fit(Framebuffer current, int width, int height, Texture2D.Format depth,
-                            Texture2D.Sampling sampling) {
+    /** A colour + depth target of this size: {@code current} if it fits, else a new one in its place. */
+    private Framebuffer fit(String role, Framebuffer current, int width, int height, Format depth,
+                            Sampling sampling) {
         if (current != null && current.width() == width && current.height() == height) {
             return current;
         }
-        if (current != null) {
-            current.close();
-        }
-        return new Framebuffer(gl, width, height, Texture2D.Format.RGBA8, depth, sampling);
+        return owned.replace(role, current, new Framebuffer(gl, width, height, Format.RGBA8, depth, sampling));
     }
 
     /** The reflection pass's target, null before the first reflection (tools and tests read it back). */
     public Framebuffer reflectionTarget() {
         return reflection;
-    }
-
-    @Override
-    public void close() {
-        for (AutoCloseable c : new AutoCloseable[] {reflection, behind, ripples, fresnelTable, stencilProgram,
-                fresnelProgram, fullScreen}) {
-            if (c != null) {
-                try {
-                    c.close();
-                } catch (Exception e) {
-                    throw new IllegalStateException(e);
-                }
-            }
-        }
     }
 }

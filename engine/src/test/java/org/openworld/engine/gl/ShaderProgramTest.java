@@ -97,7 +97,7 @@ class ShaderProgramTest {
 
     /** Draws the program over a small target and returns the centre pixel's RGBA. */
     private static int[] draw(ShaderProgram program, Uniform.Vec4 scale, float s) {
-        try (Framebuffer target = new Framebuffer(GL.context(), 8, 8, Texture2D.Format.RGBA8, null, Texture2D.Sampling.NEAREST_CLAMP);
+        try (Framebuffer target = new Framebuffer(GL.context(), 8, 8, Format.RGBA8, null, Sampling.NEAREST_CLAMP);
              Mesh triangle = GlTestSupport.fullScreenTriangle(GL.context())) {
             target.bind();
             glClearColor(0, 0, 0, 0);

@@ -50,8 +50,8 @@ class Texture3DTest {
     private static int[][] read(Texture3D texture, float s, float t, float r) {
         ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.classpath());
         try (ShaderProgram program = library.program("cloudtest/fullscreen.vert", "cloudtest/volume.frag");
-             Framebuffer target = new Framebuffer(GL.context(), W, H, Texture2D.Format.RGBA8, null,
-                     Texture2D.Sampling.NEAREST_CLAMP);
+             Framebuffer target = new Framebuffer(GL.context(), W, H, Format.RGBA8, null,
+                     Sampling.NEAREST_CLAMP);
              Mesh triangle = GlTestSupport.fullScreenTriangle(GL.context())) {
             target.bind();
             glClearColor(0, 0, 0, 0);
@@ -84,10 +84,10 @@ class Texture3DTest {
         return (int) Math.round(255 * v);
     }
 
-    private static Texture3D create(Texture3D.Sampling3D sampling) {
+    private static Texture3D create(Sampling sampling) {
         FloatBuffer data = volume(0);
         try {
-            return Texture3D.of(GL.context(), W, H, D, Texture2D.Format.R16F, sampling, data);
+            return Texture3D.of(GL.context(), W, H, D, Format.R16F, sampling, data);
         } finally {
             MemoryUtil.memFree(data);
         }
@@ -95,7 +95,7 @@ class Texture3DTest {
 
     @Test
     void texelCentresReturnTheUploadedValuesAndSlicesBlendBetween() {
-        try (Texture3D t = create(Texture3D.Sampling3D.LINEAR_REPEAT)) {
+        try (Texture3D t = create(Sampling.LINEAR_REPEAT)) {
             assertEquals(W, t.width());
             assertEquals(H, t.height());
             assertEquals(D, t.depth());
@@ -107,7 +107,7 @@ class Texture3DTest {
 
     @Test
     void repeatWrapsEveryAxis() {
-        try (Texture3D t = create(Texture3D.Sampling3D.LINEAR_REPEAT)) {
+        try (Texture3D t = create(Sampling.LINEAR_REPEAT)) {
             // whole tiles away in s and t, and one period later in r: the same texels
             assertTexels(read(t, 1, -2, 1.25f), (x, y) -> bytes(value(x, y, 0)), "shifted by whole tiles");
             // r = 0 lies halfway between slice 0's centre (0.25) and slice 1's wrapped one (−0.25)
@@ -117,7 +117,7 @@ class Texture3DTest {
 
     @Test
     void clampStopsAtTheEdgeTexels() {
-        try (Texture3D t = create(Texture3D.Sampling3D.LINEAR_CLAMP)) {
+        try (Texture3D t = create(Sampling.LINEAR_CLAMP)) {
             assertTexels(read(t, 0, 0, 0), (x, y) -> bytes(value(x, y, 0)), "below the first slice");
             // pushed a whole tile right: every column reads the last one
             assertTexels(read(t, 1, 0, 0.25f), (x, y) -> bytes(value(W - 1, y, 0)), "right of the last column");
@@ -126,8 +126,8 @@ class Texture3DTest {
 
     @Test
     void uploadReplacesTheVolume() {
-        try (Texture3D t = Texture3D.of(GL.context(), W, H, D, Texture2D.Format.R16F,
-                Texture3D.Sampling3D.LINEAR_REPEAT, null)) {
+        try (Texture3D t = Texture3D.of(GL.context(), W, H, D, Format.R16F,
+                Sampling.LINEAR_REPEAT, null)) {
             FloatBuffer data = volume(0.01f);
             try {
                 t.upload(data);
@@ -143,7 +143,7 @@ class Texture3DTest {
         FloatBuffer data = MemoryUtil.memAllocFloat(W * H);
         try {
             var e = assertThrows(IllegalArgumentException.class, () -> Texture3D.of(GL.context(), W, H, D,
-                    Texture2D.Format.R16F, Texture3D.Sampling3D.LINEAR_REPEAT, data));
+                    Format.R16F, Sampling.LINEAR_REPEAT, data));
             assertEquals("a 8x4x2 volume takes 64 floats, got 32", e.getMessage());
         } finally {
             MemoryUtil.memFree(data);
@@ -153,7 +153,7 @@ class Texture3DTest {
     @Test
     void eachVolumeIsOneTextureUntilClosed() {
         int before = GL.context().objects().live();
-        Texture3D t = create(Texture3D.Sampling3D.LINEAR_CLAMP);
+        Texture3D t = create(Sampling.LINEAR_CLAMP);
         assertEquals(before + 1, GL.context().objects().live());
         t.close();
         t.close(); // closing twice deletes once

@@ -100,7 +100,7 @@ class ShadowProbeTest {
 
         @Override
         public void init(EngineContext context) {
-            probe = new ShadowProbe(context.gl(), context.shaders());
+            probe = new ShadowProbe(context);
         }
 
         @Override
@@ -116,13 +116,6 @@ class ShadowProbeTest {
                         + glGetInteger(GL_READ_FRAMEBUFFER_BINDING) + " (scene " + target + "), viewport "
                         + viewport[2] + "x" + viewport[3] + ", depth test " + glIsEnabled(GL_DEPTH_TEST)
                         + ", depth writes " + glGetBoolean(GL_DEPTH_WRITEMASK));
-            }
-        }
-
-        @Override
-        public void close() {
-            if (probe != null) {
-                probe.close();
             }
         }
     }

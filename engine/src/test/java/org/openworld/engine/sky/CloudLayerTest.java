@@ -21,14 +21,15 @@ import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.ShaderSources;
-import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Texture3D;
 import org.openworld.engine.sky.CloudSettings.Mapping;
 
@@ -62,7 +63,7 @@ class CloudLayerTest {
     @BeforeAll
     static void render() throws IOException {
         gl = GlContext.headless();
-        target = new Framebuffer(gl, WIDTH, HEIGHT, Texture2D.Format.RGBA8, null, Texture2D.Sampling.NEAREST_CLAMP);
+        target = new Framebuffer(gl, WIDTH, HEIGHT, Format.RGBA8, null, Sampling.NEAREST_CLAMP);
         triangle = GlTestSupport.fullScreenTriangle(gl);
         program = new ShaderLibrary(gl, ShaderSources.classpath()).program("cloudtest/fullscreen.vert",
                 "cloudtest/layer.frag");
@@ -70,8 +71,8 @@ class CloudLayerTest {
         cloudField = CloudField.generate(d.resolution(), d.frames(), d.beta(), SEED);
         FloatBuffer values = MemoryUtil.memAllocFloat(cloudField.values().length).put(cloudField.values()).flip();
         try {
-            field = Texture3D.of(gl, d.resolution(), d.resolution(), d.frames(), Texture2D.Format.R16F,
-                    Texture3D.Sampling3D.LINEAR_REPEAT, values);
+            field = Texture3D.of(gl, d.resolution(), d.resolution(), d.frames(), Format.R16F,
+                    Sampling.LINEAR_REPEAT, values);
         } finally {
             MemoryUtil.memFree(values);
         }
