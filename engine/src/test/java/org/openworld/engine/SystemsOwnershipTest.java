@@ -37,6 +37,7 @@ import org.openworld.engine.water.WaterSystem;
  * behind (also after an init that fails half-way, and after targets are re-made while running), and what the
  * systems own carries labels named like their timer spans.
  */
+@GlTest
 class SystemsOwnershipTest {
 
     @RegisterExtension

@@ -1,5 +1,6 @@
 package org.openworld.engine.gl;
 
+import org.openworld.engine.GlTest;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengl.GL11C.GL_TEXTURE_2D;
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.Test;
  * {@code --dev}'s context: a debug context whose driver messages go to stderr. Its own context, made and closed
  * here, so it does not share {@code HeadlessGl}'s.
  */
+@GlTest
 class DebugContextTest {
 
     @Test

@@ -1,5 +1,6 @@
 package org.openworld.engine.gl;
 
+import org.openworld.engine.GlTest;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengl.GL11C.GL_TEXTURE;
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.HeadlessGl;
 
 /** KHR_debug on real GL (Mesa llvmpipe has it): driver messages as lines, object labels, groups around spans. */
+@GlTest
 class GlDebugTest {
 
     @RegisterExtension
