@@ -239,18 +239,6 @@ class RippleFieldTest {
     }
 
     @Test
-    void quantisedDispersionIsAWholeNumberOfCyclesPerPeriodJustBelowTheDeepWaterOne() {
-        double omega0 = 2 * Math.PI / PERIOD;
-        for (double k = 0.05; k < 200; k *= 1.37) {
-            double cycles = RippleField.cyclesPerPeriod(k, PERIOD);
-            assertEquals(Math.rint(cycles), cycles, "whole cycles per period at k = " + k);
-            double omega = cycles * omega0;
-            double exact = Math.sqrt(RippleField.GRAVITY * k);
-            assertTrue(omega <= exact && omega > exact - omega0, "ω " + omega + " vs √(gk) " + exact);
-        }
-    }
-
-    @Test
     void texelsDecodeToTheSlopesAndHeights() {
         int size = 32;
         RippleField f = field(size, 2, 10, 7);
