@@ -60,16 +60,13 @@ final class MaterialEncoding {
      */
     byte[] detail(MaterialFields f) {
         float[] h = f.height();
-        double mean = 0;
-        for (float v : h) {
-            mean += v;
+        double[] relief = new double[h.length];
+        for (int i = 0; i < h.length; i++) {
+            relief[i] = h[i];
         }
-        mean /= h.length;
-        double var = 0;
-        for (float v : h) {
-            var += (v - mean) * (v - mean);
-        }
-        double spread = 5 * Math.sqrt(var / h.length);
+        double[] moments = PeriodicNoise.meanAndDeviation(relief);
+        double mean = moments[0];
+        double spread = 5 * moments[1];
         byte[] out = new byte[n * n * 4];
         for (int y = 0; y < n; y++) {
             for (int x = 0; x < n; x++) {

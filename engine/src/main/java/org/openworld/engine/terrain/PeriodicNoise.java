@@ -97,6 +97,16 @@ final class PeriodicNoise {
 
     /** Shifts and scales {@code v} in place to mean 0 and variance 1; returns it. */
     private static double[] standardise(double[] v) {
+        double[] moments = meanAndDeviation(v);
+        double scale = 1 / moments[1];
+        for (int i = 0; i < v.length; i++) {
+            v[i] = (v[i] - moments[0]) * scale;
+        }
+        return v;
+    }
+
+    /** {mean, standard deviation} of {@code v}, in two passes (the second around the mean, so no cancellation). */
+    static double[] meanAndDeviation(double[] v) {
         double mean = 0;
         for (double x : v) {
             mean += x;
@@ -106,10 +116,6 @@ final class PeriodicNoise {
         for (double x : v) {
             var += (x - mean) * (x - mean);
         }
-        double scale = 1 / Math.sqrt(var / v.length);
-        for (int i = 0; i < v.length; i++) {
-            v[i] = (v[i] - mean) * scale;
-        }
-        return v;
+        return new double[] {mean, Math.sqrt(var / v.length)};
     }
 }
