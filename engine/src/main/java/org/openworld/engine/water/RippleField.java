@@ -141,7 +141,8 @@ final class RippleField {
      *                             (0 towards −Z, 90 towards +X), any finite angle
      * @param rmsSlope             target √(mean of sx² + sz²) over all texels and frames, &gt; 0; meant to be
      *                             Cox and Munk's √(0.003 + 0.00512 V), possibly scaled
-     * @param seed                 seed of the random stream that draws the wave amplitudes
+     * @param seed                 the world seed ({@code engine.seed}): the wave amplitudes' random stream derives
+     *                             from it, so one seed gives one field and another seed another
      * @throws IllegalArgumentException naming the argument and its valid range when one is out of range, or
      *                                  naming windSpeed when the wind raises no wave the tile resolves
      */

@@ -16,8 +16,9 @@ import java.util.Random;
  * Waves running against the wind (k̂·ŵ &lt; 0) keep {@link #AGAINST_WIND_POWER} of Phillips' power. k = 0 and the
  * Nyquist row and column carry nothing. Phillips' constant A is left out: {@link RippleField} rescales to a slope.
  *
- * <p><b>Determinism.</b> The amplitudes come from one {@link Random} seeded with the caller's seed, two Gaussian
- * numbers per lattice index, rows then columns: the same seed and arguments give the same waves on every machine.
+ * <p><b>Determinism.</b> The amplitudes come from one {@link Random} seeded with the world seed mixed with this
+ * class's own stream constant ({@code STREAM}), two Gaussian numbers per lattice index, rows then columns: the same
+ * seed and arguments give the same waves on every machine, another seed other waves.
  *
  * <p><b>Cost.</b> size² exponentials at construction; {@link #at} takes size² sines and cosines.
  *
@@ -40,6 +41,13 @@ final class RippleSpectrum {
 
     /** ℓ / L: waves shorter than this fraction of the largest wind wave L are suppressed (Tessendorf's choice). */
     static final double SMALL_WAVE_FRACTION = 1e-3;
+
+    /**
+     * XOR-ed into the world seed to give the ripples' stream its own seed (a {@link Random}, no other user of the
+     * world seed draws from one). 2016, so that the default world seed 1 draws {@code new Random(2017)}, the waves
+     * the water had before it followed the world seed: every picture in {@code docs/} stays what its command makes.
+     */
+    private static final long STREAM = 2016;
 
     private final int size;
     private final double tileMetres;
@@ -100,7 +108,7 @@ final class RippleSpectrum {
         double largestWave = windSpeed * windSpeed / GRAVITY; // L, metres
         double smallestWave = SMALL_WAVE_FRACTION * largestWave; // ℓ, metres
         double dk = 2 * Math.PI / tileMetres;
-        Random random = new Random(seed);
+        Random random = new Random(seed ^ STREAM);
         double[] h0 = new double[2 * size * size];
         for (int r = 0; r < size; r++) {
             int n = frequency(r, size);
