@@ -10,8 +10,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                    frame rate, so a camera path replays identically
  * @param maxSteps    updates allowed per rendered frame before the simulation lets real time slip (a slow frame
  *                    must not start a spiral of ever more catch-up updates)
- * @param seed        the world seed: every random choice (terrain, snow, clouds, particles) derives from it, so one
- *                    seed and one set of settings give the same world on every machine ({@code --seed} sets it)
+ * @param seed        the world seed: every random choice (terrain, snow, clouds, ripples, particles) derives from
+ *                    it, so one seed and one set of settings give the same world on every machine ({@code --seed}
+ *                    sets it)
  */
 public record EngineSettings(
         @Setting(doc = "fixed simulation step", unit = "s", min = 0.001, max = 0.1) double step,

@@ -5,9 +5,10 @@ import org.visnow.jlargearrays.ConcurrencyUtils;
 
 /**
  * JTransforms' thread count, pinned while a system's FFT runs. JTransforms picks different code paths by that count,
- * which is one global number, so every user of the FFT (the terrain's spectral synthesis, the sky's clouds, the
- * water's ripples) runs its transforms through {@link #pinned}: with {@link #COUNT} threads, under one lock, the
- * count restored afterwards. A seed then gives the same field bit for bit on any number of cores.
+ * which is one global number, so every user of the FFT (the terrain's spectral synthesis, its material textures'
+ * noise and its power spectrum, the sky's clouds, the water's ripples) runs its transforms through {@link #pinned}:
+ * with {@link #COUNT} threads, under one lock, the count restored afterwards. A seed then gives the same field bit
+ * for bit on any number of cores.
  */
 public final class FftThreads {
 

@@ -3,6 +3,7 @@ package org.openworld.engine.terrain;
 import java.util.ArrayList;
 import java.util.List;
 import org.jtransforms.fft.FloatFFT_2D;
+import org.openworld.engine.core.FftThreads;
 
 /**
  * The radially averaged power spectrum of a height map: |F(k)|² of its 2D DFT ({@link FloatFFT_2D#realForward}),
@@ -12,7 +13,8 @@ import org.jtransforms.fft.FloatFFT_2D;
  *
  * <p>Ring k holds the frequencies whose radius |(kx, kz)| rounds to k (cycles per tile), k = 1 .. size/2 − 1; rings
  * beyond size/2 − 1 are cut by the square grid and left out. The transform works on a copy of the heights, 4 · size²
- * bytes.
+ * bytes, with JTransforms' thread count pinned by {@link FftThreads} like every FFT in the engine, so a map gives the
+ * same spectrum on any machine.
  */
 public final class PowerSpectrum {
 
@@ -44,7 +46,7 @@ public final class PowerSpectrum {
     public static PowerSpectrum of(HeightMap map) {
         int n = map.size();
         float[] a = map.heights().clone();
-        new FloatFFT_2D(n, n).realForward(a);
+        FftThreads.pinned(() -> new FloatFFT_2D(n, n).realForward(a));
         int rings = n / 2;
         double[] sum = new double[rings];
         long[] count = new long[rings];

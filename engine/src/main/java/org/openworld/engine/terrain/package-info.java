@@ -42,8 +42,8 @@
  * bands are {@code materials.snow-mode=altitude-bands}. The slope comes from a gradient map of the finest level, so
  * coarse patches still shade with fine slopes; the tangent frame {@code T = (1, ∂h/∂x, 0)}, {@code B = (0, ∂h/∂z, 1)}
  * carries normal and gloss maps (figure 3) and is shown by {@code terrain-debug.colouring=tangent-space} (figure 4).
- * All textures are synthesised by {@link org.openworld.engine.terrain.TerrainTextures}; two scales are blended to
- * hide the tiling the paper complains of in section 6.
+ * All textures are synthesised by {@link org.openworld.engine.terrain.TerrainTextures} (periodic noise, a recipe per
+ * material, the packing into RGBA8); two scales are blended to hide the tiling the paper complains of in section 6.
  *
  * <p><b>Limits.</b> The whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
  * and again on the GPU); levels switch without geomorphing, so a patch can pop when it changes level; a generated

@@ -7,6 +7,7 @@ import static org.lwjgl.opengl.GL30C.*;
 import java.nio.FloatBuffer;
 import java.util.List;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
@@ -87,6 +88,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     private float rippleSlopeScale;
     private double rippleWind = Double.NaN;
     private double rippleDirection = Double.NaN;
+    /** The world seed ({@code engine.seed}, fixed at start): the ripples' waves derive from it. */
+    private int seed;
     private Framebuffer reflection;
     private Framebuffer behind;
     /**
@@ -154,6 +157,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         } finally {
             MemoryUtil.memFree(table);
         }
+        seed = context.settings().get(EngineSettings.class).seed();
         updateRipples(context.settings().get(WaterSettings.class));
         context.world().setResource(new WaterLevel(context.settings().get(WaterSettings.class).level()));
     }
@@ -309,7 +313,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         }
         double resolvedRms = s.rmsSlope() * Math.sqrt(RESOLVED_VARIANCE);
         RippleField field = RippleField.synthesize(RIPPLE_SIZE, RIPPLE_FRAMES, RIPPLE_TILE, RIPPLE_PERIOD, s.wind(),
-                s.windDirection(), resolvedRms, 2017);
+                s.windDirection(), resolvedRms, seed);
         rippleSlopeScale = (float) (SLOPE_RANGE * resolvedRms);
         ripples = owned.replace("ripples", ripples, TextureArray.repeatingMipmapped(gl, RIPPLE_SIZE, RIPPLE_SIZE,
                 Format.RGBA8, field.texels(rippleSlopeScale)));

@@ -28,10 +28,10 @@
  *       reflectance of the rippled surface ({@link org.openworld.engine.water.Fresnel}, tabulated, total internal
  *       reflection included), {@code T = exp(−σ d)} over the path {@code d} through the water to the ground and up
  *       from its depth, {@code σ} and the body colour from {@link org.openworld.engine.water.WaterOptics}.</li>
- *   <li>Ripples: a looping FFT ocean (Tessendorf 2001) of slopes ({@link org.openworld.engine.water.RippleField}),
- *       sampled at two unrelated scales; their slope variance is Cox and Munk's for the wind, the part the texture
- *       cannot resolve spreads the sun's glitter (a Beckmann lobe). Ripples bend where the reflection and the
- *       refraction are looked up.</li>
+ *   <li>Ripples: a looping FFT ocean (Tessendorf 2001) of slopes ({@link org.openworld.engine.water.RippleField},
+ *       its waves drawn from {@code engine.seed}), sampled at two unrelated scales; their slope variance is Cox and
+ *       Munk's for the wind, the part the texture cannot resolve spreads the sun's glitter (a Beckmann lobe).
+ *       Ripples bend where the reflection and the refraction are looked up.</li>
  *   <li>Where the bent reflected ray leaves the reflection picture, the sky's cube map answers.</li>
  *   <li>Under the water the reflection pass rests; every pixel is seen through {@code exp(−σ d)} of water glowing
  *       with its in-water colour, and the surface from below shows the world above through Snell's window and

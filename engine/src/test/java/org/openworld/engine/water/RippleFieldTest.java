@@ -107,28 +107,34 @@ class RippleFieldTest {
         assertEquals(0, sumZ / n, 1e-4 * target, "mean ∂h/∂z");
     }
 
-    /** Slope variance along and across the wind direction: the wind must pick the axis, with x east, z south. */
+    /**
+     * Slope variance along and across the wind direction: the wind must pick the axis, with x east, z south. Phillips'
+     * spreading gives 3× along the wind on average; one 8 m tile holds few long waves, so a single draw ranges from
+     * about 2× to 6×, and the variances are pooled over four seeds.
+     */
     @ParameterizedTest
     @ValueSource(doubles = {0, 90, 225, 300})
     void slopesVaryMoreAlongTheWindThanAcrossIt(double windDegrees) {
         int size = 64;
         int frames = 4;
-        RippleField f = field(size, frames, windDegrees, 4);
         double windX = Math.sin(Math.toRadians(windDegrees));
         double windZ = -Math.cos(Math.toRadians(windDegrees));
         double along = 0;
         double across = 0;
         double varX = 0;
         double varZ = 0;
-        for (int frame = 0; frame < frames; frame++) {
-            for (int z = 0; z < size; z++) {
-                for (int x = 0; x < size; x++) {
-                    double sx = f.slopeX(frame, x, z);
-                    double sz = f.slopeZ(frame, x, z);
-                    along += Math.pow(sx * windX + sz * windZ, 2);
-                    across += Math.pow(-sx * windZ + sz * windX, 2);
-                    varX += sx * sx;
-                    varZ += sz * sz;
+        for (long seed = 4; seed < 8; seed++) {
+            RippleField f = field(size, frames, windDegrees, seed);
+            for (int frame = 0; frame < frames; frame++) {
+                for (int z = 0; z < size; z++) {
+                    for (int x = 0; x < size; x++) {
+                        double sx = f.slopeX(frame, x, z);
+                        double sz = f.slopeZ(frame, x, z);
+                        along += Math.pow(sx * windX + sz * windZ, 2);
+                        across += Math.pow(-sx * windZ + sz * windX, 2);
+                        varX += sx * sx;
+                        varZ += sz * sz;
+                    }
                 }
             }
         }
@@ -235,18 +241,6 @@ class RippleFieldTest {
                 assertEquals(sx, frame.slopeX(x, z), 1e-4 * RMS, "∂h/∂x at (" + x + ", " + z + ")");
                 assertEquals(sz, frame.slopeZ(x, z), 1e-4 * RMS, "∂h/∂z at (" + x + ", " + z + ")");
             }
-        }
-    }
-
-    @Test
-    void quantisedDispersionIsAWholeNumberOfCyclesPerPeriodJustBelowTheDeepWaterOne() {
-        double omega0 = 2 * Math.PI / PERIOD;
-        for (double k = 0.05; k < 200; k *= 1.37) {
-            double cycles = RippleField.cyclesPerPeriod(k, PERIOD);
-            assertEquals(Math.rint(cycles), cycles, "whole cycles per period at k = " + k);
-            double omega = cycles * omega0;
-            double exact = Math.sqrt(RippleField.GRAVITY * k);
-            assertTrue(omega <= exact && omega > exact - omega0, "ω " + omega + " vs √(gk) " + exact);
         }
     }
 

@@ -206,6 +206,39 @@ class WaterRenderTest {
         }
     }
 
+    /**
+     * The ripples derive from the world seed: the same {@code engine.seed} draws the same water pixel for pixel,
+     * another seed other ripples. Without the water the two seeds give the same picture (no terrain drawn, no
+     * clouds), so the difference is the ripples'.
+     */
+    @Test
+    void theRipplesFollowTheWorldSeed() {
+        Consumer<Engine> noTerrain = e -> e.setEnabled("terrain", false);
+        Consumer<Engine> noWater = e -> {
+            e.setEnabled("terrain", false);
+            e.setEnabled("water", false);
+        };
+        Image one = render(settings(bank, "water.wind=5", "engine.seed=1"), OVER_THE_BANK, noTerrain).picture();
+        Image same = render(settings(bank, "water.wind=5", "engine.seed=1"), OVER_THE_BANK, noTerrain).picture();
+        Image other = render(settings(bank, "water.wind=5", "engine.seed=2"), OVER_THE_BANK, noTerrain).picture();
+        Image dryOne = render(settings(bank, "engine.seed=1"), OVER_THE_BANK, noWater).picture();
+        Image dryOther = render(settings(bank, "engine.seed=2"), OVER_THE_BANK, noWater).picture();
+        double sameSeed = 0;
+        double otherSeed = 0;
+        double dry = 0;
+        int texels = W * (H / 2);
+        for (int y = H / 2; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                sameSeed += difference(one, x, y, same, x, y) / texels;
+                otherSeed += difference(one, x, y, other, x, y) / texels;
+                dry += difference(dryOne, x, y, dryOther, x, y) / texels;
+            }
+        }
+        assertEquals(0, sameSeed, "the same seed, the same water");
+        assertEquals(0, dry, "without the water the seeds draw the same picture");
+        assertTrue(otherSeed > 1, "another seed, other ripples: mean difference " + otherSeed + " levels");
+    }
+
     @Test
     void theShallowBankShowsThroughTheFresnelWater() {
         // looking steeply down through the water: over the bank (2 m deep) and over the bed (20 m deep)
