@@ -283,7 +283,7 @@ public final class Engine implements AutoCloseable {
             for (int v = 0; v < views.size(); v++) {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
-                frameUniforms.write(frameValues(view));
+                frameUniforms.write(frameValues(view, viewer));
                 bindShared(shadowDrawn);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 view.target().bind();
@@ -359,14 +359,15 @@ public final class Engine implements AutoCloseable {
         }
     }
 
-    private FrameUniforms.Values frameValues(PassView view) {
+    /** The block for one view of a pass; {@code viewer} is the MAIN camera's, given to every pass as the viewer. */
+    private FrameUniforms.Values frameValues(PassView view, PassView viewer) {
         ViewCamera camera = view.camera();
         Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
                 exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
-                view.target().height());
+                view.target().height(), viewer.camera().position());
     }
 
     /**
