@@ -20,7 +20,9 @@ import java.util.stream.Collectors;
  * <ul>
  *   <li>{@code after("x")}: x before the declaring system;</li>
  *   <li>data: a system that writes a type runs before every system that only reads it;</li>
- *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one.</li>
+ *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one;</li>
+ *   <li>{@code overOpaque()}: every opaque system (neither transparent nor over the opaque) that draws in one of its
+ *       passes before the one drawn over them (the water, which sees through to them).</li>
  * </ul>
  * Two systems that write the same type must be ordered by {@code after} (directly or through other
  * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
@@ -63,9 +65,15 @@ public final class SystemOrder {
                 Set<Pass> shared = EnumSet.noneOf(Pass.class);
                 shared.addAll(t.passes());
                 shared.retainAll(o.passes());
-                if (t.isTransparent() && !o.isTransparent() && !shared.isEmpty()) {
+                if (shared.isEmpty()) {
+                    continue;
+                }
+                if (t.isTransparent() && !o.isTransparent()) {
                     graph.edge(o.name(), t.name(), t.name() + " is transparent, blended over what " + o.name()
                             + " draws in " + shared.iterator().next().label());
+                } else if (t.isOverOpaque() && !o.isOverOpaque() && !o.isTransparent()) {
+                    graph.edge(o.name(), t.name(), t.name() + " is drawn over the opaque picture, which it reads: "
+                            + "over what " + o.name() + " draws in " + shared.iterator().next().label());
                 }
             }
         }

@@ -22,6 +22,7 @@ public final class SystemSpec {
     private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
     private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
     private boolean transparent;
+    private boolean overOpaque;
     private boolean offByDefault;
     private boolean updatesOnGpu;
 
@@ -79,6 +80,17 @@ public final class SystemSpec {
     }
 
     /**
+     * It draws over the finished opaque picture of its passes and reads it (the water copies the scene's colour and
+     * depth to show what lies behind and under it): it follows every system that draws opaque in one of its passes
+     * (neither {@link #transparent()} nor this), without naming them, so a new opaque system is behind the water
+     * whatever it is called. Transparent systems still follow it.
+     */
+    public SystemSpec overOpaque() {
+        overOpaque = true;
+        return this;
+    }
+
+    /**
      * Its update issues GPU work (a transform-feedback step): the engine times each update on the GPU as a span
      * labelled {@code update.name}, beside the passes' spans.
      */
@@ -119,6 +131,10 @@ public final class SystemSpec {
 
     public boolean isTransparent() {
         return transparent;
+    }
+
+    public boolean isOverOpaque() {
+        return overOpaque;
     }
 
     public boolean isOffByDefault() {

@@ -93,8 +93,9 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     @Override
     public SystemSpec spec() {
-        // after the terrain and (through the sky's maps) the sky: the water is drawn over what lies behind it
-        return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class).after("terrain")
+        // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
+        // copies to show what lies behind the water
+        return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class).overOpaque()
                 .draws(Pass.MAIN);
     }
 
