@@ -163,7 +163,8 @@ public final class TreeSystem implements EngineSystem {
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         glEnable(GL_CULL_FACE);
-        // 2. the tiles the culling left visible to this pass's camera, neighbours drawn as one run
+        // 2. the tiles the culling left visible to this pass's camera (all of them without culling); the tiles'
+        //    trees follow one another in the records, so neighbouring visible tiles are drawn as one run
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.nodeCount() == layout.tiles() + 1 && v.copies() == 1).orElse(null);
         Containment root = visibility == null ? Containment.INSIDE : visibility.root(0);
@@ -171,16 +172,14 @@ public final class TreeSystem implements EngineSystem {
         int runFirst = 0;
         int runCount = 0;
         for (int t = 0; t < layout.tiles(); t++) {
-            boolean seen = visibility == null ? root != Containment.OUTSIDE
-                    : visibility.of(0, t + 1, root) != Containment.OUTSIDE;
-            if (seen && runCount > 0 && layout.tileFirst()[t] == runFirst + runCount) {
+            if (visibility == null || visibility.of(0, t + 1, root) != Containment.OUTSIDE) {
                 runCount += layout.tileCount()[t];
-            } else {
-                tree.drawInstances(runFirst, runCount, context.stats());
-                drawn += runCount;
-                runFirst = layout.tileFirst()[t];
-                runCount = seen ? layout.tileCount()[t] : 0;
+                continue;
             }
+            tree.drawInstances(runFirst, runCount, context.stats());
+            drawn += runCount;
+            runFirst = layout.tileFirst()[t] + layout.tileCount()[t];
+            runCount = 0;
         }
         tree.drawInstances(runFirst, runCount, context.stats());
         drawn += runCount;

@@ -149,6 +149,14 @@ class TreeRenderTest {
             }
             assertTrue(seen >= 10, "trees in view: " + seen);
             assertTrue(changed >= 0.9 * seen, "trees drawn where placed: " + changed + " of " + seen);
+            // placed again only once the viewer has moved a quarter of the 200 m view distance
+            int placements = trees.placements();
+            engine.world().resource(Camera.class).setPose(new CameraPose(-60, 40, 45, 270, -12, 60));
+            engine.update();
+            assertEquals(placements, trees.placements(), "placed again after a 45 m move");
+            engine.world().resource(Camera.class).setPose(new CameraPose(-60, 40, 55, 270, -12, 60));
+            engine.update();
+            assertEquals(placements + 1, trees.placements(), "not placed again after a 55 m move");
         }
         assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
     }
