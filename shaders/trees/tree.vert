@@ -21,8 +21,8 @@ out vec3 wsNormal;
 flat out float vPart;
 flat out float vTint;
 
-const float WIDTH_LOW = 0.85;   // the narrowest tree's width, times the shape's (1 : 4.7 outline)
-const float WIDTH_SPREAD = 0.3; // ... to the widest, 1.15 times (1 : 3.5)
+const float WIDTH_LOW = 0.85;   // the narrowest tree's width, times the shape's: its lowest cone 0.43 heights across
+const float WIDTH_SPREAD = 0.3; // ... to the widest, 1.15 times: 0.58 heights across
 
 void main() {
     float shrink = 1.0 - smoothstep(uFade.x, uFade.y, distance(footHeight.xyz, viewerPos()));

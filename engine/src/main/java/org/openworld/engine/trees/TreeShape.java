@@ -23,7 +23,7 @@ final class TreeShape {
     static final float TRUNK_TOP = 0.3f;
     /**
      * The cones, bottom up: base height, tip height and base radius, shares of the tree's height. They overlap, as a
-     * spruce's whorls do, and narrow upwards to a slender 1 : 4 outline.
+     * spruce's whorls do, and narrow upwards: the tree is half as wide as it is tall at its widest.
      */
     static final float[][] CONES = {{0.12f, 0.62f, 0.25f}, {0.36f, 0.84f, 0.19f}, {0.58f, 1.0f, 0.12f}};
 
