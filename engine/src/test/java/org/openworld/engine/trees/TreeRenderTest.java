@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -19,6 +16,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineSystem;
@@ -57,14 +55,8 @@ class TreeRenderTest {
      */
     @BeforeAll
     static void writeWorld() throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                boolean corner = z == SAMPLES - 1 && (x == 0 || x == SAMPLES - 1);
-                bytes.putFloat(corner ? (x == 0 ? 0f : 1f) : x < SAMPLES / 2 ? 0.3f : 0.1f);
-            }
-        }
-        shore = Files.write(dir.resolve("shore.raw"), bytes.array());
+        shore = ImportedWorld.write(dir.resolve("shore.raw"), SAMPLES, (x, z) -> z == SAMPLES - 1 && x == 0 ? 0f
+                : z == SAMPLES - 1 && x == SAMPLES - 1 ? 1f : x < SAMPLES / 2 ? 0.3f : 0.1f);
     }
 
     static List<String> settings(List<String> more) {
