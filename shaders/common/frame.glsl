@@ -1,5 +1,14 @@
 // The per-pass frame block (engine: org.openworld.engine.gl.FrameUniforms). Every member is a vec4 or mat4, so
 // the std140 layout is simply their order. Conventions: shaders/common/conventions.glsl.
+//
+// Two eyes, not to be mixed up:
+//   cameraPos()  the PASS camera's eye: the viewer's in MAIN and OVERLAY, the mirrored eye under the water in
+//                REFLECTION, and in SHADOW the sun's camera (a point on the light box's sunward face). Use it for
+//                what depends on the picture being drawn: the view ray, the air in front of a surface, a highlight.
+//   viewerPos()  the VIEWER's eye (the MAIN camera's), the same in every pass. Use it for what must agree between
+//                the passes: a level of detail, a fade or a cut-off with distance. Faded by cameraPos(), an object
+//                would leave the shadow maps (the sun's camera is far away) and the reflection at other distances
+//                than it leaves the picture.
 #include "common/conventions.glsl"
 
 layout(std140) uniform FrameBlock {
@@ -7,16 +16,18 @@ layout(std140) uniform FrameBlock {
     mat4 projection;      // view -> clip
     mat4 viewProjection;  // world -> clip
     mat4 invViewProjection;
-    vec4 cameraPosNear;   // xyz: eye, world space (m); w: near plane (m)
+    vec4 cameraPosNear;   // xyz: the pass camera's eye, world space (m); w: near plane (m)
     vec4 sunDirFar;       // xyz: unit vector towards the sun, world space; w: far plane (m)
     vec4 sunColor;        // rgb: direct sunlight at the eye, display units (1 = the sun above the atmosphere)
     vec4 ambientColor;    // rgb: sky light on an upward surface, display units
     vec4 exposure;        // x: scene (display units, 1 = white under the sun above the air) -> tone mapper input; yzw: 0
     vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
+    vec4 viewerPos;       // xyz: the viewer's eye, world space (m), the same in every pass; w: 0
 } frame;
 
 vec3 cameraPos() { return frame.cameraPosNear.xyz; }
+vec3 viewerPos() { return frame.viewerPos.xyz; }
 vec3 sunDir() { return frame.sunDirFar.xyz; }
 
 // The world-space direction of the view ray through a point of the screen (ndc.xy in -1..1), unnormalised. Built

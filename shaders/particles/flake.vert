@@ -1,6 +1,6 @@
 #version 330 core
 // A snowflake as a billboard (paper section 4; engine: org.openworld.engine.particles.ParticleSystem): one instance
-// per flake, four vertices (a triangle strip) spanning a square that faces the camera. The flake's light is worked
+// per flake, a square of two triangles (four corners) that faces the camera. The flake's light is worked
 // out here, once per corner, and handed on flat: all four corners share the flake's centre.
 //
 // Size and brightness follow distance: a flake is drawn at its true size until that is under uFlake.y pixels of
@@ -11,7 +11,8 @@
 #include "common/fog.glsl"
 #include "common/shadow.glsl"
 
-layout(location = 0) in vec3 position; // the flake's centre, world space (m): per instance
+layout(location = 0) in vec3 position;   // the flake's centre, world space (m): per instance
+layout(location = 1) in vec2 unitCorner; // the square's corner, 0 or 1 on each axis: per vertex
 
 uniform vec4 uFlake; // x: radius (m); y: smallest drawn radius (px); z: the cube's side (m); w: albedo
 
@@ -19,7 +20,7 @@ out vec2 corner;     // -1..1 across the billboard
 flat out vec4 flake; // rgb: display colour; a: opacity at the centre
 
 void main() {
-    corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
+    corner = unitCorner * 2.0 - 1.0;
     float halfSide = 0.5 * uFlake.z;
     vec3 vsCentre = (frame.view * vec4(position, 1.0)).xyz;
     float depth = -vsCentre.z;

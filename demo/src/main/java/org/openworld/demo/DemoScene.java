@@ -10,6 +10,7 @@ import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.shadow.ShadowSystem;
 import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.trees.TreeSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
@@ -33,6 +34,7 @@ final class DemoScene {
                 new CullingSystem(),
                 new TerrainSystem(line -> System.err.println(line)),
                 new ShadowSystem(),
+                new TreeSystem(),
                 new WaterSystem(),
                 new MinimapSystem(),
                 new ParticleSystem());

@@ -241,7 +241,7 @@ public final class Engine implements AutoCloseable {
             for (int v = 0; v < views.size(); v++) {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
-                shared.bind(world, view, clock.simTime(), frame, shadowDrawn);
+                shared.bind(world, view, viewer, clock.simTime(), frame, shadowDrawn);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 view.target().bind();
                 glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);

@@ -43,12 +43,13 @@ final class SharedBindings {
     }
 
     /**
-     * Writes the frame block for one view of a pass and binds the shared textures and blocks: the sky's, or the
-     * stand-ins; the sun's shadow once this frame's maps are drawn, else none (no system casts shadows, it is switched
-     * off or the sun is down; and a map being drawn must not be bound for reading).
+     * Writes the frame block for one view of a pass (its camera, and the viewer's eye as {@code viewerPos}) and binds
+     * the shared textures and blocks: the sky's, or the stand-ins; the sun's shadow once this frame's maps are drawn,
+     * else none (no system casts shadows, it is switched off or the sun is down; and a map being drawn must not be
+     * bound for reading).
      */
-    void bind(World world, PassView view, double simTime, long frame, boolean shadowDrawn) {
-        frameUniforms.write(frameValues(world, view, simTime, frame));
+    void bind(World world, PassView view, PassView viewer, double simTime, long frame, boolean shadowDrawn) {
+        frameUniforms.write(frameValues(world, view, viewer, simTime, frame));
         SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
         maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
         maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
@@ -57,14 +58,16 @@ final class SharedBindings {
         shadow.block().bindBase(SharedBlock.SHADOW.binding());
     }
 
-    private static FrameUniforms.Values frameValues(World world, PassView view, double simTime, long frame) {
+    /** The block for one view of a pass; {@code viewer} is the MAIN camera's, given to every pass as the viewer. */
+    private static FrameUniforms.Values frameValues(World world, PassView view, PassView viewer, double simTime,
+                                                    long frame) {
         ViewCamera camera = view.camera();
         Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
                 exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
-                view.target().height());
+                view.target().height(), viewer.camera().position());
     }
 
     /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */

@@ -123,6 +123,7 @@ class SystemImportsTest {
         for (EngineSystem system : systems) {
             declared.addAll(system.spec().reads());
             declared.addAll(system.spec().writes());
+            declared.addAll(system.spec().published());
         }
         return declared;
     }

@@ -19,8 +19,11 @@ import java.util.stream.Collectors;
  * <p>Edges, each "runs before":
  * <ul>
  *   <li>{@code after("x")}: x before the declaring system;</li>
- *   <li>data: a system that writes a type runs before every system that only reads it;</li>
- *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one.</li>
+ *   <li>data: a system that writes a type runs before every system that only reads it (a published type,
+ *       {@code publishes()}, orders nothing);</li>
+ *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one;</li>
+ *   <li>{@code overOpaque()}: every opaque system (neither transparent nor over the opaque) that draws in one of its
+ *       passes before the one drawn over them (the water, which sees through to them).</li>
  * </ul>
  * Two systems that write the same type must be ordered by {@code after} (directly or through other
  * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
@@ -63,9 +66,15 @@ public final class SystemOrder {
                 Set<Pass> shared = EnumSet.noneOf(Pass.class);
                 shared.addAll(t.passes());
                 shared.retainAll(o.passes());
-                if (t.isTransparent() && !o.isTransparent() && !shared.isEmpty()) {
+                if (shared.isEmpty()) {
+                    continue;
+                }
+                if (t.isTransparent() && !o.isTransparent()) {
                     graph.edge(o.name(), t.name(), t.name() + " is transparent, blended over what " + o.name()
                             + " draws in " + shared.iterator().next().label());
+                } else if (t.isOverOpaque() && !o.isOverOpaque() && !o.isTransparent()) {
+                    graph.edge(o.name(), t.name(), t.name() + " is drawn over the opaque picture, which it reads: "
+                            + "over what " + o.name() + " draws in " + shared.iterator().next().label());
                 }
             }
         }
@@ -118,6 +127,9 @@ public final class SystemOrder {
                 s.append("; prepares ").append(spec.prepared().stream().map(Pass::label).collect(Collectors.joining(",")));
             }
             s.append("; writes ").append(simpleNames(spec.writes()));
+            if (!spec.published().isEmpty()) {
+                s.append("; publishes ").append(simpleNames(spec.published()));
+            }
             s.append("; reads ").append(simpleNames(spec.reads()));
             s.append('\n');
             for (String reason : reasons.getOrDefault(spec.name(), List.of())) {

@@ -24,10 +24,12 @@ public final class SystemSpec {
     private final String name;
     private final Set<Class<?>> reads = new LinkedHashSet<>();
     private final Set<Class<?>> writes = new LinkedHashSet<>();
+    private final Set<Class<?>> published = new LinkedHashSet<>();
     private final Set<String> after = new LinkedHashSet<>();
     private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
     private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
     private boolean transparent;
+    private boolean overOpaque;
     private boolean offByDefault;
     private boolean updatesOnGpu;
 
@@ -51,6 +53,18 @@ public final class SystemSpec {
     /** Resources or components this system writes; two writers of one type must be ordered with {@link #after}. */
     public SystemSpec writes(Class<?>... types) {
         writes.addAll(List.of(types));
+        return this;
+    }
+
+    /**
+     * Resources this system puts in the world when it starts and renews only when a setting changes (the water's
+     * level): the world's layout rather than a frame's data. They order nothing: any system may read them at any point
+     * of the frame, one running before the publisher seeing a change a step late. A type written in the frame must be
+     * declared with {@link #writes} instead, which puts its readers after the writer; a published one keeps a reader
+     * free to go before the publisher (the trees, opaque, before the water that draws over them).
+     */
+    public SystemSpec publishes(Class<?>... types) {
+        published.addAll(List.of(types));
         return this;
     }
 
@@ -85,6 +99,17 @@ public final class SystemSpec {
     }
 
     /**
+     * It draws over the finished opaque picture of its passes and reads it (the water copies the scene's colour and
+     * depth to show what lies behind and under it): it follows every system that draws opaque in one of its passes
+     * (neither {@link #transparent()} nor this), without naming them, so a new opaque system is behind the water
+     * whatever it is called. Transparent systems still follow it.
+     */
+    public SystemSpec overOpaque() {
+        overOpaque = true;
+        return this;
+    }
+
+    /**
      * Its update issues GPU work (a transform-feedback step): the engine times each update on the GPU as a span
      * labelled {@code update.name}, beside the passes' spans.
      */
@@ -114,6 +139,11 @@ public final class SystemSpec {
         return writes;
     }
 
+    /** The resources this system publishes: see {@link #publishes}. */
+    public Set<Class<?>> published() {
+        return published;
+    }
+
     public Set<String> after() {
         return after;
     }
@@ -125,6 +155,10 @@ public final class SystemSpec {
 
     public boolean isTransparent() {
         return transparent;
+    }
+
+    public boolean isOverOpaque() {
+        return overOpaque;
     }
 
     public boolean isOffByDefault() {

@@ -13,19 +13,29 @@ import org.lwjgl.system.MemoryUtil;
  * bound at {@link SharedBlock#FRAME}'s point, rewritten before each pass. The Java field order here and the GLSL
  * block must match; std140 makes that simple because every member is a vec4 or a mat4 (16-byte aligned, no padding
  * rules to remember).
+ *
+ * <p>Two positions: {@code cameraPos} is the pass camera's eye (in SHADOW the sun's camera, in REFLECTION the
+ * mirrored eye), {@code viewerPos} the viewer's (the MAIN camera's) in every pass. Whatever must agree between the
+ * passes (a fade or a level of detail by distance) follows the viewer; what belongs to the picture being drawn (the
+ * view ray, the air in front of a surface) follows the pass camera.
  */
 public final class FrameUniforms implements Labelled {
 
     private static final int MAT4 = 64;
     private static final int VEC4 = 16;
-    /** 4 matrices and 7 vectors, bytes. */
-    static final int SIZE = 4 * MAT4 + 7 * VEC4;
+    /** 4 matrices and 8 vectors, bytes. */
+    static final int SIZE = 4 * MAT4 + 8 * VEC4;
 
-    /** Everything the block holds, gathered by the engine for one pass. */
+    /**
+     * Everything the block holds, gathered by the engine for one pass.
+     *
+     * @param cameraPos the pass camera's eye (the sun's camera in SHADOW, the mirrored eye in REFLECTION)
+     * @param viewerPos the viewer's eye, the MAIN camera's, whatever the pass
+     */
     public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
                          Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure,
                          double simTime, double timeOfDayHours, long frame,
-                         int width, int height) {
+                         int width, int height, Vector3fc viewerPos) {
     }
 
     private final GpuBuffer buffer;
@@ -52,7 +62,8 @@ public final class FrameUniforms implements Labelled {
         o = vec4(o, v.ambient().x(), v.ambient().y(), v.ambient().z(), 0);
         o = vec4(o, v.exposure(), 0, 0, 0);
         o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
-        vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
+        o = vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
+        vec4(o, v.viewerPos().x(), v.viewerPos().y(), v.viewerPos().z(), 0);
         buffer.update(data);
         buffer.bindBase(SharedBlock.FRAME.binding());
     }

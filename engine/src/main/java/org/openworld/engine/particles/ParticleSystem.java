@@ -8,8 +8,6 @@ import static org.lwjgl.opengl.GL15C.glGetBufferSubData;
 import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
 import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
 import static org.lwjgl.opengl.GL30C.*;
-import static org.lwjgl.opengl.GL31C.glDrawArraysInstanced;
-import static org.lwjgl.opengl.GL33C.glVertexAttribDivisor;
 
 import java.nio.FloatBuffer;
 import java.util.List;
@@ -29,6 +27,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Wind;
 import org.openworld.engine.gl.Format;
+import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.Sampling;
@@ -46,7 +45,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * <p>Two buffers hold the flakes' state ({@link SnowMotion#FLOATS} floats each) and take turns: each update step
  * reads one and writes the other. They are built, and the flakes spread through the air, when it first snows, and
  * again only when {@code particles.count} changes. The ground under the cube is a {@link GroundPatch}, sampled again
- * when the eye nears its edge. The flakes are drawn last in {@link Pass#MAIN}, blended over everything else.
+ * when the eye nears its edge. The flakes are drawn last in {@link Pass#MAIN}, blended over everything else: one
+ * square {@link Mesh}, instanced over the current state buffer ({@link Mesh#instances}, the position of each record).
  */
 public final class ParticleSystem implements EngineSystem {
 
@@ -65,6 +65,8 @@ public final class ParticleSystem implements EngineSystem {
     private static final double CUT = 0.25;
     private static final int POSITION = 0;
     private static final int VELOCITY = 1;
+    /** The square's corner, 0..1 on each axis, in the draw program (whose location 1 is free: no velocity there). */
+    private static final int CORNER = 1;
 
     private GlContext gl;
     /** What this system owns, for the state buffers re-made when the flake count changes. */
@@ -73,10 +75,11 @@ public final class ParticleSystem implements EngineSystem {
     private ShaderProgram drawProgram;
     private UpdateUniforms updateUniforms;
     private Uniform.Vec4 flakeUniform;
-    /** The two state buffers and, for each, a vertex array to update from and one to draw from. */
+    /** The two state buffers and, for each, a vertex array to update from. */
     private final GpuBuffer[] states = new GpuBuffer[2];
     private final VertexArray[] updateFrom = new VertexArray[2];
-    private final VertexArray[] drawFrom = new VertexArray[2];
+    /** One flake's square, drawn once per flake of the current state buffer. */
+    private Mesh square;
     private int current;
     private int count;
     private int builds;
@@ -115,6 +118,8 @@ public final class ParticleSystem implements EngineSystem {
                 updateProgram.vec4("uVolume"), updateProgram.int1("uStepKey"), updateProgram.vec4("uGround"));
         drawProgram = context.own("draw", context.shaders().program("particles/flake.vert", "particles/flake.frag"));
         flakeUniform = drawProgram.vec4("uFlake");
+        square = context.own("square", new Mesh(gl, new float[] {0, 0, 1, 0, 0, 1, 1, 1}, new int[] {0, 1, 2, 2, 1, 3},
+                new Mesh.Attribute(CORNER, 2)));
         groundTexture = context.own("ground", Texture2D.empty(gl, GROUND_SAMPLES, GROUND_SAMPLES, Format.R32F,
                 Sampling.NEAREST_CLAMP));
     }
@@ -159,9 +164,8 @@ public final class ParticleSystem implements EngineSystem {
         glDepthMask(false);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        drawFrom[current].bind();
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
-        context.stats().add(1, 2L * count);
+        square.instances(states[current], SnowMotion.FLOATS, new Mesh.Attribute(POSITION, 3));
+        square.drawInstances(0, count, context.stats());
         glDisable(GL_BLEND);
         glDepthMask(true);
         world.resource(Counters.class).put("particles.count", count);
@@ -222,8 +226,7 @@ public final class ParticleSystem implements EngineSystem {
             for (int i = 0; i < 2; i++) {
                 states[i] = owned.replace("state" + i, states[i], new GpuBuffer(gl, GL_ARRAY_BUFFER));
                 states[i].upload(data, GL_DYNAMIC_COPY);
-                updateFrom[i] = owned.replace("update" + i, updateFrom[i], layout(states[i], 0));
-                drawFrom[i] = owned.replace("draw" + i, drawFrom[i], layout(states[i], 1));
+                updateFrom[i] = owned.replace("update" + i, updateFrom[i], layout(states[i]));
             }
         } finally {
             MemoryUtil.memFree(data);
@@ -232,19 +235,16 @@ public final class ParticleSystem implements EngineSystem {
         builds++;
     }
 
-    /** A vertex array reading flakes from {@code buffer}: one a vertex (divisor 0, the update) or an instance (1). */
-    private VertexArray layout(GpuBuffer buffer, int divisor) {
+    /** A vertex array reading the flakes from {@code buffer} one a vertex, for the update step. */
+    private VertexArray layout(GpuBuffer buffer) {
         VertexArray vao = new VertexArray(gl);
         vao.bind();
         buffer.bind();
         int stride = SnowMotion.FLOATS * Float.BYTES;
         glEnableVertexAttribArray(POSITION);
         glVertexAttribPointer(POSITION, 3, GL_FLOAT, false, stride, 0);
-        glVertexAttribDivisor(POSITION, divisor);
-        if (divisor == 0) {
-            glEnableVertexAttribArray(VELOCITY);
-            glVertexAttribPointer(VELOCITY, 3, GL_FLOAT, false, stride, 3L * Float.BYTES);
-        }
+        glEnableVertexAttribArray(VELOCITY);
+        glVertexAttribPointer(VELOCITY, 3, GL_FLOAT, false, stride, 3L * Float.BYTES);
         glBindVertexArray(0);
         return vao;
     }

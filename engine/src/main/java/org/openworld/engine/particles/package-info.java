@@ -23,8 +23,8 @@
  * cube's top. A fresh fall is spread through the cube's air when it starts to snow, when the count changes (new
  * buffers, once) and when the eye jumps.
  *
- * <p><b>Drawing</b> ({@code shaders/particles/flake.vert}, {@code flake.frag}): one instance per flake, four vertices
- * of a triangle strip spanning a camera-facing square. The fragment shader keeps the disc within the square, its
+ * <p><b>Drawing</b> ({@code shaders/particles/flake.vert}, {@code flake.frag}): one instance per flake of a square
+ * {@code Mesh} (four corners, two triangles) facing the camera, one {@code Mesh.drawInstances} call for them all. The fragment shader keeps the disc within the square, its
  * opacity falling off over the outer 60% of the radius. A flake narrower than a pixel is drawn a pixel wide with its
  * opacity times (true radius / drawn radius)², the light it would cover; flakes fade out towards the cube's
  * inscribed sphere, so none pops in as it wraps. Lit as a thin translucent plate at a random angle: albedo ·

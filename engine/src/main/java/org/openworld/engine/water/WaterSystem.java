@@ -45,8 +45,9 @@ import org.openworld.engine.water.WaterSettings.Method;
  * water over the whole screen, one ray–plane intersection per pixel. The paper's stencil method sets its stencil
  * rule in {@link #beginPass}, before the terrain and the sky draw in MAIN.
  *
- * <p>It publishes the plane's height as the world's {@link WaterLevel}, at init and in every update, so a change of
- * {@code water.level} is seen by the systems that read it (the minimap) in the same step. Switched off, the water is
+ * <p>It publishes the plane's height as the world's {@link WaterLevel} ({@code SystemSpec.publishes}: at init, and
+ * renewed in every update), so a change of {@code water.level} is seen by the systems after it in the same step (the
+ * minimap) and by those before it (the trees) one step later. Switched off, the water is
  * not drawn but the level stays in the world as last written: the lake is still there for the map, as the terrain's
  * height field stays when the terrain is switched off.
  */
@@ -115,9 +116,11 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     @Override
     public SystemSpec spec() {
-        // after the terrain and (through the sky's maps) the sky: the water is drawn over what lies behind it
+        // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
+        // copies to show what lies behind the water. The level is published, not written in the frame: the trees,
+        // opaque and so before the water, read it too.
         return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class)
-                .writes(WaterLevel.class).after("terrain").draws(Pass.MAIN);
+                .publishes(WaterLevel.class).overOpaque().draws(Pass.MAIN);
     }
 
     @Override

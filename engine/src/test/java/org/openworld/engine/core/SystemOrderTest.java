@@ -91,6 +91,28 @@ class SystemOrderTest {
     }
 
     @Test
+    void aSystemOverTheOpaquePictureFollowsEveryOpaqueOneOfItsPassesAndPrecedesTheTransparentOnes() {
+        // Alphabetically "trees" and "zz-rocks" would be split around "water": both are opaque and must go before it.
+        List<Fake> systems = List.of(
+                system(SystemSpec.named("water").overOpaque().draws(Pass.MAIN)),
+                system(SystemSpec.named("zz-rocks").draws(Pass.MAIN, Pass.SHADOW)),
+                system(SystemSpec.named("trees").draws(Pass.MAIN, Pass.SHADOW, Pass.REFLECTION)),
+                system(SystemSpec.named("flakes").transparent().draws(Pass.MAIN)),
+                system(SystemSpec.named("zz-shadow").draws(Pass.SHADOW)));
+
+        SystemOrder order = SystemOrder.resolve(systems);
+
+        List<String> names = names(order);
+        assertTrue(names.indexOf("trees") < names.indexOf("water") && names.indexOf("zz-rocks") < names.indexOf("water"),
+                names.toString());
+        assertTrue(names.indexOf("flakes") > names.indexOf("water"), names.toString());
+        assertTrue(names.indexOf("water") < names.indexOf("zz-shadow"), "no edge from a system of another pass: "
+                + names);
+        assertTrue(order.describe().contains("water is drawn over the opaque picture, which it reads: over what "
+                + "zz-rocks draws in main"), order.describe());
+    }
+
+    @Test
     void cycleThroughAfterNamesItsSystemsAndReasons() {
         List<Fake> systems = List.of(
                 system(SystemSpec.named("water").after("sky")),

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
 import static org.lwjgl.opengl.GL11C.glDisable;
 
+import java.util.List;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
@@ -21,9 +22,12 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassOwner;
+import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
+import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
@@ -135,6 +139,96 @@ class FrameUniformsTest {
         float ndcY = expectedNdc.y * 0.5f + 0.5f;
         assertColumn(image, 7, ndcX, ndcY, ndcX, ndcY);
         assertColumn(image, 8, expectedNdc.z * 0.5f + 0.5f, 1, 0, 1);
+        assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
+    }
+
+    /**
+     * Owns a pass and gives it one camera at a fixed eye, far from the viewer's, with its own small target; draws
+     * nothing itself.
+     */
+    static final class EyeOwner implements EngineSystem, PassOwner {
+        final Pass owned;
+        final Vector3f eye;
+        Framebuffer target;
+
+        EyeOwner(Pass owned, Vector3f eye) {
+            this.owned = owned;
+            this.eye = eye;
+        }
+
+        @Override
+        public SystemSpec spec() {
+            return SystemSpec.named("owner-" + owned.label()).draws(Pass.OVERLAY);
+        }
+
+        @Override
+        public void init(EngineContext context) {
+            target = context.own(new Framebuffer(context.gl(), 16, 4, Format.RGBA8, Format.DEPTH32F,
+                    Sampling.NEAREST_CLAMP));
+        }
+
+        @Override
+        public Pass ownedPass() {
+            return owned;
+        }
+
+        @Override
+        public List<PassView> passViews(World world, PassView viewer) {
+            ViewCamera c = viewer.camera();
+            return List.of(new PassView(new ViewCamera(c.view(), c.projection(), eye, c.near(), c.far()), target));
+        }
+
+        @Override
+        public void render(Pass pass, RenderContext context) {
+        }
+    }
+
+    /** Draws the two eyes (shaders/test/frame/eyes.frag) in the shadow and the reflection pass. */
+    static final class EyesProbe implements EngineSystem {
+        private ShaderProgram program;
+        private Mesh triangle;
+
+        @Override
+        public SystemSpec spec() {
+            return SystemSpec.named("eyes").draws(Pass.SHADOW, Pass.REFLECTION);
+        }
+
+        @Override
+        public void init(EngineContext context) {
+            program = context.own(context.shaders().program("test/fullscreen.vert", "test/frame/eyes.frag"));
+            triangle = context.own(GlTestSupport.fullScreenTriangle(context.gl()));
+        }
+
+        @Override
+        public void render(Pass pass, RenderContext context) {
+            glDisable(GL_DEPTH_TEST);
+            program.use();
+            triangle.draw(context.stats());
+        }
+    }
+
+    @Test
+    void inTheShadowAndReflectionPassesViewerPosIsTheViewersEyeAndCameraPosThePassCameras() {
+        CameraPose pose = new CameraPose(120, 250, 730, 30, -10, 60);
+        Vector3f sunEye = new Vector3f(900, 800, 100);
+        Vector3f mirrorEye = new Vector3f(120, 40, 730);
+        EyeOwner shadow = new EyeOwner(Pass.SHADOW, sunEye);
+        EyeOwner mirror = new EyeOwner(Pass.REFLECTION, mirrorEye);
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, shadow, mirror, new EyesProbe())) {
+            engine.world().resource(Camera.class).setPose(pose);
+            engine.render();
+            for (EyeOwner owner : List.of(shadow, mirror)) {
+                Image image = owner.target.read();
+                String pass = owner.owned.label();
+                Vector3f[] expected = {new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z()), owner.eye};
+                for (int half = 0; half < 2; half++) {
+                    for (int c = 0; c < 3; c++) {
+                        assertEquals(expected[half].get(c) / 1000 * 255, image.channel(4 + 8 * half, 2, c), TOLERANCE,
+                                pass + (half == 0 ? " viewerPos" : " cameraPos") + ", component " + "xyz".charAt(c));
+                    }
+                }
+            }
+        }
         assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
     }
 }
