@@ -1,5 +1,6 @@
 package org.openworld.engine.gl;
 
+import org.openworld.engine.GlTest;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.lwjgl.opengl.GL11C.*;
@@ -17,6 +18,7 @@ import org.openworld.engine.HeadlessGl;
  * each record a cell's offset plus a float the layout skips, over a row of {@link #CELLS} cells. Exactly the cells
  * of the drawn records are painted, and the draw counts as one call of {@code triangles × instances}.
  */
+@GlTest
 class MeshInstancingTest {
 
     @RegisterExtension

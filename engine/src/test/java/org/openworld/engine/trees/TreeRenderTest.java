@@ -1,5 +1,6 @@
 package org.openworld.engine.trees;
 
+import org.openworld.engine.GlTest;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -34,6 +35,7 @@ import org.openworld.engine.water.WaterSystem;
  * The trees on real GL, over an imported world built for the purpose: flat land 10 m above the water west of x = 0,
  * a lake bed 10 m under it to the east. Trees 12 m tall, 10 a hectare, drawn within 200 m of the viewer.
  */
+@GlTest
 class TreeRenderTest {
 
     @RegisterExtension

@@ -1,6 +1,7 @@
 package org.openworld.engine.water;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -31,7 +32,9 @@ class WaterLevelTest {
     }
 
     @Test
-    void theLevelIsDeclaredAsWrittenSoItsReadersFollowTheWater() {
-        assertTrue(new WaterSystem().spec().writes().contains(WaterLevel.class));
+    void theLevelIsPublishedSoAnOpaqueReaderCanGoBeforeTheWater() {
+        assertTrue(new WaterSystem().spec().published().contains(WaterLevel.class));
+        assertFalse(new WaterSystem().spec().writes().contains(WaterLevel.class), "a written level would put every "
+                + "reader after the water, and an opaque reader must draw before it: a cycle");
     }
 }
