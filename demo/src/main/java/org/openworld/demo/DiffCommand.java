@@ -17,7 +17,8 @@ import picocli.CommandLine.Parameters;
  * {@code openworld diff A.png B.png [--out D.png]}: how two pictures differ, to the eye. It prints the size, the
  * changed pixels (any channel different), the pixels whose colour differs noticeably, the mean and the largest
  * colour difference and where the largest is; {@code --out} draws where they differ ({@link
- * ImageComparison#differenceImage()}: the first picture in grey, changed pixels red to yellow).
+ * ImageComparison#differenceImage}: the first picture in grey, a faint red cast where the change is below
+ * {@code --threshold}, red to yellow where it is noticeable).
  *
  * <p>The colour difference is CIEDE2000 (ΔE00, {@link org.openworld.engine.colour.DeltaE}) on colours converted
  * from sRGB to CIELAB (D65): about 1 is just noticeable between flat patches side by side, 2 to 3 is seen at a glance.
@@ -72,9 +73,10 @@ final class DiffCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "max ΔE00:    %.4f at (%d, %d), x from the left, y from the top%n",
                 diff.maxDeltaE(), diff.maxX(), diff.maxY());
         if (out != null) {
-            diff.differenceImage().writePng(out);
-            System.out.println("wrote " + out + ": grey where equal, red (smallest) to yellow (ΔE00 "
-                    + String.format(Locale.ROOT, "%.4f", diff.maxDeltaE()) + ") where changed");
+            diff.differenceImage(threshold).writePng(out);
+            System.out.println("wrote " + out + ": grey where equal, a faint red cast where changed by ΔE00 "
+                    + threshold + " or less, red to yellow (ΔE00 " + String.format(Locale.ROOT, "%.4f",
+                    diff.maxDeltaE()) + ") where noticeable");
         }
         return 0;
     }

@@ -18,6 +18,8 @@ public final class ImageComparison {
     /** How much of the first picture's brightness the difference image keeps for its grey background. */
     private static final double BACKGROUND_BRIGHTNESS = 0.5;
     private static final int OPAQUE = 255;
+    /** How far the difference image lifts the red of a pixel that changed too little to notice. */
+    private static final int FAINT_RED = 96;
 
     private final Image first;
     private final float[] deltaE;
@@ -132,27 +134,33 @@ public final class ImageComparison {
     }
 
     /**
-     * A picture of where the two differ: unchanged pixels show the first picture in grey at half brightness; each
-     * changed pixel is a heat colour from red (the smallest difference, alpha-only changes included) to yellow (the
-     * largest, {@link #maxDeltaE()}), so every change stands out, however small, and the worst ones most.
+     * A picture of where the two differ, in three kinds of pixel. Unchanged: the first picture in grey at half
+     * brightness. Changed but by no more than {@code noticeable} ΔE00 (rounding, a shade no one would see): that grey
+     * with its red lifted by {@value #FAINT_RED} and its green and blue halved, so such changes show as a faint red
+     * cast that leaves the picture readable. Noticeable: a heat colour from pure red (just above {@code noticeable})
+     * to yellow (the largest, {@link #maxDeltaE()}), so the changes a viewer would see stand out, the worst most.
      */
-    public Image differenceImage() {
+    public Image differenceImage(double noticeable) {
         int width = width();
         byte[] rgba = new byte[deltaE.length * 4];
-        double max = maxDeltaE();
+        double span = maxDeltaE() - noticeable;
         for (int i = 0; i < deltaE.length; i++) {
-            int x = i % width;
-            int y = i / width;
-            if (changed.get(i)) {
-                rgba[i * 4] = (byte) OPAQUE;
-                rgba[i * 4 + 1] = (byte) Math.round(OPAQUE * (max > 0 ? deltaE[i] / max : 0));
-                rgba[i * 4 + 2] = 0;
-            } else {
-                byte grey = (byte) Math.round(BACKGROUND_BRIGHTNESS * first.luma(x, y));
-                rgba[i * 4] = grey;
-                rgba[i * 4 + 1] = grey;
-                rgba[i * 4 + 2] = grey;
+            int grey = (int) Math.round(BACKGROUND_BRIGHTNESS * first.luma(i % width, i / width));
+            int r = grey;
+            int g = grey;
+            int b = grey;
+            if (changed.get(i) && deltaE[i] > noticeable) {
+                r = OPAQUE;
+                g = (int) Math.round(OPAQUE * (span > 0 ? (deltaE[i] - noticeable) / span : 1));
+                b = 0;
+            } else if (changed.get(i)) {
+                r = Math.min(OPAQUE, grey + FAINT_RED);
+                g = grey / 2;
+                b = grey / 2;
             }
+            rgba[i * 4] = (byte) r;
+            rgba[i * 4 + 1] = (byte) g;
+            rgba[i * 4 + 2] = (byte) b;
             rgba[i * 4 + 3] = (byte) OPAQUE;
         }
         return new Image(width, height(), rgba);

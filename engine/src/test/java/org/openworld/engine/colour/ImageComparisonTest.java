@@ -47,7 +47,7 @@ class ImageComparisonTest {
         assertEquals(0, same.pixelsAbove(0));
         assertEquals(0, same.meanDeltaE());
         assertEquals(0, same.maxDeltaE());
-        Image difference = same.differenceImage();
+        Image difference = same.differenceImage(1);
         int grey = (int) Math.round(0.5 * new Image(W, H, base()).luma(7, 5));
         assertTrue(grey > 0, "the orange pixel shows in grey");
         assertPixel(difference, 7, 5, grey, grey, grey);
@@ -74,10 +74,12 @@ class ImageComparisonTest {
         assertEquals(0, diff.deltaE(1, 1));
         assertEquals((100 + darkRed) / (W * H), diff.meanDeltaE(), 1e-5);
 
-        Image picture = diff.differenceImage();
+        Image picture = diff.differenceImage(1);
         assertPixel(picture, 5, 3, 255, 255, 0);
-        assertPixel(picture, 2, 4, 255, (int) Math.round(255 * darkRed / 100), 0);
-        assertPixel(picture, 1, 1, 255, 0, 0);
+        assertPixel(picture, 2, 4, 255, (int) Math.round(255 * (darkRed - 1) / (100 - 1)), 0);
+        assertPixel(picture, 1, 1, 96, 0, 0);   // alpha alone, ΔE00 0: black with a faint red cast
+        Image strict = diff.differenceImage(0);
+        assertPixel(strict, 2, 4, 255, (int) Math.round(255 * darkRed / 100), 0);
         int grey = (int) Math.round(0.5 * new Image(W, H, base()).luma(7, 5));
         assertPixel(picture, 7, 5, grey, grey, grey);
         assertPixel(picture, 0, 0, 0, 0, 0);
