@@ -6,9 +6,13 @@ import org.openworld.engine.core.HeightField;
 /**
  * Who moves the camera, as a world resource that the camera system (the director) reads at every update: the user's
  * controls, a camera path, or a fixed pose. Commands and the window say where the camera should be by setting one
- * under this interface's class ({@code world.setResource(CameraDirection.class, CameraDirection.fixed(pose))}); only the director writes the {@link Camera}, and it does
- * so first in the frame, before any system reads the pose. Each direction set is taken up once, at the next update: a
- * new one, even equal to the last, starts over (the controls stop, a replay goes back to its start).
+ * under this interface's class ({@code world.setResource(CameraDirection.class, CameraDirection.fixed(pose))});
+ * only the director writes the {@link Camera}, and it does so first in the frame, before any system reads the pose.
+ * Each direction set is taken up once, at the next update: a new one, even equal to the last, starts over (the
+ * controls stop, a replay goes back to its start).
+ *
+ * <p>Each kind computes its own pose ({@link #pose}), so the director has no branch per kind and a new kind (an
+ * orbit around a point, a follow camera) is one more record here.
  */
 public sealed interface CameraDirection {
 
@@ -43,8 +47,9 @@ public sealed interface CameraDirection {
 
         @Override
         public CameraPose pose(Cue cue) {
-            CameraPose start = cue.updates() == 0 ? from.orElse(cue.current()) : cue.current();
+            CameraPose start = cue.current();
             if (cue.updates() == 0) {
+                start = from.orElse(start);
                 cue.controller().startAt(start);
             }
             return cue.controller().step(start, cue.input(), cue.ground(), cue.settings(), cue.step());
