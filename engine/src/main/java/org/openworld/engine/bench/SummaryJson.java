@@ -5,12 +5,12 @@ import com.google.gson.GsonBuilder;
 import com.google.gson.JsonParseException;
 
 import java.io.IOException;
-import java.io.Reader;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import org.openworld.engine.settings.TextFile;
 
 /**
  * Reads and writes {@code summary.json}: a {@link Summary} as pretty-printed JSON, one field per record component, so
@@ -37,6 +37,34 @@ public final class SummaryJson {
     }
 
     /**
+     * Gson's words for what is wrong, without the Java: its message names the exception class it wraps
+     * ({@code java.lang.IllegalStateException: Expected BEGIN_OBJECT but was STRING at line 3 column 1 path $}), its
+     * own tokens and API, and ends with a link to its troubleshooting page. What is left is what was expected, what
+     * was found and where, e.g. {@code expected an object '{' but found a string at line 3 column 1}.
+     */
+    static String jsonProblem(JsonParseException e) {
+        String message = e.getCause() != null && e.getCause().getMessage() != null
+                ? e.getCause().getMessage() : String.valueOf(e.getMessage());
+        String problem = message.lines().findFirst().orElse("")
+                .replaceFirst("^([\\w$]+\\.)+[\\w$]+: ", "")
+                .replaceFirst("Use JsonReader\\.set\\w+\\([^)]*\\) to accept malformed JSON", "malformed JSON")
+                .replaceFirst(" path \\$\\S*$", "")
+                .replaceFirst("^Expected ", "expected ")
+                .replace(" but was ", " but found ");
+        for (String[] token : TOKENS) {
+            problem = problem.replace(token[0], token[1]);
+        }
+        return problem;
+    }
+
+    /** Gson's token names and what a reader of the file calls them. */
+    private static final String[][] TOKENS = {
+        {"BEGIN_OBJECT", "an object '{'"}, {"END_OBJECT", "'}'"}, {"BEGIN_ARRAY", "a list '['"},
+        {"END_ARRAY", "']'"}, {"END_DOCUMENT", "the end of the file"}, {"NAME", "a field name"},
+        {"STRING", "a string"}, {"NUMBER", "a number"}, {"BOOLEAN", "true or false"}, {"NULL", "null"},
+    };
+
+    /**
      * Reads a summary written by {@link #write}.
      *
      * @throws SummaryFileException naming {@code file} if it is missing, unreadable, not JSON, or lacks the frame
@@ -44,14 +72,16 @@ public final class SummaryJson {
      */
     public static Summary read(Path file) {
         Summary summary;
-        try (Reader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            summary = GSON.fromJson(in, Summary.class);
+        try {
+            summary = GSON.fromJson(TextFile.read(file), Summary.class);
         } catch (NoSuchFileException e) {
             throw new SummaryFileException(file, "no such file; run 'openworld bench' first to write it", e);
+        } catch (TextFile.NotTextException e) {
+            throw new SummaryFileException(file, e.getMessage() + ", not a benchmark summary", e);
         } catch (IOException e) {
             throw new SummaryFileException(file, "cannot read: " + e.getMessage(), e);
         } catch (JsonParseException e) {
-            throw new SummaryFileException(file, "not valid summary JSON: " + e.getMessage(), e);
+            throw new SummaryFileException(file, "not valid summary JSON: " + jsonProblem(e), e);
         }
         if (summary == null) {
             throw new SummaryFileException(file, "empty file, not a benchmark summary", null);

@@ -26,6 +26,16 @@ public final class CameraPathFormatException extends Exception implements UserFa
         super(source + ":" + line + ":" + column + ": expected " + expected + ", found " + found);
     }
 
+    /**
+     * A file that is no camera path at all, e.g. not text: {@code file: PROBLEM}.
+     *
+     * @param source  the file as the user named it
+     * @param problem what is wrong with the whole file, e.g. "not a text file: byte 0xff at offset 3"
+     */
+    public CameraPathFormatException(String source, String problem) {
+        super(source + ": " + problem);
+    }
+
     @Override
     public ExitCode exitCode() {
         return ExitCode.USER_MISTAKE;

@@ -2,13 +2,12 @@ package org.openworld.engine.camera;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
+import org.openworld.engine.settings.TextFile;
 
 /**
  * Reads the plain-text camera path format (docs/camera-paths.md):
@@ -19,7 +18,8 @@ import java.util.regex.Pattern;
  *   0       120    1.7  240    0    -5
  *   5       121    1.7  232.5  5    -5     55
  * </pre>
- * Every problem is reported as a {@link CameraPathFormatException} that points at the offending token.
+ * Every problem is reported as a {@link CameraPathFormatException} that points at the offending token. The file is
+ * read as UTF-8 with a leading byte order mark skipped ({@link TextFile}); a file that is not text says so.
  */
 public final class CameraPathParser {
 
@@ -35,9 +35,11 @@ public final class CameraPathParser {
     public static CameraPath parse(Path file) throws CameraPathFormatException {
         String source = file.toString();
         try {
-            return parse(source, Files.readString(file));
+            return parse(source, TextFile.read(file));
         } catch (NoSuchFileException e) {
             throw unreadable(source, "no such file");
+        } catch (TextFile.NotTextException e) {
+            throw new CameraPathFormatException(source, e.getMessage());
         } catch (IOException e) {
             throw unreadable(source, "an unreadable file (" + e.getMessage() + ")");
         }
@@ -49,7 +51,9 @@ public final class CameraPathParser {
             if (in == null) {
                 throw unreadable(name, "no such resource on the classpath");
             }
-            return parse(name, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            return parse(name, TextFile.decode(in.readAllBytes()));
+        } catch (TextFile.NotTextException e) {
+            throw new CameraPathFormatException(name, e.getMessage());
         } catch (IOException e) {
             throw unreadable(name, "an unreadable resource (" + e.getMessage() + ")");
         }

@@ -12,7 +12,8 @@ import java.util.List;
  * a line starting with {@code #} is a comment (only at the start, since a value such as a file name may hold one),
  * blank lines are ignored. The settings panel saves every key, so a file read
  * into fresh settings gives the same settings; a hand-written file may hold just a few keys.
- * {@code openworld --config FILE} reads one, with any {@code --set} given after it winning.
+ * {@code openworld --config FILE} reads one, with any {@code --set} given after it winning. The file is read as UTF-8
+ * with a leading byte order mark skipped ({@link TextFile}).
  */
 public final class SettingsFile {
 
@@ -42,9 +43,11 @@ public final class SettingsFile {
     public static void read(Path file, Settings settings) {
         List<String> lines;
         try {
-            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            lines = TextFile.read(file).lines().toList();
         } catch (NoSuchFileException e) {
             throw new SettingsException("settings file " + file + " does not exist");
+        } catch (TextFile.NotTextException e) {
+            throw new SettingsException("settings file " + file + " is " + e.getMessage());
         } catch (IOException e) {
             throw new SettingsException("cannot read settings file " + file + ": " + e.getMessage());
         }
