@@ -47,6 +47,9 @@ final class BenchCommand implements Callable<Integer> {
             description = "Compare two summary.json files: each metric side by side with the ratio B/A.")
     List<Path> compare;
 
+    /** Most frames of one run, warm-up included: about 4.6 hours at 60 fps, every record held in memory. */
+    static final int MAX_FRAMES = 1_000_000;
+
     /** The fixed simulation step of this run, seconds. */
     private double step;
 
@@ -63,6 +66,7 @@ final class BenchCommand implements Callable<Integer> {
             throw new UserError("--frames must be at least 1 and --warmup at least 0");
         }
         CameraPath cameraPath = CameraPathParser.parse(path);
+        checkFrameCount(cameraPath);
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld bench")) {
             var engine = launch.engine;
             step = engine.settings().get(EngineSettings.class).step();
@@ -95,6 +99,20 @@ final class BenchCommand implements Callable<Integer> {
                     + ", " + out.resolve(BenchReport.FRAMETIME_PNG));
         }
         return 0;
+    }
+
+    /**
+     * Refuses a run longer than {@link #MAX_FRAMES} in all (warm-up included), counted in {@code long} so that
+     * {@code --frames 2147483647 --warmup 1} is a clear message rather than an overflowed count.
+     */
+    private void checkFrameCount(CameraPath cameraPath) {
+        double pathStep = Launch.settings(render).get(EngineSettings.class).step();
+        long recorded = frames != null ? frames : (long) Math.floor(cameraPath.duration() / pathStep) + 1;
+        if (warmup + recorded > MAX_FRAMES) {
+            throw new UserError("--warmup " + warmup + " and " + (frames != null ? "--frames " + frames
+                    : recorded + " frames of " + path) + " make " + (warmup + recorded) + " frames: at most "
+                    + MAX_FRAMES + " in all (every frame's record is kept in memory for the report)");
+        }
     }
 
     /** Keeps recorded frames, renumbered from 0 with the path time, and drops warm-up frames. */

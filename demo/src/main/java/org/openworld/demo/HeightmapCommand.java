@@ -28,6 +28,7 @@ import org.knowm.xchart.style.Styler.LegendPosition;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 import org.lwjgl.stb.STBImageWrite;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.terrain.HeightMap;
@@ -65,7 +66,7 @@ final class HeightmapCommand implements Callable<Integer> {
     @Option(names = "--out", required = true, paramLabel = "DIR", description = "Output folder, created if missing.")
     Path out;
 
-    @Option(names = "--seed", paramLabel = "N",
+    @Option(names = "--seed", paramLabel = "N", converter = RenderOptions.SeedConverter.class,
             description = "World seed, 0 .. 2147483647; short for --set engine.seed=N (default: ${DEFAULT-VALUE}).",
             defaultValue = "1")
     int seed;
@@ -83,7 +84,7 @@ final class HeightmapCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         Settings settings = newSettings();
         settings.set("engine.seed", Integer.toString(seed));
-        set.forEach(settings::apply);
+        set.forEach(assignment -> apply(settings, assignment));
         TerrainSettings terrain = settings.get(TerrainSettings.class);
         int worldSeed = settings.get(EngineSettings.class).seed();
         if (repeat < 1) {
@@ -149,6 +150,19 @@ final class HeightmapCommand implements Callable<Integer> {
      * The settings this command reads, at their defaults: the world seed and the terrain group, checked the way
      * {@code Launch.settings} checks every group. No renderer's group, as the maps need no OpenGL.
      */
+    /**
+     * Applies one {@code --set}: a key of the renderer that {@code heightmap} does not build (a shadow, sky or water
+     * key) is said to exist but not apply here, rather than be called unknown.
+     */
+    private static void apply(Settings settings, String assignment) {
+        String key = assignment.substring(0, Math.max(0, assignment.indexOf('='))).trim();
+        if (!settings.keys().contains(key) && Engine.settingsFor(DemoScene.systems()).keys().contains(key)) {
+            throw new UserError("--set " + key + ": a setting of the renderer, which heightmap does not use; "
+                    + "heightmap takes the engine.* and terrain.* keys");
+        }
+        settings.apply(assignment);
+    }
+
     static Settings newSettings() {
         return new Settings(List.of(EngineSettings.GROUP, TerrainSettings.SETTINGS));
     }

@@ -50,7 +50,11 @@ final class Launch implements AutoCloseable {
         return settings;
     }
 
-    /** Headless, or a window without vsync: the commands that render a fixed number of frames. */
+    /**
+     * Headless, or a window without vsync: the commands that render a fixed number of frames. A {@code --size} too
+     * large for memory is refused before the context is made, one too large for this OpenGL before the world is
+     * built ({@link Size}).
+     */
     static Launch start(RenderOptions options, boolean window, String title) {
         return start(options, window, false, title);
     }
@@ -60,10 +64,12 @@ final class Launch implements AutoCloseable {
         double daySpeed = options.daySpeed(0);
         ShaderSources shaders = options.dev ? devShaders() : ShaderSources.classpath();
         List<EngineSystem> systems = DemoScene.systems();
+        options.size.checkMemory();
         GlContext gl = window
                 ? GlContext.window(title, options.size.width(), options.size.height(), vsync, options.dev)
                 : GlContext.headless(options.dev);
         try {
+            options.size.checkGlLimits();
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());
             engine.world().setResource(new TimeOfDay(options.hours, daySpeed));
             return new Launch(gl, engine, options.dev, shaders);

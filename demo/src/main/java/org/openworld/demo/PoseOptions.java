@@ -15,31 +15,42 @@ final class PoseOptions {
     @Option(names = "--path", paramLabel = "FILE", description = "A camera path (docs/camera-paths.md).")
     Path path;
 
-    @Option(names = "--at", paramLabel = "SECONDS", description = "The moment of --path to show (default: ${DEFAULT-VALUE}).",
-            defaultValue = "0")
-    double at;
+    @Option(names = "--at", paramLabel = "SECONDS", description = "The moment of --path to show (default: 0).")
+    Double at;
+
+    /** The moment of {@code --path} to start from: {@code --at}, else 0 (checked by {@link Poses#loadPath}). */
+    double at() {
+        return at == null ? 0 : at;
+    }
 
     Optional<CameraPose> explicitPose() {
         return Optional.ofNullable(camera);
     }
 
     static final class PoseConverter implements picocli.CommandLine.ITypeConverter<CameraPose> {
+        /** The five fields in order, as the error messages name them. */
+        private static final String[] FIELDS = {"x", "y", "z", "yaw", "pitch"};
+
         @Override
         public CameraPose convert(String text) {
-            String[] parts = text.split(",");
-            String expected = "'" + text + "': expected x,y,z,yaw,pitch (metres and degrees), e.g. 0,120,400,0,-10";
-            if (parts.length != 5) {
-                throw new picocli.CommandLine.TypeConversionException(expected);
+            String[] parts = text.split(",", -1);
+            String expected = "expected x,y,z,yaw,pitch (metres and degrees), e.g. 0,120,400,0,-10";
+            if (parts.length != FIELDS.length) {
+                throw new picocli.CommandLine.TypeConversionException("'" + text + "': " + parts.length
+                        + " fields, " + expected);
             }
-            double[] v = new double[5];
-            for (int i = 0; i < 5; i++) {
+            double[] v = new double[FIELDS.length];
+            for (int i = 0; i < FIELDS.length; i++) {
+                String field = parts[i].trim();
                 try {
-                    v[i] = Double.parseDouble(parts[i].trim());
+                    v[i] = Double.parseDouble(field);
                 } catch (NumberFormatException e) {
-                    throw new picocli.CommandLine.TypeConversionException(expected);
+                    v[i] = Double.NaN;
                 }
                 if (!Double.isFinite(v[i])) {
-                    throw new picocli.CommandLine.TypeConversionException(expected);
+                    throw new picocli.CommandLine.TypeConversionException("'" + text + "': " + FIELDS[i] + " is '"
+                            + field + "', expected a finite number (" + (i < 3 ? "metres" : "degrees") + "); "
+                            + expected);
                 }
             }
             if (v[4] < -89 || v[4] > 89) {

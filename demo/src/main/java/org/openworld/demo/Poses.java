@@ -1,5 +1,6 @@
 package org.openworld.demo;
 
+import java.util.Locale;
 import java.util.Optional;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPath;
@@ -13,12 +14,27 @@ final class Poses {
     private Poses() {
     }
 
-    /** The path named by {@code --path}, parsed before any window opens so a broken file fails fast. */
+    /**
+     * The path named by {@code --path}, parsed before any window opens so a broken file fails fast. {@code --at}
+     * picks a moment of that path, so it is refused without one (it would be silently ignored) and must be a finite
+     * number of seconds.
+     */
     static Optional<CameraPath> loadPath(PoseOptions options) throws CameraPathFormatException {
         if (options.camera != null && options.path != null) {
             throw new UserError("--camera and --path exclude each other");
         }
-        return options.path == null ? Optional.empty() : Optional.of(CameraPathParser.parse(options.path));
+        if (options.at != null && options.path == null) {
+            throw new UserError("--at picks a moment of a camera path: give --path FILE with it, or leave it out");
+        }
+        if (options.path == null) {
+            return Optional.empty();
+        }
+        CameraPath path = CameraPathParser.parse(options.path);
+        if (!Double.isFinite(options.at())) {
+            throw new UserError(String.format(Locale.ROOT, "--at %s: expected a time in seconds, e.g. within the "
+                    + "path's keys %s .. %s", options.at, path.startTime(), path.endTime()));
+        }
+        return Optional.of(path);
     }
 
     /** A still picture's direction: the {@code --camera} pose, the path's pose at {@code --at}, or the default view. */
@@ -26,7 +42,7 @@ final class Poses {
         if (options.camera != null) {
             return CameraDirection.fixed(options.camera);
         }
-        return path.map(p -> CameraDirection.hold(p, options.at))
+        return path.map(p -> CameraDirection.hold(p, options.at()))
                 .orElse(CameraDirection.fixed(DemoScene.DEFAULT_POSE));
     }
 

@@ -12,9 +12,26 @@ final class RenderOptions {
             description = "Render size in pixels (default: ${DEFAULT-VALUE}).", defaultValue = "1280x720")
     Size size;
 
-    @Option(names = "--seed", paramLabel = "N",
+    @Option(names = "--seed", paramLabel = "N", converter = SeedConverter.class,
             description = "World seed, 0 .. 2147483647; short for --set engine.seed=N (default: 1).")
     Integer seed;
+
+    /** A seed: a whole number 0 .. 2147483647, the range said when the text is not one (picocli says "not an int"). */
+    static final class SeedConverter implements picocli.CommandLine.ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String text) {
+            try {
+                int seed = Integer.parseInt(text.trim());
+                if (seed >= 0) {
+                    return seed;
+                }
+            } catch (NumberFormatException e) {
+                // the message below says what is valid
+            }
+            throw new picocli.CommandLine.TypeConversionException("'" + text + "': expected a whole number 0 .. "
+                    + Integer.MAX_VALUE);
+        }
+    }
 
     @Option(names = "--config", paramLabel = "FILE",
             description = "Read settings from a file of key=value lines (the settings panel saves one); "

@@ -66,7 +66,7 @@ final class WindowLoop implements SettingsPanel.Host {
         this.replay = replay;
         engine().world().setResource(input);
         Poses.direct(engine().world(), replay
-                .map(path -> CameraDirection.play(path, pose.at, true))
+                .map(path -> CameraDirection.play(path, pose.at(), true))
                 .orElse(CameraDirection.controlsFrom(pose.explicitPose().orElse(DemoScene.DEFAULT_POSE))));
         panel = new SettingsPanel(engine().settings(), this);
     }

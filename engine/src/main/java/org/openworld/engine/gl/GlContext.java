@@ -6,6 +6,7 @@ import static org.lwjgl.system.MemoryUtil.NULL;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 import org.lwjgl.system.MemoryStack;
@@ -21,6 +22,10 @@ import org.lwjgl.system.MemoryStack;
  *       where the null-platform EGL path has been seen to fail).</li>
  * </ol>
  * A headless context renders into framebuffer objects, never into its (invisible) default framebuffer.
+ *
+ * <p>A window needs a display: without one ({@code DISPLAY} and {@code WAYLAND_DISPLAY} unset, or GLFW unable to open
+ * it) the error says "no display found" and offers the headless commands and {@code xvfb-run}; the advice to install
+ * Mesa is kept for a display without a usable OpenGL.
  *
  * <p>We ask for OpenGL 4.5 core and accept 3.3 core, the floor every technique here is written for. With
  * {@code debug} ({@code --dev}) the context is a debug context ({@code GLFW_OPENGL_DEBUG_CONTEXT}, which GLFW passes
@@ -52,6 +57,10 @@ public final class GlContext implements AutoCloseable {
                 sudo apt-get install -y libegl1 libegl-mesa0 libgl1-mesa-dri
             On a machine with a GPU, install its vendor driver. For a hidden window instead of EGL, run under
             an X server, for example: xvfb-run -a ./openworld ...""";
+
+    private static final String NO_DISPLAY = "No display found for the window";
+    private static final String NO_DISPLAY_HINT = "render without one with 'openworld shot' or 'openworld bench', "
+            + "or run the window on a virtual display: xvfb-run -a ./openworld";
 
     private final long window;
     private final Mode mode;
@@ -108,8 +117,17 @@ public final class GlContext implements AutoCloseable {
      * @param debug a debug context, its driver messages printed on stderr ({@code --dev})
      */
     public static GlContext window(String title, int width, int height, boolean vsync, boolean debug) {
+        if (displayServerUnset()) {
+            throw new GlUnavailableException(NO_DISPLAY + " (neither DISPLAY nor WAYLAND_DISPLAY is set); "
+                    + NO_DISPLAY_HINT);
+        }
         Attempt attempt = tryCreate(Mode.WINDOW, GLFW_ANY_PLATFORM, width, height, true, title, debug);
         if (attempt.context == null) {
+            if (noDisplay(attempt.failure)) {
+                throw new GlUnavailableException(NO_DISPLAY + " (DISPLAY=" + System.getenv("DISPLAY")
+                        + ", WAYLAND_DISPLAY=" + System.getenv("WAYLAND_DISPLAY") + ": " + attempt.failure + "); "
+                        + NO_DISPLAY_HINT);
+            }
             throw unavailable(List.of("window: " + attempt.failure));
         }
         glfwSwapInterval(vsync ? 1 : 0);
@@ -172,6 +190,29 @@ public final class GlContext implements AutoCloseable {
         glfwSetErrorCallback(null);
         callback.free();
         return new Attempt(null, why);
+    }
+
+    /**
+     * Whether this is a system whose windows need a display server (Linux, the BSDs) and none is named: neither
+     * {@code DISPLAY} nor {@code WAYLAND_DISPLAY} is set. Checked before GLFW is asked, whose attempts would print
+     * their own noise (libwayland's "XDG_RUNTIME_DIR is invalid") and end in "Failed to detect any supported
+     * platform", which reads as a missing driver.
+     */
+    static boolean displayServerUnset() {
+        String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
+        return !os.contains("win") && !os.contains("mac")
+                && System.getenv("DISPLAY") == null && System.getenv("WAYLAND_DISPLAY") == null;
+    }
+
+    /**
+     * Whether GLFW's error says the display named in the environment could not be opened: GLFW connects to the
+     * display server while it picks a platform, so "Failed to detect any supported platform" means no server
+     * answered (X11 and Wayland both tried), before any OpenGL was asked for.
+     */
+    static boolean noDisplay(String failure) {
+        String said = failure.toLowerCase(Locale.ROOT);
+        return said.contains("failed to detect any supported platform") || said.contains("failed to open display")
+                || said.contains("failed to connect to");
     }
 
     private static String describe(List<String> errors) {
