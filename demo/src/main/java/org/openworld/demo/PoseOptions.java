@@ -30,14 +30,14 @@ final class PoseOptions {
     static final class PoseConverter implements picocli.CommandLine.ITypeConverter<CameraPose> {
         /** The five fields in order, as the error messages name them. */
         private static final String[] FIELDS = {"x", "y", "z", "yaw", "pitch"};
+        private static final String EXAMPLE = "0,120,400,0,-10";
 
         @Override
         public CameraPose convert(String text) {
             String[] parts = text.split(",", -1);
-            String expected = "expected x,y,z,yaw,pitch (metres and degrees), e.g. 0,120,400,0,-10";
             if (parts.length != FIELDS.length) {
                 throw new picocli.CommandLine.TypeConversionException("'" + text + "': " + parts.length
-                        + " fields, " + expected);
+                        + " fields, expected x,y,z,yaw,pitch (metres and degrees), e.g. " + EXAMPLE);
             }
             double[] v = new double[FIELDS.length];
             for (int i = 0; i < FIELDS.length; i++) {
@@ -49,8 +49,8 @@ final class PoseOptions {
                 }
                 if (!Double.isFinite(v[i])) {
                     throw new picocli.CommandLine.TypeConversionException("'" + text + "': " + FIELDS[i] + " is '"
-                            + field + "', expected a finite number (" + (i < 3 ? "metres" : "degrees") + "); "
-                            + expected);
+                            + field + "', expected a number of " + (i < 3 ? "metres" : "degrees")
+                            + " (x,y,z,yaw,pitch, e.g. " + EXAMPLE + ")");
                 }
             }
             if (v[4] < -89 || v[4] > 89) {

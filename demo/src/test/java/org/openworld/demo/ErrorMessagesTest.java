@@ -74,7 +74,7 @@ class ErrorMessagesTest {
     @Test
     @Tag("gl")
     void aCameraFieldThatIsNotANumberIsNamed() {
-        userMistake("'1,2,NaN,0,0': z is 'NaN', expected a finite number (metres)",
+        userMistake("'1,2,NaN,0,0': z is 'NaN', expected a number of metres (x,y,z,yaw,pitch, e.g. 0,120,400,0,-10)",
                 "shot", "--out", dir.resolve("x.png").toString(), "--camera", "1,2,NaN,0,0");
     }
 
