@@ -5,7 +5,8 @@ import org.openworld.engine.failure.UserFacing;
 
 /**
  * No usable OpenGL context could be created. The message says what was tried, why each attempt failed, and what to
- * install; the command line prints it without a stack trace.
+ * install; or, for a window without a display, that no display was found and how to render without one. The command
+ * line prints it without a stack trace.
  */
 public final class GlUnavailableException extends RuntimeException implements UserFacing {
     public GlUnavailableException(String message) {
