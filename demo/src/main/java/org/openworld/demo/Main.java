@@ -80,7 +80,7 @@ public final class Main {
             err.println(failure.userMessage(program));
             return failure.exitCode().code();
         }
-        if (e instanceof FileSystemException io) {
+        if (e instanceof FileSystemException io && io.getFile() != null) {
             err.println(program + ": " + io.getFile() + ": " + plainWords(io)
                     + (io.getReason() == null ? "" : " (" + io.getReason() + ")"));
         } else if (e instanceof java.io.IOException) {
