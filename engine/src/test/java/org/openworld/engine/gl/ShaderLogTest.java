@@ -31,61 +31,55 @@ class ShaderLogTest {
     static final int FOG_15 = lineOf(EXPANDED.source(), "fogg");
     static final int TERRAIN_4 = lineOf(EXPANDED.source(), "undeclaredGain");
 
-    static List<String> map(String log) {
-        return ShaderLog.compile(log, EXPANDED, SOURCES);
+    /** Asserts that the compile log {@code log} is rewritten as the lines {@code expected}. */
+    static void assertMaps(String log, String... expected) {
+        assertEquals(List.of(expected), ShaderLog.compile(log, EXPANDED, SOURCES));
     }
 
     @Test
     void mesaSemanticErrorWithSourceZeroIsPutInTheIncludedFile() {
         // Mesa prints source string 0 for a semantic error whatever file it is in; the line finds the file.
-        List<String> mapped = map("0:" + FOG_15 + "(29): error: `fogg' undeclared\n"
-                + "1:" + FOG_15 + "(22): error: `return' with wrong type error, in function `fog' returning float\n");
-
-        assertEquals(List.of("shaders/common/fog.glsl:15:29: error: `fogg' undeclared",
-                "shaders/common/fog.glsl:15:22: error: `return' with wrong type error, in function `fog' returning float"),
-                mapped);
+        assertMaps("0:" + FOG_15 + "(29): error: `fogg' undeclared\n"
+                + "1:" + FOG_15 + "(22): error: `return' with wrong type error, in function `fog' returning float\n",
+                "shaders/common/fog.glsl:15:29: error: `fogg' undeclared",
+                "shaders/common/fog.glsl:15:22: error: `return' with wrong type error, in function `fog' returning float");
     }
 
     @Test
     void mesaErrorInTheStageAfterAnIncludeNamesTheStageLine() {
-        List<String> mapped = map("0:" + TERRAIN_4 + "(42): error: `undeclaredGain' undeclared\n");
-
-        assertEquals(List.of("shaders/terrain/terrain.frag:4:42: error: `undeclaredGain' undeclared"), mapped);
+        assertMaps("0:" + TERRAIN_4 + "(42): error: `undeclaredGain' undeclared\n",
+                "shaders/terrain/terrain.frag:4:42: error: `undeclaredGain' undeclared");
     }
 
     @Test
     void nvidiaFormat() {
-        List<String> mapped = map("0(" + FOG_15 + ") : error C1008: undefined variable \"fogg\"\n"
-                + "0(" + TERRAIN_4 + ") : warning C7050: \"undeclaredGain\" might be used before being initialized\n");
-
-        assertEquals(List.of("shaders/common/fog.glsl:15: error C1008: undefined variable \"fogg\"",
-                "shaders/terrain/terrain.frag:4: warning C7050: \"undeclaredGain\" might be used before being initialized"),
-                mapped);
+        assertMaps("0(" + FOG_15 + ") : error C1008: undefined variable \"fogg\"\n"
+                + "0(" + TERRAIN_4 + ") : warning C7050: \"undeclaredGain\" might be used before being initialized\n",
+                "shaders/common/fog.glsl:15: error C1008: undefined variable \"fogg\"",
+                "shaders/terrain/terrain.frag:4: warning C7050: \"undeclaredGain\" might be used before being initialized");
     }
 
     @Test
     void amdAndIntelFormat() {
-        List<String> mapped = map("ERROR: 0:" + FOG_15 + ": 'fogg' : undeclared identifier \n"
+        assertMaps("ERROR: 0:" + FOG_15 + ": 'fogg' : undeclared identifier \n"
                 + "ERROR: 0:" + TERRAIN_4 + ": error(#143) Undeclared identifier: undeclaredGain\n"
-                + "WARNING: 0:" + TERRAIN_4 + ": implicit conversion\n");
-
-        assertEquals(List.of("shaders/common/fog.glsl:15: error: 'fogg' : undeclared identifier",
+                + "WARNING: 0:" + TERRAIN_4 + ": implicit conversion\n",
+                "shaders/common/fog.glsl:15: error: 'fogg' : undeclared identifier",
                 "shaders/terrain/terrain.frag:4: error(#143) Undeclared identifier: undeclaredGain",
-                "shaders/terrain/terrain.frag:4: warning: implicit conversion"), mapped);
+                "shaders/terrain/terrain.frag:4: warning: implicit conversion");
     }
 
     @Test
     void unknownFormatsAndLinesOutsideAnyFileAreKeptBehindTheStageFile() {
         int directive = lineOf(EXPANDED.source(), "#line");
-        List<String> mapped = map("ERROR: 2 compilation errors.  No code generated.\n\n"
+        assertMaps("ERROR: 2 compilation errors.  No code generated.\n\n"
                 + "0:" + directive + "(1): error: on a line of the preprocessor's own\n"
                 + "0:99999(1): error: past the end\n"
-                + "Fragment info\n");
-
-        assertEquals(List.of("shaders/terrain/terrain.frag: ERROR: 2 compilation errors.  No code generated.",
+                + "Fragment info\n",
+                "shaders/terrain/terrain.frag: ERROR: 2 compilation errors.  No code generated.",
                 "shaders/terrain/terrain.frag: 0:" + directive + "(1): error: on a line of the preprocessor's own",
                 "shaders/terrain/terrain.frag: 0:99999(1): error: past the end",
-                "shaders/terrain/terrain.frag: Fragment info"), mapped);
+                "shaders/terrain/terrain.frag: Fragment info");
     }
 
     @Test
