@@ -42,7 +42,8 @@ class ShaderLogTest {
         assertMaps("0:" + FOG_15 + "(29): error: `fogg' undeclared\n"
                 + "1:" + FOG_15 + "(22): error: `return' with wrong type error, in function `fog' returning float\n",
                 "shaders/common/fog.glsl:15:29: error: `fogg' undeclared",
-                "shaders/common/fog.glsl:15:22: error: `return' with wrong type error, in function `fog' returning float");
+                "shaders/common/fog.glsl:15:22: error: `return' with wrong type error, in function `fog' returning"
+                        + " float");
     }
 
     @Test
@@ -56,7 +57,8 @@ class ShaderLogTest {
         assertMaps("0(" + FOG_15 + ") : error C1008: undefined variable \"fogg\"\n"
                 + "0(" + TERRAIN_4 + ") : warning C7050: \"undeclaredGain\" might be used before being initialized\n",
                 "shaders/common/fog.glsl:15: error C1008: undefined variable \"fogg\"",
-                "shaders/terrain/terrain.frag:4: warning C7050: \"undeclaredGain\" might be used before being initialized");
+                "shaders/terrain/terrain.frag:4: warning C7050: \"undeclaredGain\" might be used before being"
+                        + " initialized");
     }
 
     @Test

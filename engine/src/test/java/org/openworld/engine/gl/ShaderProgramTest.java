@@ -74,7 +74,8 @@ class ShaderProgramTest {
         ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
 
         String fog = dir.resolve("common/fog.glsl").toString();
-        assertEquals("program fill.vert+fill.frag: " + dir.resolve("fill.frag") + " (with " + fog + ") did not compile:",
+        assertEquals("program fill.vert+fill.frag: " + dir.resolve("fill.frag") + " (with " + fog
+                + ") did not compile:",
                 e.getMessage().lines().findFirst().orElseThrow());
         assertTrue(reports(e, fog + ":15:", "fogg"), e.getMessage());
         // Every line of the driver's log is put at a file line: none is left to name the stage file alone.
