@@ -15,8 +15,10 @@ import java.util.function.Consumer;
 
 /**
  * A linked GLSL program built from stage files in {@code shaders/} (the stage comes from the extension:
- * {@code .vert}, {@code .frag}, {@code .geom}). Includes are expanded by {@link ShaderPreprocessor}; compile and
- * link errors name the file and line.
+ * {@code .vert}, {@code .frag}, {@code .geom}). Includes are expanded by {@link ShaderPreprocessor}. A compile
+ * error is one paragraph: the program, the stage file and what it includes, then every line of the driver's log
+ * rewritten by {@link ShaderLog} to the file and line it is about ({@code shaders/common/fog.glsl:15:24: error: ...});
+ * a link error names the stages being linked, then the linker's lines.
  *
  * <p>Uniforms are typed handles resolved at link time: {@code Uniform.Mat4 model = program.mat4("uModel")} fails
  * at once, naming the program, when the uniform does not exist (or the compiler removed it as unused). If the
@@ -162,9 +164,9 @@ public final class ShaderProgram implements Labelled {
             }
             glLinkProgram(program);
             if (glGetProgrami(program, GL_LINK_STATUS) != GL_TRUE) {
-                String log = glGetProgramInfoLog(program);
+                List<String> log = ShaderLog.link(glGetProgramInfoLog(program));
                 deleteProgram(program);
-                throw new ShaderException(this + ": link failed:\n" + log.strip());
+                throw new ShaderException(report(this + ": linking " + linked() + " failed", log));
             }
             for (SharedBlock shared : SharedBlock.values()) {
                 int block = glGetUniformBlockIndex(program, shared.block());
@@ -190,26 +192,60 @@ public final class ShaderProgram implements Labelled {
 
     private int compile(String stage) {
         ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(sources).expand(stage);
-        int shader = glCreateShader(stageType(stage));
+        int shader = glCreateShader(Stage.of(stage, sources).glType);
         gl.objects().created(GlObjects.Kind.SHADER);
         glShaderSource(shader, expanded.source());
         glCompileShader(shader);
         if (glGetShaderi(shader, GL_COMPILE_STATUS) != GL_TRUE) {
-            String log = expanded.mapLog(sources, glGetShaderInfoLog(shader));
+            List<String> log = ShaderLog.compile(glGetShaderInfoLog(shader), expanded, sources);
             glDeleteShader(shader);
             gl.objects().deleted(GlObjects.Kind.SHADER);
-            throw new ShaderException(sources.displayName(stage) + ": compile failed:\n" + log);
+            List<String> includes = expanded.files().subList(1, expanded.files().size());
+            String with = includes.isEmpty() ? ""
+                    : " (with " + String.join(", ", includes.stream().map(sources::displayName).toList()) + ")";
+            String heading = this + ": " + sources.displayName(stage) + with + " did not compile";
+            throw new ShaderException(report(heading, log));
         }
         return shader;
     }
 
-    private static int stageType(String stage) {
-        return switch (stage.substring(stage.lastIndexOf('.') + 1)) {
-            case "vert" -> GL_VERTEX_SHADER;
-            case "frag" -> GL_FRAGMENT_SHADER;
-            case "geom" -> GL_GEOMETRY_SHADER;
-            default -> throw new ShaderException("shaders/" + stage + ": unknown stage; use .vert, .frag or .geom");
-        };
+    /** The stages being linked, e.g. "the vertex stage shaders/sky/sky.vert and the fragment stage ...". */
+    private String linked() {
+        return String.join(" and ", stages.stream()
+                .map(stage -> "the " + Stage.of(stage, sources).word + " stage " + sources.displayName(stage))
+                .toList());
+    }
+
+    /** A heading and the driver's lines under it, or a note that the driver said nothing. */
+    private static String report(String heading, List<String> log) {
+        return log.isEmpty() ? heading + " (the driver gave no log)" : heading + ":\n" + String.join("\n", log);
+    }
+
+    /** The stages a file can be, by its extension. */
+    private enum Stage {
+        VERTEX("vert", GL_VERTEX_SHADER, "vertex"),
+        FRAGMENT("frag", GL_FRAGMENT_SHADER, "fragment"),
+        GEOMETRY("geom", GL_GEOMETRY_SHADER, "geometry");
+
+        private final String extension;
+        private final int glType;
+        private final String word;
+
+        Stage(String extension, int glType, String word) {
+            this.extension = extension;
+            this.glType = glType;
+            this.word = word;
+        }
+
+        static Stage of(String file, ShaderSources sources) {
+            String extension = file.substring(file.lastIndexOf('.') + 1);
+            for (Stage stage : values()) {
+                if (stage.extension.equals(extension)) {
+                    return stage;
+                }
+            }
+            throw new ShaderException(sources.displayName(file) + ": unknown stage; use .vert, .frag or .geom");
+        }
     }
 
     private void deleteProgram(int program) {

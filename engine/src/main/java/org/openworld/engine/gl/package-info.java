@@ -13,8 +13,10 @@
  *       {@link org.openworld.engine.gl.Texture2D}, {@link org.openworld.engine.gl.Texture3D},
  *       {@link org.openworld.engine.gl.TextureArray}, {@link org.openworld.engine.gl.CubeMapTexture},
  *       {@link org.openworld.engine.gl.DepthTextureArray}.</li>
- *   <li>{@link org.openworld.engine.gl.ShaderPreprocessor}: {@code #include} with {@code #line} bookkeeping, so a
- *       driver's {@code 2:14(7): error} is reported as {@code shaders/common/fog.glsl:14}.</li>
+ *   <li>{@link org.openworld.engine.gl.ShaderPreprocessor}: {@code #include}, and where every line of the expanded
+ *       text came from, so that {@code ShaderLog} reports a driver's {@code 0:123(26): error} (Mesa; NVIDIA's and
+ *       AMD's/Intel's forms too) as {@code shaders/common/fog.glsl:15:26: error}. The line alone finds the file:
+ *       Mesa prints source string 0 for most semantic errors.</li>
  *   <li>{@link org.openworld.engine.gl.ShaderProgram}: typed uniform handles resolved at link time;
  *       {@link org.openworld.engine.gl.ShaderLibrary} reloads all programs in dev mode.</li>
  *   <li>{@link org.openworld.engine.gl.FrameUniforms}: the std140 block every shader includes from

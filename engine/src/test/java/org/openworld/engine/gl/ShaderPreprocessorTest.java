@@ -54,33 +54,69 @@ class ShaderPreprocessorTest {
         assertTrue(expanded.source().indexOf("float d()") < expanded.source().indexOf("float b()"));
     }
 
-    @Test
-    void lineDirectivesNameEachFileAndTheLineAfterAnInclude() {
-        String source = new ShaderPreprocessor(DIAMOND).expand("main.frag").source();
-        List<String> lines = source.lines().toList();
+    /** Where each marker of {@link #NESTED} is: its file and line. */
+    static final Map<String, String> NESTED_MARKERS = Map.of(
+            "marker_lit", "lit.frag:4",
+            "marker_fog", "common/fog.glsl:4",
+            "marker_frame", "common/frame.glsl:2",
+            "marker_end", "lit.frag:6");
 
-        // After #version the root continues at its line 2 as source string 0.
-        assertEquals("#line 2 0", lines.get(1));
-        // Each included file starts at its line 1 under its own number (b = 1, d = 2, c = 3).
-        assertTrue(lines.contains("#line 1 1"), source);
-        assertTrue(lines.contains("#line 1 2"), source);
-        assertTrue(lines.contains("#line 1 3"), source);
-        // Back in main.frag after the include on line 3, the next line is line 4.
-        int mainBody = lines.indexOf("void main() {}");
-        assertEquals("#line 4 0", lines.get(mainBody - 1), source);
-        // Back in c.glsl after its include on line 1, the next line is line 2.
-        int cBody = lines.indexOf("float c() { return d(); }");
-        assertEquals("#line 2 3", lines.get(cBody - 1), source);
+    /** lit.frag includes fog, which includes frame; lit goes on after its include. */
+    static final ShaderSources NESTED = files(Map.of(
+            "lit.frag", """
+                    #version 330 core
+                    #include "common/fog.glsl"
+                    // a comment
+                    float marker_lit;
+                    #include "common/frame.glsl"
+                    float marker_end;""",
+            "common/fog.glsl", """
+                    // fog
+                    #include "common/frame.glsl"
+
+                    float marker_fog;""",
+            "common/frame.glsl", """
+                    // frame
+                    float marker_frame;"""));
+
+    /** The expanded text's line number (from 1) of the line that holds {@code marker}. */
+    static int lineOf(String expanded, String marker) {
+        List<String> lines = expanded.lines().toList();
+        for (int i = 0; i < lines.size(); i++) {
+            if (lines.get(i).contains(marker)) {
+                return i + 1;
+            }
+        }
+        throw new AssertionError(marker + " not in " + expanded);
     }
 
-    /** Simulates a driver: finds which file and line the expanded text's #line directives give a marker. */
-    static int[] locate(String expanded, String marker) {
+    @Test
+    void everyLineOfTheTextKnowsItsFileAndLine() {
+        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(NESTED).expand("lit.frag");
+
+        NESTED_MARKERS.forEach((marker, place) -> {
+            ShaderPreprocessor.Origin origin = expanded.origin(lineOf(expanded.source(), marker)).orElseThrow();
+            assertEquals(place, origin.file() + ":" + origin.line(), marker);
+        });
+        assertEquals("lit.frag:1", expanded.origin(1).map(o -> o.file() + ":" + o.line()).orElseThrow());
+        // The #line directives are the preprocessor's own lines: they hold no file line.
+        List<String> lines = expanded.source().lines().toList();
+        for (int i = 0; i < lines.size(); i++) {
+            assertEquals(!lines.get(i).startsWith("#line"), expanded.origin(i + 1).isPresent(), lines.get(i));
+        }
+    }
+
+    /**
+     * Simulates a driver reading the text: the file number and line it gives a marker, following the #line directives
+     * (since GLSL 3.30 the line after {@code #line N} is N; before, N + 1).
+     */
+    static int[] driverLocation(String expanded, String marker, boolean before330) {
         int file = 0;
         int line = 1;
         for (String l : expanded.lines().toList()) {
             if (l.startsWith("#line ")) {
                 String[] parts = l.split(" ");
-                line = Integer.parseInt(parts[1]);
+                line = Integer.parseInt(parts[1]) + (before330 ? 1 : 0);
                 file = Integer.parseInt(parts[2]);
                 continue;
             }
@@ -93,51 +129,51 @@ class ShaderPreprocessorTest {
     }
 
     @Test
-    void lineDirectivesPutEveryLineBackAtItsFileAndLine() {
+    void aDriverSeesTheTextsOwnLineNumbersAndEachFilesNumber() {
+        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(NESTED).expand("lit.frag");
+
+        for (String marker : NESTED_MARKERS.keySet()) {
+            int[] seen = driverLocation(expanded.source(), marker, false);
+            int line = lineOf(expanded.source(), marker);
+            assertEquals(line, seen[1], marker);
+            assertEquals(expanded.origin(line).orElseThrow().file(), expanded.files().get(seen[0]), marker);
+        }
+        assertEquals(List.of("lit.frag", "common/fog.glsl", "common/frame.glsl"), expanded.files());
+    }
+
+    @Test
+    void beforeGlsl330TheDirectivesAreWrittenOneLess() {
+        ShaderSources old = files(Map.of(
+                "old.frag", "#version 150\n#include \"b.glsl\"\nfloat marker_old;",
+                "b.glsl", "// b\nfloat marker_b;"));
+        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(old).expand("old.frag");
+
+        for (String marker : List.of("marker_old", "marker_b")) {
+            assertEquals(lineOf(expanded.source(), marker), driverLocation(expanded.source(), marker, true)[1], marker);
+        }
+    }
+
+    @Test
+    void glslEsVersionsUseTheNewRule() {
+        for (String version : List.of("#version 300 es", "#version 100")) {
+            ShaderSources es = files(Map.of(
+                    "es.frag", version + "\n#include \"b.glsl\"\nfloat marker_es;",
+                    "b.glsl", "float marker_b;"));
+            String source = new ShaderPreprocessor(es).expand("es.frag").source();
+
+            assertEquals(lineOf(source, "marker_es"), driverLocation(source, "marker_es", false)[1], version);
+        }
+    }
+
+    @Test
+    void aLineDirectiveInAShaderFileIsRefused() {
         ShaderSources sources = files(Map.of(
-                "lit.frag", """
-                        #version 330 core
-                        #include "common/fog.glsl"
-                        // a comment
-                        float marker_lit;""",
-                "common/fog.glsl", """
-                        // fog
-                        #include "common/frame.glsl"
+                "a.frag", "#version 330 core\n#include \"b.glsl\"\n",
+                "b.glsl", "// b\n#line 40 0\n"));
 
-                        float marker_fog;""",
-                "common/frame.glsl", """
-                        // frame
-                        float marker_frame;"""));
-        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(sources).expand("lit.frag");
+        ShaderException e = assertThrows(ShaderException.class, () -> new ShaderPreprocessor(sources).expand("a.frag"));
 
-        int[] lit = locate(expanded.source(), "marker_lit");
-        int[] fog = locate(expanded.source(), "marker_fog");
-        int[] frame = locate(expanded.source(), "marker_frame");
-        assertEquals("lit.frag:4", expanded.files().get(lit[0]) + ":" + lit[1]);
-        assertEquals("common/fog.glsl:4", expanded.files().get(fog[0]) + ":" + fog[1]);
-        assertEquals("common/frame.glsl:2", expanded.files().get(frame[0]) + ":" + frame[1]);
-    }
-
-    @Test
-    void mapLogRewritesMesaAndNvidiaLocations() {
-        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(DIAMOND).expand("main.frag");
-
-        String mesa = expanded.mapLog(DIAMOND, "1:3(5): error: syntax error, unexpected IDENTIFIER\n");
-        String nvidia = expanded.mapLog(DIAMOND, "1(3) : error C0000: syntax error, unexpected identifier\n");
-        String intel = expanded.mapLog(DIAMOND, "ERROR: 2:7: 'x' : undeclared identifier\n");
-
-        assertEquals("shaders/b.glsl:3: error: syntax error, unexpected IDENTIFIER", mesa);
-        assertEquals("shaders/b.glsl:3 : error C0000: syntax error, unexpected identifier", nvidia);
-        assertEquals("ERROR: shaders/d.glsl:7: 'x' : undeclared identifier", intel);
-    }
-
-    @Test
-    void mapLogRewritesEveryLineOfAMultiLineLog() {
-        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(DIAMOND).expand("main.frag");
-
-        String mapped = expanded.mapLog(DIAMOND, "0:4(1): error: first\n3:2(9): warning: second\n");
-
-        assertEquals("shaders/main.frag:4: error: first\nshaders/c.glsl:2: warning: second", mapped);
+        assertTrue(e.getMessage().startsWith("shaders/b.glsl:2: #line"), e.getMessage());
     }
 
     @Test

@@ -18,7 +18,8 @@ import org.openworld.engine.GlTestSupport;
 
 /**
  * Programs built by the real driver (Mesa llvmpipe here) from files on disk, as in dev mode: error locations mapped
- * back through includes, missing uniforms, and reloads that fail or succeed.
+ * back through includes (syntax and semantic errors, nested includes, lines after an include, a pre-3.30 stage),
+ * link errors naming their stages, missing uniforms, and reloads that fail or succeed.
  */
 @GlTest
 class ShaderProgramTest {
@@ -49,8 +50,40 @@ class ShaderProgramTest {
             void main() { fragColor = vec4(tint(), 1.0) * uScale; }
             """;
 
+    /** The lines of a shader error's message after its heading: the driver's log, rewritten. */
+    private static List<String> logLines(ShaderException e) {
+        List<String> lines = e.getMessage().lines().toList();
+        return lines.subList(1, lines.size());
+    }
+
+    /** Whether some line of the log starts with {@code place}, e.g. "/tmp/x/common/fog.glsl:15:". */
+    private static boolean reports(ShaderException e, String place, String text) {
+        return logLines(e).stream().anyMatch(line -> line.startsWith(place) && line.contains(text));
+    }
+
     @Test
-    void compileErrorInAnIncludedFileNamesThatFileAndLine() throws IOException {
+    void semanticErrorInAnIncludedFileNamesThatFileAndLine() throws IOException {
+        // The case of issue 18: Mesa gives an undeclared name the source number 0, whatever file it is in.
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT.replace("lib/tint.glsl", "common/fog.glsl"));
+        write("common/fog.glsl", "// fog\n".repeat(14) + """
+                vec3 tint() { return vec3(fogg); }
+                """);
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+
+        ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
+
+        String fog = dir.resolve("common/fog.glsl").toString();
+        assertEquals("program fill.vert+fill.frag: " + dir.resolve("fill.frag") + " (with " + fog
+                + ") did not compile:",
+                e.getMessage().lines().findFirst().orElseThrow());
+        assertTrue(reports(e, fog + ":15:", "fogg"), e.getMessage());
+        // Every line of the driver's log is put at a file line: none is left to name the stage file alone.
+        assertTrue(logLines(e).stream().allMatch(line -> line.startsWith(fog + ":15:")), e.getMessage());
+    }
+
+    @Test
+    void syntaxErrorInAnIncludedFileNamesThatFileAndLine() throws IOException {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
         write("lib/tint.glsl", """
@@ -63,21 +96,83 @@ class ShaderProgramTest {
 
         ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
 
-        assertTrue(e.getMessage().contains(dir.resolve("lib/tint.glsl") + ":3"), e.getMessage());
-        assertTrue(e.getMessage().contains("compile failed"), e.getMessage());
+        assertTrue(reports(e, dir.resolve("lib/tint.glsl") + ":3:", "syntax error"), e.getMessage());
+        assertTrue(e.getMessage().contains("did not compile"), e.getMessage());
     }
 
     @Test
-    void compileErrorInTheStageAfterAnIncludeNamesTheStageLine() throws IOException {
+    void errorInTheStageAfterAnIncludeNamesTheStageLine() throws IOException {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT.replace("* uScale;", "* uScale * undeclaredFactor;"));
-        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+        write("lib/tint.glsl", "// tint\n".repeat(12) + "vec3 tint() { return vec3(1.0); }\n");
         ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
 
         ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
 
-        assertTrue(e.getMessage().contains(dir.resolve("fill.frag") + ":5"), e.getMessage());
-        assertTrue(e.getMessage().contains("undeclaredFactor"), e.getMessage());
+        assertTrue(reports(e, dir.resolve("fill.frag") + ":5:", "undeclaredFactor"), e.getMessage());
+    }
+
+    @Test
+    void nestedIncludesNameEachFileAndLine() throws IOException {
+        // fill.frag -> lib/outer.glsl -> lib/inner.glsl, an undeclared name in each, after each include.
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT.replace("lib/tint.glsl", "lib/outer.glsl").replace("* uScale;", "* missingTop;"));
+        write("lib/outer.glsl", """
+                // outer
+                #include "lib/inner.glsl"
+                // after the nested include
+                vec3 tint() { return inner() * missingOuter; }
+                """);
+        write("lib/inner.glsl", """
+                // inner
+                // ...
+                vec3 inner() { return vec3(missingInner); }
+                """);
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+
+        ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
+
+        assertTrue(reports(e, dir.resolve("lib/inner.glsl") + ":3:", "missingInner"), e.getMessage());
+        assertTrue(reports(e, dir.resolve("lib/outer.glsl") + ":4:", "missingOuter"), e.getMessage());
+        assertTrue(reports(e, dir.resolve("fill.frag") + ":5:", "missingTop"), e.getMessage());
+    }
+
+    @Test
+    void aStageBeforeGlsl330IsMappedToo() throws IOException {
+        // Before GLSL 3.30 the line after #line N is N + 1: the preprocessor writes its directives for that rule.
+        write("old.vert", VERTEX.replace("330 core", "150").replace("layout(location = 0) ", ""));
+        write("old.frag", """
+                #version 150
+                #include "lib/tint.glsl"
+                out vec4 fragColor;
+                void main() { fragColor = vec4(tint() * missingOld, 1.0); }
+                """);
+        write("lib/tint.glsl", "// tint\nvec3 tint() { return vec3(missingTint); }\n");
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+
+        ShaderException e = assertThrows(ShaderException.class, () -> library.program("old.vert", "old.frag"));
+
+        assertTrue(reports(e, dir.resolve("lib/tint.glsl") + ":2:", "missingTint"), e.getMessage());
+        assertTrue(reports(e, dir.resolve("old.frag") + ":4:", "missingOld"), e.getMessage());
+    }
+
+    @Test
+    void linkErrorNamesTheStagesBeingLinked() throws IOException {
+        write("fill.vert", VERTEX.replace("void main() {", "out vec2 vTint;\nvoid main() { vTint = csCorner;"));
+        write("fill.frag", """
+                #version 330 core
+                in vec3 vTint;
+                out vec4 fragColor;
+                void main() { fragColor = vec4(vTint, 1.0); }
+                """);
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+
+        ShaderException e = assertThrows(ShaderException.class, () -> library.program("fill.vert", "fill.frag"));
+
+        assertEquals("program fill.vert+fill.frag: linking the vertex stage " + dir.resolve("fill.vert")
+                + " and the fragment stage " + dir.resolve("fill.frag") + " failed:",
+                e.getMessage().lines().findFirst().orElseThrow());
+        assertTrue(logLines(e).stream().anyMatch(line -> line.contains("vTint")), e.getMessage());
     }
 
     @Test
