@@ -3,6 +3,7 @@ package org.openworld.engine.bench;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Set;
 import org.openworld.engine.files.AtomicFiles;
 
 /**
@@ -19,6 +20,8 @@ public final class BenchReport {
     public static final String FRAMES_CSV = "frames.csv";
     public static final String SUMMARY_JSON = "summary.json";
     public static final String FRAMETIME_PNG = "frametime.png";
+    /** The three files, all a run's folder holds. */
+    public static final Set<String> FILES = Set.of(FRAMES_CSV, SUMMARY_JSON, FRAMETIME_PNG);
 
     private BenchReport() {
     }

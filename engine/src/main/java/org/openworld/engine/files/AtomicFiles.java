@@ -30,7 +30,7 @@ import java.util.stream.Stream;
  */
 public final class AtomicFiles {
 
-    /** Writes content at the path it is given (a temporary file, or a new empty folder to fill). */
+    /** Writes content at the path it is given: a file to create, or a new empty folder to fill. */
     @FunctionalInterface
     public interface Content {
         void writeTo(Path path) throws IOException;
@@ -42,7 +42,7 @@ public final class AtomicFiles {
     /** Writes a file through a temporary file in the same folder and renames it over {@code file}. */
     public static void write(Path file, Content content) throws IOException {
         Path target = file.toAbsolutePath();
-        Path temp = Files.createTempFile(target.getParent(), "." + target.getFileName() + ".", ".tmp");
+        Path temp = target.resolveSibling("." + target.getFileName() + "." + uniqueSuffix() + ".tmp");
         try {
             content.writeTo(temp);
             move(temp, target);
@@ -61,7 +61,7 @@ public final class AtomicFiles {
         Files.createDirectories(parent);
         recoverFolder(target);
         deleteStaleWrites(target);
-        Path fresh = Files.createTempDirectory(parent, "." + target.getFileName() + ".new-");
+        Path fresh = Files.createDirectory(parent.resolve("." + target.getFileName() + ".new-" + uniqueSuffix()));
         try {
             content.writeTo(fresh);
         } catch (IOException | RuntimeException | Error e) {
@@ -98,6 +98,15 @@ public final class AtomicFiles {
     public static Path aside(Path folder) {
         Path target = folder.toAbsolutePath();
         return target.resolveSibling("." + target.getFileName() + ".old");
+    }
+
+    /**
+     * A name part no other writer uses: this process and a clock tick. Not {@code Files.createTempFile}, which
+     * makes files only their owner may read (0600): the temporary file becomes the output, which should get the
+     * usual permissions (the umask's), as a file written in place would.
+     */
+    private static String uniqueSuffix() {
+        return ProcessHandle.current().pid() + "-" + System.nanoTime();
     }
 
     private static void deleteStaleWrites(Path target) throws IOException {
