@@ -43,7 +43,7 @@ import org.openworld.engine.files.AtomicFiles;
  * <p>Small on purpose: 64×36 pixels, a 256² world, water and shadows off, 60 frames, two benches killed at once
  * (each into its own folder), the forks started with C1 only. A fork spends most of its time starting the JVM and
  * making the world (about 2 s of CPU). Measured on the project's 2-core machine while six other builds ran (load
- * average 8 to 11): 144 s, against 174 s one fork at a time; a quiet machine should need well under half.
+ * average 8 to 11): 144 s, against 174 s one fork at a time; at that load a 1-frame bench alone took 3.5 s.
  */
 @Tag("gl")
 class BenchKillTest {
@@ -55,6 +55,8 @@ class BenchKillTest {
     private static final int LANES = 2;
     /** The forked bench prints this once its world is made, just before its first frame. */
     private static final String FRAMES_START = " warm-up + ";
+    /** When the SIGTERM of the --discard-partial test comes: within its frames, after the first few. */
+    private static final long DISCARD_AFTER_MS = 300;
     /** How long a fork may take to start rendering, or to end after a signal. */
     private static final long FORK_TIMEOUT_S = 60;
 
@@ -82,6 +84,22 @@ class BenchKillTest {
         } finally {
             lanes.shutdownNow();
         }
+    }
+
+    @Test
+    void discardPartialKeepsTheEarlierRun() throws Exception {
+        Path out = dir.resolve("run");
+        Fork first = Fork.start(out);
+        assertEquals(0, first.awaitExit(), first.output());
+        Map<String, byte[]> before = snapshot(out);
+
+        Fork fork = Fork.start(out, "--discard-partial");
+        fork.awaitFrames();
+        Thread.sleep(DISCARD_AFTER_MS);
+        fork.process.destroy();
+        assertEquals(143, fork.awaitExit(), fork.output());
+        assertTrue(fork.output().contains("nothing written, " + out + " left as it was"), fork.output());
+        assertTrue(sameFiles(before, snapshot(out)), fork.output());
     }
 
     /**
@@ -183,16 +201,18 @@ class BenchKillTest {
         /** How often the log is read while waiting for the frames to begin. */
         private static final long POLL_MS = 10;
 
-        static Fork start(Path out) throws IOException {
+        static Fork start(Path out, String... options) throws IOException {
             Path java = Path.of(System.getProperty("java.home"), "bin", "java");
             Path log = Files.createTempFile(out.toAbsolutePath().getParent(), "bench-", ".log");
-            Process process = new ProcessBuilder(java.toString(), "-Djava.awt.headless=true",
+            List<String> command = new ArrayList<>(List.of(java.toString(), "-Djava.awt.headless=true",
                     "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", // a quicker start; the timings are not tested
                     "-cp", System.getProperty("java.class.path"), Main.class.getName(), "bench",
                     "--path", "../assets/paths/orbit.path", "--size", "64x36", "--frames", Integer.toString(FRAMES),
                     "--warmup", "0", "--set", "terrain.size=256", "--set", "system.water=off",
-                    "--set", "system.shadow=off", "--out", out.toString())
-                    .redirectErrorStream(true).redirectOutput(log.toFile()).start();
+                    "--set", "system.shadow=off", "--out", out.toString()));
+            command.addAll(List.of(options));
+            Process process = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile())
+                    .start();
             return new Fork(process, log);
         }
 

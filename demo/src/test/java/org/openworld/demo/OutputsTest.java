@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
@@ -18,8 +19,8 @@ import org.openworld.engine.gl.Image;
 /**
  * Every command that writes checks {@code --out} before any work ({@link Outputs}): one line naming the path and the
  * operating system's reason, exit 2. The tests run as root, whom permissions do not stop, so an unwritable place is
- * a path through a regular file ("Not a directory") or under {@code /proc} ("No such file or directory"). No test
- * here needs OpenGL: each refusal comes before the context is made.
+ * a path through a regular file ("Not a directory") or under {@code /proc} ("No such file or directory"). No
+ * refusal needs OpenGL: each comes before the context is made; only the shot that overwrites does.
  */
 class OutputsTest {
 
@@ -107,6 +108,18 @@ class OutputsTest {
         try (Stream<Path> files = Files.list(dir)) {
             assertFalse(files.anyMatch(p -> p.getFileName().toString().startsWith(".")), "no temporary file left");
         }
+    }
+
+    @Test
+    @Tag("gl")
+    void shotOverwritesAPngAndWithForceAnyFile() throws Exception {
+        Path old = picture("old.png", 7);
+        assertEquals(0, Main.execute("shot", "--out", old.toString(), "--size", "32x18"), console.stderr());
+        assertEquals(32, Image.read(old).width(), "the earlier 8x6 PNG was replaced");
+        Path text = Files.writeString(dir.resolve("x.png"), "not a picture");
+        assertEquals(0, Main.execute("shot", "--out", text.toString(), "--size", "32x18", "--force"),
+                console.stderr());
+        assertEquals(18, Image.read(text).height());
     }
 
     /** The command exits 2 with exactly this one line after the program's name, and prints nothing else. */
