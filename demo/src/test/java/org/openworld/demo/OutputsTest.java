@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -104,7 +105,7 @@ class OutputsTest {
         assertEquals("keep me", Files.readString(text));
         assertEquals(0, Main.execute("diff", a.toString(), b.toString(), "--out", text.toString(), "--force"));
         assertArrayEquals(new byte[] {(byte) 0x89, 'P', 'N', 'G'},
-                java.util.Arrays.copyOf(Files.readAllBytes(text), 4));
+                Arrays.copyOf(Files.readAllBytes(text), 4));
         try (Stream<Path> files = Files.list(dir)) {
             assertFalse(files.anyMatch(p -> p.getFileName().toString().startsWith(".")), "no temporary file left");
         }
@@ -133,7 +134,7 @@ class OutputsTest {
 
     private Path picture(String name, int grey) throws Exception {
         byte[] rgba = new byte[8 * 6 * 4];
-        java.util.Arrays.fill(rgba, (byte) grey);
+        Arrays.fill(rgba, (byte) grey);
         Path file = dir.resolve(name);
         new Image(8, 6, rgba).writePng(file);
         return file;

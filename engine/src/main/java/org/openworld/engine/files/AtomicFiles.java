@@ -26,7 +26,9 @@ import java.util.stream.Stream;
  * moment {@code NAME} holds the whole old folder or the whole new one. Leftover {@code .NAME.new-*} folders of a
  * crashed write are deleted by the next write.
  *
- * <p>Cost: one extra rename per file, two per folder, and the new folder's files exist twice for a moment.
+ * <p>Cost: one extra rename per file, two per folder; the old and the new folder take disk space together until
+ * the old one is deleted. Limits: this guards against a process that dies (a signal, a crash), not against a power
+ * loss: nothing is {@code fsync}ed, so after a power cut a file system may show a renamed file empty.
  */
 public final class AtomicFiles {
 
