@@ -43,8 +43,8 @@ import org.openworld.engine.files.AtomicFiles;
  * <p>Small on purpose: 64×36 pixels, a 256² world, water and shadows off, 60 frames, two benches killed at once
  * (each into its own folder), the forks started with C1 only. A fork spends most of its time starting the JVM and
  * making the world. Measured on the project's 2-core machine shared with other builds: 77 s at load average 5,
- * 144 s at load average 8 to 11 (174 s one fork at a time); at that load a 1-frame bench alone took 3.5 s, so the
- * 21 forks cannot fit in a minute there.
+ * 144 s at load average 8 to 11 (174 s one fork at a time, with 100 frames); at that load a 1-frame bench took 3.5 s,
+ * so the 22 forks cannot fit in a minute there.
  */
 @Tag("gl")
 class BenchKillTest {
