@@ -21,6 +21,12 @@ import picocli.CommandLine.Option;
  * {@code openworld bench}: replays a camera path at the fixed step, one step per frame, and writes
  * {@code frames.csv}, {@code summary.json} and {@code frametime.png} (docs/benchmarks.md). With {@code --compare}
  * it prints two earlier runs side by side instead.
+ *
+ * <p>Nothing is lost: {@code --out} is checked before the world is made ({@link Outputs#runFolder}); the three files
+ * replace the earlier run together ({@link BenchReport#write}); and SIGINT or SIGTERM during the frames
+ * ({@link StopSignal}) stops the loop and writes the frames measured so far as a partial run ({@code "complete":
+ * false}), then the JVM exits with 130 or 143. With {@code --discard-partial} a stopped run writes nothing and the
+ * earlier run stays.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true, description = "Replay a camera path and record per-frame timings, or compare two runs.")
 final class BenchCommand implements Callable<Integer> {
@@ -47,6 +53,11 @@ final class BenchCommand implements Callable<Integer> {
             description = "Compare two summary.json files: each metric side by side with the ratio B/A.")
     List<Path> compare;
 
+    @Option(names = "--discard-partial",
+            description = "On SIGINT or SIGTERM, write nothing and keep the earlier run (default: write the frames "
+                    + "measured so far as a partial run).")
+    boolean discardPartial;
+
     /** Most frames of one run, warm-up included: about 4.6 hours at 60 fps, every record held in memory. */
     static final int MAX_FRAMES = 1_000_000;
 
@@ -67,7 +78,9 @@ final class BenchCommand implements Callable<Integer> {
         }
         CameraPath cameraPath = CameraPathParser.parse(path);
         checkFrameCount(cameraPath);
-        try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld bench")) {
+        Outputs.runFolder(out, BenchReport.FILES);
+        try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld bench");
+             StopSignal stop = StopSignal.install()) {
             var engine = launch.engine;
             step = engine.settings().get(EngineSettings.class).step();
             int recorded = frames != null ? frames : (int) Math.floor(cameraPath.duration() / step) + 1;
@@ -78,22 +91,33 @@ final class BenchCommand implements Callable<Integer> {
                     engine.width(), engine.height(), launch.gl.renderer());
             // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
             Poses.direct(engine.world(), CameraDirection.hold(cameraPath, cameraPath.startTime()));
-            for (int i = 0; i < total; i++) {
-                if (i == warmup) {
+            int rendered = 0; // frames rendered: total, unless a signal stopped the run
+            for (; rendered < total && !stop.requested(); rendered++) {
+                if (rendered == warmup) {
                     Poses.direct(engine.world(), CameraDirection.play(cameraPath, cameraPath.startTime(), false));
                 }
                 engine.update();
                 engine.render();
                 engine.collectFrames(false, r -> keep(r, records));
-                if ((i + 1) % reportEvery == 0) {
-                    System.err.printf("bench: %d/%d frames%n", i + 1, total);
+                if ((rendered + 1) % reportEvery == 0) {
+                    System.err.printf("bench: %d/%d frames%n", rendered + 1, total);
                 }
             }
             engine.collectFrames(true, r -> keep(r, records));
             RunInfo info = new RunInfo(launch.gl.renderer(), launch.gl.version(), launch.gl.mode().toString(),
                     engine.width(), engine.height(), engine.settings().get(EngineSettings.class).seed(),
                     engine.settings().asText(), path.toString(), warmup);
-            Summary summary = BenchReport.write(info, records, out);
+            boolean complete = rendered == total;
+            if (!complete && (discardPartial || records.isEmpty())) {
+                System.err.printf("bench: stopped by a signal after %d of %d frames; nothing written, %s left as it "
+                        + "was%n", records.size(), recorded, out);
+                return 0;
+            }
+            if (!complete) {
+                System.err.printf("bench: stopped by a signal after %d of %d frames; writing them as a partial run%n",
+                        records.size(), recorded);
+            }
+            Summary summary = BenchReport.write(info, records, out, complete);
             System.out.println(summary.describe());
             System.out.println("wrote " + out.resolve(BenchReport.FRAMES_CSV) + ", " + out.resolve(BenchReport.SUMMARY_JSON)
                     + ", " + out.resolve(BenchReport.FRAMETIME_PNG));

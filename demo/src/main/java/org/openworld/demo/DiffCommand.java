@@ -44,6 +44,9 @@ final class DiffCommand implements Callable<Integer> {
                     + "(the smallest difference) to yellow (the largest).")
     Path out;
 
+    @Option(names = "--force", description = "Overwrite --out even if it is a file other than a PNG.")
+    boolean force;
+
     @Option(names = "--threshold", paramLabel = "DE", defaultValue = "1",
             description = "A pixel is noticeably different above this ΔE00 (default: ${DEFAULT-VALUE}, just "
                     + "noticeable side by side).")
@@ -53,6 +56,9 @@ final class DiffCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         if (!(threshold >= 0)) {
             throw new UserError("--threshold " + threshold + ": expected a colour difference of 0 or more");
+        }
+        if (out != null) {
+            Outputs.png(out, force);
         }
         Image a = read(first);
         Image b = read(second);

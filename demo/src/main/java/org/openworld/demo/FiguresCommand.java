@@ -1,7 +1,5 @@
 package org.openworld.demo;
 
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.ZonedDateTime;
 import java.time.format.DateTimeFormatter;
@@ -60,7 +58,7 @@ final class FiguresCommand implements Callable<Integer> {
         List<Figure> figures = chosen();
         Settings every = Engine.settingsFor(DemoScene.systems());
         set.forEach(every::apply); // an unknown key or a bad value fails here, before any picture
-        prepareFolder();
+        Outputs.folder(out);
 
         // 1. every command parsed, and each shot's settings checked, before the first picture is made
         List<Job> jobs = figures.stream().map(this::job).toList();
@@ -136,16 +134,5 @@ final class FiguresCommand implements Callable<Integer> {
             words.add(override);
         }
         return words;
-    }
-
-    private void prepareFolder() {
-        if (Files.exists(out) && !Files.isDirectory(out)) {
-            throw new UserError("--out " + out + " is a file; give a folder (it is created if missing)");
-        }
-        try {
-            Files.createDirectories(out);
-        } catch (IOException e) {
-            throw new UserError("--out " + out + ": cannot create the folder (" + e.getMessage() + ")");
-        }
     }
 }

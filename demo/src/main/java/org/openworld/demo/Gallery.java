@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Pattern;
+import org.openworld.engine.files.AtomicFiles;
 
 /**
  * The {@code index.html} of {@code openworld figures}: one static page, grouped by the paper's figure, that shows each
@@ -41,9 +42,12 @@ final class Gallery {
     private Gallery() {
     }
 
-    /** Writes {@code index.html} into {@code dir}, which holds the plates' images. */
+    /** Writes {@code index.html} into {@code dir}, which holds the plates' images, whole or not at all. */
     static Path write(Path dir, Made made, List<Plate> plates) throws IOException {
-        return Files.writeString(dir.resolve(INDEX), html(made, plates));
+        Path index = dir.resolve(INDEX);
+        String page = html(made, plates);
+        AtomicFiles.write(index, temp -> Files.writeString(temp, page));
+        return index;
     }
 
     static String html(Made made, List<Plate> plates) {

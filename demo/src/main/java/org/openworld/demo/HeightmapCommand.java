@@ -9,7 +9,6 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
 import java.nio.ByteBuffer;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -30,6 +29,7 @@ import org.lwjgl.stb.STBImageWrite;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
+import org.openworld.engine.files.AtomicFiles;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.terrain.HeightMap;
 import org.openworld.engine.terrain.PowerSpectrum;
@@ -45,7 +45,8 @@ import picocli.CommandLine.Option;
  * pictures: {@code height.png} (16-bit grayscale, lowest sample black, highest white; it can be imported again with
  * {@code --set terrain.import-file=...}), {@code snow.png} (white where snow lies) and {@code spectrum.png} (the
  * radially averaged power spectrum on log-log axes with its fitted line). With {@code --repeat N} it is also the
- * generation benchmark: the median time of each stage over N runs and the peak heap.
+ * generation benchmark: the median time of each stage over N runs and the peak heap. {@code --out} is checked before
+ * the maps are made ({@link Outputs}), and each picture is written whole or not at all ({@link AtomicFiles#write}).
  */
 @Command(name = "heightmap", mixinStandardHelpOptions = true,
         description = "Generate (or import) the height map and snow map without OpenGL; write height.png (16-bit), "
@@ -90,7 +91,9 @@ final class HeightmapCommand implements Callable<Integer> {
         if (repeat < 1) {
             throw new UserError("--repeat must be at least 1, got " + repeat);
         }
-        prepareFolder();
+        for (String name : List.of(HEIGHT_PNG, SNOW_PNG, SPECTRUM_PNG)) {
+            Outputs.png(out.resolve(name), false);
+        }
 
         System.out.println(terrain.imports()
                 ? String.format(Locale.ROOT, "heightmap: importing %s, %s m between samples", terrain.importFile(),
@@ -138,8 +141,8 @@ final class HeightmapCommand implements Callable<Integer> {
         // 3. the pictures
         writeHeight(base, out.resolve(HEIGHT_PNG));
         writeSnow(data.snow(), out.resolve(SNOW_PNG));
-        ImageIO.write(BitmapEncoder.getBufferedImage(chart(spectrum, fit, terrain)), "png",
-                out.resolve(SPECTRUM_PNG).toFile());
+        BufferedImage spectrumChart = BitmapEncoder.getBufferedImage(chart(spectrum, fit, terrain));
+        AtomicFiles.write(out.resolve(SPECTRUM_PNG), file -> ImageIO.write(spectrumChart, "png", file.toFile()));
         System.out.printf(Locale.ROOT, "snow covers %.1f %% of the map%n", 100 * data.snow().fraction());
         System.out.println("wrote " + out.resolve(HEIGHT_PNG) + ", " + out.resolve(SNOW_PNG) + ", "
                 + out.resolve(SPECTRUM_PNG));
@@ -165,17 +168,6 @@ final class HeightmapCommand implements Callable<Integer> {
 
     static Settings newSettings() {
         return new Settings(List.of(EngineSettings.GROUP, TerrainSettings.SETTINGS));
-    }
-
-    private void prepareFolder() {
-        if (Files.exists(out) && !Files.isDirectory(out)) {
-            throw new UserError("--out " + out + " is a file; give a folder (it is created if missing)");
-        }
-        try {
-            Files.createDirectories(out);
-        } catch (IOException e) {
-            throw new UserError("--out " + out + ": cannot create the folder (" + e.getMessage() + ")");
-        }
     }
 
     /**
@@ -213,9 +205,11 @@ final class HeightmapCommand implements Callable<Integer> {
         for (int i = 0; i < h.length; i++) {
             pixels[i] = (short) Math.round((h[i] - min) * scale);
         }
-        if (!ImageIO.write(image, "png", file.toFile())) {
-            throw new IOException(file + ": no PNG writer for 16-bit gray");
-        }
+        AtomicFiles.write(file, temp -> {
+            if (!ImageIO.write(image, "png", temp.toFile())) {
+                throw new IOException(file + ": no PNG writer for 16-bit gray");
+            }
+        });
     }
 
     /** The snow map as an 8-bit grayscale PNG through stb_image_write: white snow, black bare ground. */
@@ -223,9 +217,11 @@ final class HeightmapCommand implements Callable<Integer> {
         byte[] coverage = snow.coverage();
         ByteBuffer pixels = MemoryUtil.memAlloc(coverage.length).put(coverage).flip();
         try {
-            if (!STBImageWrite.stbi_write_png(file.toString(), snow.size(), snow.size(), 1, pixels, snow.size())) {
-                throw new IOException(file + ": could not write PNG");
-            }
+            AtomicFiles.write(file, temp -> {
+                if (!STBImageWrite.stbi_write_png(temp.toString(), snow.size(), snow.size(), 1, pixels, snow.size())) {
+                    throw new IOException(file + ": could not write the PNG (stb_image_write failed)");
+                }
+            });
         } finally {
             MemoryUtil.memFree(pixels);
         }

@@ -23,6 +23,9 @@ final class ShotCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE.png", required = true, description = "The PNG file to write.")
     Path out;
 
+    @Option(names = "--force", description = "Overwrite --out even if it is a file other than a PNG.")
+    boolean force;
+
     @Option(names = "--ui", description = "Draw the window's settings panel and HUD over the picture, as the window "
             + "shows them (for screenshots).")
     boolean ui;
@@ -43,11 +46,12 @@ final class ShotCommand implements Callable<Integer> {
     }
 
     /**
-     * Renders the image these options describe and writes it to {@code --out}: the whole of {@code shot}, less its
-     * printed line, so {@code openworld figures} makes each picture exactly as its printed command would.
+     * Renders the image these options describe and writes it to {@code --out} (checked first, {@link Outputs#png};
+     * written whole or not at all, {@link Image#writePng}): the whole of {@code shot}, less its printed line, so {@code openworld figures} makes each picture exactly as its printed command would.
      */
     Result take() throws Exception {
         var path = Poses.loadPath(pose);
+        Outputs.png(out, force);
         long start = System.nanoTime();
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
             prepare(launch, Poses.still(pose, path));

@@ -17,7 +17,8 @@ import java.util.function.ToDoubleFunction;
  * for fps above 1 does. Backs {@code openworld bench --compare A/summary.json B/summary.json}.
  *
  * <p>A ratio only means something if both runs rendered the same thing on the same machine, so {@link #table()} warns
- * when the renderer, size, camera path, seed or settings differ ({@link #mismatches()}).
+ * when the renderer, size, camera path, seed or settings differ ({@link #mismatches()}), and says when a run is partial
+ * ({@link Summary#complete()}).
  */
 public final class BenchComparison {
 
@@ -98,6 +99,9 @@ public final class BenchComparison {
     public String table() {
         StringBuilder s = new StringBuilder();
         s.append(describeRun("A", a)).append(describeRun("B", b));
+        if (!a.complete() || !b.complete()) {
+            s.append("note: a partial run (stopped early) covers only the start of its camera path\n");
+        }
         List<String> differ = mismatches();
         if (!differ.isEmpty()) {
             s.append("note: A and B differ in ").append(String.join(", ", differ))
@@ -138,8 +142,8 @@ public final class BenchComparison {
     }
 
     private static String describeRun(String label, Summary s) {
-        return String.format(Locale.ROOT, "%s: %s, %s, %s, %d frames after %d warm-up%n", label, s.renderer(),
-                s.size(), s.path(), s.frames(), s.warmup());
+        return String.format(Locale.ROOT, "%s: %s, %s, %s, %d frames after %d warm-up%s%n", label, s.renderer(),
+                s.size(), s.path(), s.frames(), s.warmup(), s.complete() ? "" : ", partial");
     }
 
     private static String format(OptionalDouble value) {

@@ -20,6 +20,9 @@ import java.util.Map;
  * @param path              the camera path file replayed
  * @param warmup            frames rendered before recording
  * @param frames            frames recorded
+ * @param complete          whether the run recorded every frame it meant to; false for a run stopped by a signal
+ *                          and written with the frames it had ({@code docs/benchmarks.md}); a file written before
+ *                          this field existed reads as complete
  * @param frameMs           distribution of {@link FrameRecord#frameMs()}, milliseconds
  * @param meanFps           1000 / mean frame time, frames per second
  * @param cpuMs             distribution of whole-frame CPU time, milliseconds
@@ -31,7 +34,7 @@ import java.util.Map;
  */
 public record Summary(String renderer, String glVersion, String contextMode, String size, long seed,
                       Map<String, String> settings, String path, int warmup, int frames,
-                      FrameTimes frameMs, double meanFps, CpuTimes cpuMs,
+                      Boolean complete, FrameTimes frameMs, double meanFps, CpuTimes cpuMs,
                       Map<String, Double> passGpuMsMedian, Map<String, Double> systemCpuMsMedian,
                       Map<String, Double> countersMedian, double trianglesMedian, double drawCallsMedian) {
 
@@ -43,8 +46,12 @@ public record Summary(String renderer, String glVersion, String contextMode, Str
     public record CpuTimes(double median, double p95) {
     }
 
-    /** A file written before a map existed, or by hand, reads as an empty map rather than null. */
+    /**
+     * A file written before a map existed, or by hand, reads as an empty map rather than null, and one written before
+     * {@code complete} existed as complete (every run was).
+     */
     public Summary {
+        complete = complete == null || complete;
         settings = orderedCopy(settings);
         passGpuMsMedian = orderedCopy(passGpuMsMedian);
         systemCpuMsMedian = orderedCopy(systemCpuMsMedian);
@@ -65,12 +72,19 @@ public record Summary(String renderer, String glVersion, String contextMode, Str
         Percentiles triangles = Percentiles.of(frames.stream().map(f -> (double) f.triangles()).toList());
         Percentiles drawCalls = Percentiles.of(frames.stream().map(f -> (double) f.drawCalls()).toList());
         return new Summary(run.renderer(), run.glVersion(), run.contextMode(), run.width() + "x" + run.height(),
-                run.seed(), run.settings(), run.path(), run.warmup(), frames.size(),
+                run.seed(), run.settings(), run.path(), run.warmup(), frames.size(), true,
                 new FrameTimes(frame.median(), frame.at(95), frame.at(99), frame.max(), frame.mean()),
                 1000.0 / frame.mean(),
                 new CpuTimes(cpu.median(), cpu.at(95)),
                 FrameColumns.PASS_GPU_MS.medians(frames), FrameColumns.SYSTEM_CPU_MS.medians(frames),
                 FrameColumns.COUNTERS.medians(frames), triangles.median(), drawCalls.median());
+    }
+
+    /** This summary, marked complete or partial. */
+    public Summary withComplete(boolean isComplete) {
+        return new Summary(renderer, glVersion, contextMode, size, seed, settings, path, warmup, frames, isComplete,
+                frameMs, meanFps, cpuMs, passGpuMsMedian, systemCpuMsMedian, countersMedian, trianglesMedian,
+                drawCallsMedian);
     }
 
     /**
@@ -80,9 +94,9 @@ public record Summary(String renderer, String glVersion, String contextMode, Str
      */
     public String describe() {
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT,
-                "%s at %s, %d frames after %d warm-up: frame time median %.2f ms, p95 %.2f ms, p99 %.2f ms, "
+                "%s%s at %s, %d frames after %d warm-up: frame time median %.2f ms, p95 %.2f ms, p99 %.2f ms, "
                         + "max %.2f ms; mean %.2f ms = %.1f fps. CPU median %.2f ms",
-                renderer, size, frames, warmup, frameMs.median, frameMs.p95, frameMs.p99, frameMs.max, frameMs.mean,
+                complete ? "" : "partial run (stopped early): ", renderer, size, frames, warmup, frameMs.median, frameMs.p95, frameMs.p99, frameMs.max, frameMs.mean,
                 meanFps, cpuMs.median));
         passGpuMsMedian.entrySet().stream().max(Map.Entry.comparingByValue()).ifPresent(slowest -> s.append(
                 String.format(Locale.ROOT, "; slowest GPU pass: %s %.2f ms median", slowest.getKey(),

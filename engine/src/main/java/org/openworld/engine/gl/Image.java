@@ -8,6 +8,7 @@ import org.lwjgl.stb.STBImage;
 import org.lwjgl.stb.STBImageWrite;
 import org.lwjgl.system.MemoryStack;
 import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.files.AtomicFiles;
 
 /**
  * An 8-bit RGBA image in memory, top row first: what a render reads back, and what {@code shot} writes as PNG
@@ -88,17 +89,20 @@ public final class Image {
         return sum / Math.max(1, (x1 - x0) * (y1 - y0));
     }
 
-    /** Writes a PNG, creating parent folders. */
+    /**
+     * Writes a PNG, creating parent folders: into a temporary file beside {@code file}, renamed over it
+     * ({@link AtomicFiles#write}), so a reader never sees half a picture.
+     */
     public void writePng(Path file) throws IOException {
         Path parent = file.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
-        }
+        Files.createDirectories(parent);
         ByteBuffer pixels = MemoryUtil.memAlloc(rgba.length).put(rgba).flip();
         try {
-            if (!STBImageWrite.stbi_write_png(file.toString(), width, height, 4, pixels, width * 4)) {
-                throw new IOException(file + ": could not write PNG");
-            }
+            AtomicFiles.write(file, temp -> {
+                if (!STBImageWrite.stbi_write_png(temp.toString(), width, height, 4, pixels, width * 4)) {
+                    throw new IOException(file + ": could not write the PNG (stb_image_write failed)");
+                }
+            });
         } finally {
             MemoryUtil.memFree(pixels);
         }

@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.OptionalDouble;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -20,14 +21,14 @@ class BenchComparisonTest {
 
     /** Run A: water on, grass counter at 0. */
     private static final Summary A = new Summary("test renderer", "3.3", "headless-egl", "640x360", 42L,
-            Map.of("water.method", "fft"), "valley.path", 10, 100,
+            Map.of("water.method", "fft"), "valley.path", 10, 100, true,
             new Summary.FrameTimes(10, 12, 15, 20, 10.5), 1000 / 10.5, new Summary.CpuTimes(4, 5),
             BenchFrames.ordered("terrain", 6.0, "water", 2.0), BenchFrames.ordered("terrain", 3.0),
             BenchFrames.ordered("terrain.visible", 100.0, "grass.blades", 0.0), 1_000_000, 100);
 
     /** Run B: water off, a sky pass added, faster terrain. */
     private static final Summary B = new Summary("test renderer", "3.3", "headless-egl", "640x360", 42L,
-            Map.of("water.method", "off"), "valley.path", 10, 100,
+            Map.of("water.method", "off"), "valley.path", 10, 100, true,
             new Summary.FrameTimes(8, 9, 12, 30, 8.4), 1000 / 8.4, new Summary.CpuTimes(5, 6),
             BenchFrames.ordered("terrain", 3.0, "sky", 1.0), BenchFrames.ordered("terrain", 1.5),
             BenchFrames.ordered("terrain.visible", 80.0, "grass.blades", 5.0), 500_000, 150);
@@ -82,6 +83,16 @@ class BenchComparisonTest {
                 table);
         assertTrue(lineOf(table, "GPU ms median, pass water").matches(".*2\\.000\\s+—\\s+—"), table);
         assertTrue(lineOf(table, "triangles median").matches(".*1000000\\s+500000\\s+0\\.500"), table);
+    }
+
+    @Test
+    void tableSaysWhichRunIsPartial() {
+        String table = new BenchComparison(A, B.withComplete(false)).table();
+        assertTrue(table.contains("B: test renderer, 640x360, valley.path, 100 frames after 10 warm-up, partial"),
+                table);
+        assertTrue(table.contains("A: test renderer, 640x360, valley.path, 100 frames after 10 warm-up\n"), table);
+        assertTrue(table.contains("note: a partial run"), table);
+        assertFalse(new BenchComparison(A, B).table().contains("partial"));
     }
 
     @Test

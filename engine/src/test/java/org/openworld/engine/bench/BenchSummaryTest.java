@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -45,7 +46,7 @@ class BenchSummaryTest {
 
     @Test
     void writtenAndReadBackUnchangedInOrder() throws IOException {
-        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), dir.resolve("run"));
+        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), dir.resolve("run"), true);
         Path json = dir.resolve("run").resolve(BenchReport.SUMMARY_JSON);
 
         Summary read = SummaryJson.read(json);
@@ -55,11 +56,32 @@ class BenchSummaryTest {
 
         String text = Files.readString(json);
         for (String field : List.of("\"renderer\"", "\"glVersion\"", "\"contextMode\"", "\"size\": \"640x360\"",
-                "\"seed\": 42", "\"settings\"", "\"path\"", "\"warmup\": 10", "\"frames\": 3", "\"frameMs\"",
+                "\"seed\": 42", "\"settings\"", "\"path\"", "\"warmup\": 10", "\"frames\": 3", "\"complete\": true", "\"frameMs\"",
                 "\"p99\"", "\"meanFps\"", "\"cpuMs\"", "\"passGpuMsMedian\"", "\"systemCpuMsMedian\"",
                 "\"countersMedian\"", "\"trianglesMedian\"", "\"drawCallsMedian\"")) {
             assertTrue(text.contains(field), () -> field + " missing in\n" + text);
         }
+    }
+
+    @Test
+    void aPartialRunSaysSoInTheFileAndTheDescription() throws IOException {
+        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), dir.resolve("run"), false);
+        Path json = dir.resolve("run").resolve(BenchReport.SUMMARY_JSON);
+        assertTrue(Files.readString(json).contains("\"complete\": false"), Files.readString(json));
+        Summary read = SummaryJson.read(json);
+        assertFalse(read.complete());
+        assertEquals(written, read);
+        assertTrue(read.describe().startsWith("partial run (stopped early): test renderer at 640x360, 3 frames"),
+                read.describe());
+    }
+
+    @Test
+    void aSummaryWrittenBeforeCompleteExistedReadsAsComplete() throws IOException {
+        Path json = dir.resolve(BenchReport.SUMMARY_JSON);
+        SummaryJson.write(Summary.of(BenchFrames.RUN, BenchFrames.threeFrames()), json);
+        Files.writeString(json, Files.readString(json).replaceAll("\\s*\"complete\": true,", ""));
+        assertFalse(Files.readString(json).contains("complete"));
+        assertTrue(SummaryJson.read(json).complete());
     }
 
     @Test

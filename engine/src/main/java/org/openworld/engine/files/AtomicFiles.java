@@ -1,0 +1,141 @@
+package org.openworld.engine.files;
+
+import java.io.IOException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Comparator;
+import java.util.stream.Stream;
+
+/**
+ * Replaces a file, or a folder of files, all at once: the new content is written beside its place (a temporary file
+ * or folder in the same parent folder, so on the same file system) and then renamed into place.
+ *
+ * <p><b>A file</b> ({@link #write}) is replaced by one {@code rename(2)} ({@code Files.move} with
+ * {@code ATOMIC_MOVE}): a reader, or a crash at any moment, sees the whole old file or the whole new one. Where the
+ * file system cannot move atomically, the move falls back to {@code REPLACE_EXISTING}, which is not atomic. A crash
+ * while writing leaves a hidden {@code .NAME.*.tmp} file beside the target.
+ *
+ * <p><b>A folder</b> ({@link #replaceFolder}) is written complete into a hidden {@code .NAME.new-*} folder beside
+ * it, then swapped in by two renames: the old folder to {@code .NAME.old} beside it, the new one to its place; then
+ * the old one is deleted. POSIX has no rename that swaps two folders in one step, so this is not atomic as a whole:
+ * a crash between the two renames leaves no folder at {@code NAME} and the whole old one at {@code .NAME.old}; the
+ * next {@link #replaceFolder} of the same folder (and {@link #recoverFolder}) moves it back first. At every other
+ * moment {@code NAME} holds the whole old folder or the whole new one. Leftover {@code .NAME.new-*} folders of a
+ * crashed write are deleted by the next write.
+ *
+ * <p>Cost: one extra rename per file, two per folder; the old and the new folder take disk space together until
+ * the old one is deleted. Limits: this guards against a process that dies (a signal, a crash), not against a power
+ * loss: nothing is {@code fsync}ed, so after a power cut a file system may show a renamed file empty.
+ */
+public final class AtomicFiles {
+
+    /** Writes content at the path it is given: a file to create, or a new empty folder to fill. */
+    @FunctionalInterface
+    public interface Content {
+        void writeTo(Path path) throws IOException;
+    }
+
+    private AtomicFiles() {
+    }
+
+    /** Writes a file through a temporary file in the same folder and renames it over {@code file}. */
+    public static void write(Path file, Content content) throws IOException {
+        Path target = file.toAbsolutePath();
+        Path temp = target.resolveSibling("." + target.getFileName() + "." + uniqueSuffix() + ".tmp");
+        try {
+            content.writeTo(temp);
+            move(temp, target);
+        } finally {
+            Files.deleteIfExists(temp);
+        }
+    }
+
+    /**
+     * Fills a new folder and swaps it in for {@code folder} (created if absent), deleting the old one and everything
+     * in it. If {@code content} fails, the new folder is deleted and {@code folder} is left as it was.
+     */
+    public static void replaceFolder(Path folder, Content content) throws IOException {
+        Path target = folder.toAbsolutePath();
+        Path parent = target.getParent();
+        Files.createDirectories(parent);
+        recoverFolder(target);
+        deleteStaleWrites(target);
+        Path fresh = Files.createDirectory(parent.resolve("." + target.getFileName() + ".new-" + uniqueSuffix()));
+        try {
+            content.writeTo(fresh);
+        } catch (IOException | RuntimeException | Error e) {
+            deleteTree(fresh);
+            throw e;
+        }
+        Path aside = aside(target);
+        if (Files.exists(target)) {
+            move(target, aside);
+        }
+        move(fresh, target);
+        deleteTree(aside);
+    }
+
+    /**
+     * Moves the old folder back to {@code folder} if a crash between {@link #replaceFolder}'s two renames left it
+     * aside and nothing in its place; returns whether it did.
+     */
+    public static boolean recoverFolder(Path folder) throws IOException {
+        Path target = folder.toAbsolutePath();
+        Path aside = aside(target);
+        if (Files.exists(target)) {
+            deleteTree(aside); // a crash after the second rename: the new folder is in place
+            return false;
+        }
+        if (!Files.isDirectory(aside)) {
+            return false;
+        }
+        move(aside, target);
+        return true;
+    }
+
+    /** Where {@link #replaceFolder} puts the old folder between its two renames: {@code .NAME.old} beside it. */
+    public static Path aside(Path folder) {
+        Path target = folder.toAbsolutePath();
+        return target.resolveSibling("." + target.getFileName() + ".old");
+    }
+
+    /**
+     * A name part no other writer uses: this process and a clock tick. Not {@code Files.createTempFile}, which
+     * makes files only their owner may read (0600): the temporary file becomes the output, which should get the
+     * usual permissions (the umask's), as a file written in place would.
+     */
+    private static String uniqueSuffix() {
+        return ProcessHandle.current().pid() + "-" + System.nanoTime();
+    }
+
+    private static void deleteStaleWrites(Path target) throws IOException {
+        try (DirectoryStream<Path> stale = Files.newDirectoryStream(target.getParent(),
+                "." + target.getFileName() + ".new-*")) {
+            for (Path leftover : stale) {
+                deleteTree(leftover);
+            }
+        }
+    }
+
+    private static void move(Path from, Path to) throws IOException {
+        try {
+            Files.move(from, to, StandardCopyOption.ATOMIC_MOVE);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(from, to, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    private static void deleteTree(Path root) throws IOException {
+        if (!Files.exists(root)) {
+            return;
+        }
+        try (Stream<Path> all = Files.walk(root)) {
+            for (Path p : all.sorted(Comparator.reverseOrder()).toList()) {
+                Files.delete(p);
+            }
+        }
+    }
+}
