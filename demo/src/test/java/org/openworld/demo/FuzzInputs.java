@@ -1,12 +1,20 @@
 package org.openworld.demo;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Consumer;
+import net.jqwik.api.Arbitraries;
+import net.jqwik.api.Arbitrary;
+import net.jqwik.api.statistics.Statistics;
 import net.jqwik.api.statistics.StatisticsCoverage;
 
 /**
@@ -37,13 +45,53 @@ final class FuzzInputs {
             + "\u0085\uFEFF\u00e9\u0663\uff11\ud83d\ude00";
 
     /** The outcomes the fuzz tests count, as jqwik statistics. */
-    static final String ACCEPTED = "accepted";
-    static final String REFUSED = "refused";
+    private static final String ACCEPTED = "accepted";
+    private static final String REFUSED = "refused";
 
     private final String separator;
 
     FuzzInputs(String separator) {
         this.separator = separator;
+    }
+
+    /** One parse of a fuzzed input, with its checks when accepted. */
+    interface Attempt {
+        void run() throws Exception;
+    }
+
+    /**
+     * The property of every fuzz test: the attempt succeeds (its own checks included), or throws {@code refusal},
+     * which {@code check} then examines; any other exception fails the property. Counts both outcomes and requires
+     * each in at least 5 % of the inputs.
+     */
+    static <E extends Exception> void acceptedOrRefused(Attempt attempt, Class<E> refusal, Consumer<E> check)
+            throws Exception {
+        try {
+            attempt.run();
+            Statistics.collect(ACCEPTED);
+        } catch (Exception e) {
+            if (!refusal.isInstance(e)) {
+                throw e;
+            }
+            check.accept(refusal.cast(e));
+            Statistics.collect(REFUSED);
+        }
+        Statistics.coverage(FuzzInputs::bothOutcomes);
+    }
+
+    /** Inputs for a property: one in ten random text, the others mutations of one of the {@code valid} inputs. */
+    Arbitrary<Case> cases(List<String> valid) {
+        return Arbitraries.randomValue(random -> Case.of(random.nextInt(10) == 0 ? randomText(random)
+                : mutate(valid.get(random.nextInt(valid.size())), random), random));
+    }
+
+    /** A new temporary folder for a property's files (the test class removes it after its properties). */
+    static Path temporaryFolder(String prefix) {
+        try {
+            return Files.createTempDirectory(prefix);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     /** Random text, up to a few hundred characters over {@link #ALPHABET}. */
@@ -60,7 +108,7 @@ final class FuzzInputs {
      * Fails the property unless at least 5 % of its inputs were accepted and 5 % refused: a generator that only ever
      * makes broken inputs (or only valid ones) would let the property pass without testing half of it.
      */
-    static void bothOutcomes(StatisticsCoverage coverage) {
+    private static void bothOutcomes(StatisticsCoverage coverage) {
         coverage.check(ACCEPTED).percentage(p -> p >= 5);
         coverage.check(REFUSED).percentage(p -> p >= 5);
     }
