@@ -35,10 +35,10 @@ import org.openworld.engine.settings.SettingsGroup;
  * exception fails.
  *
  * <p>10 000 files and 10 000 assignments, 5.7 s and 1.4 s on the project's 2-core machine (measured with
- * {@link CameraPathFuzzTest}: the three formats, 32 000 inputs, in 10 s; 24 s beside other builds); a file costs most, being
- * written, read and, when accepted, written and read back. A failure prints jqwik's seed, which replays the run
- * ({@code @Property(seed = "...")}), and the input as a Java literal. Found so far: a text value with a line break
- * was taken and then saved as lines that do not read back (now refused).
+ * {@link CameraPathFuzzTest}: the three formats, 32 000 inputs, in 10 s; 24 s beside other builds); a file costs
+ * most, being written, read and, when accepted, written and read back. A failure prints jqwik's seed, which replays
+ * the run ({@code @Property(seed = "...")}), and the input as a Java literal. Found so far: a text value with a line
+ * break was taken and then saved as lines that do not read back (now refused).
  */
 class SettingsFuzzTest {
 

@@ -26,17 +26,17 @@ import org.openworld.engine.trees.TreeSystem;
  * the heap used after a full collection may grow from the first quarter to the last.
  *
  * <p>GL objects: the count at the end of the first quarter must hold through the whole last quarter. It is not flat
- * from the first frame: the systems make some objects on first use (GPU timer queries as frames queue up, the trees'
- * buffers once they are placed), 95 after the first frame and 116 within the first hundred here. The heap (sampled at two
- * points of each quarter, each the least of three full collections) wobbles by about 0.1 MB run to run, as the JIT
- * and JUnit allocate on their own; it may not grow by {@value #HEAP_TOLERANCE_MB} MB, which over the 750 frames
- * between the quarters is under 3 kB a frame: a leak of one small array a frame fails the test.
+ * from the first frame: the systems make some objects on first use (GPU timer queries as frames queue up, the
+ * trees' buffers once they are placed), 95 after the first frame and 116 within the first hundred here. The heap
+ * (sampled at two points of each quarter, each the least of three full collections) wobbles by about 0.1 MB run to
+ * run, as the JIT and JUnit allocate on their own; it may not grow by {@value #HEAP_TOLERANCE_MB} MB, which over the
+ * 750 frames between the quarters is under 3 kB a frame: a leak of one small array a frame fails the test.
  *
- * <p>Cost, and why 1 000 frames and not 2 000: on the project's 2-core machine under Mesa llvmpipe, shared with other
- * builds, a frame of this world takes about 55 ms (the terrain's periodic copies drawn into two shadow cascades, the
- * reflection and the view), so 2 000 frames took close to two minutes; 1 000 fit the minute a CI test may take
- * (measured: 1 000 frames in 54 s, 57 s with start-up). Shadows use two cascades over 400 m and the trees end at
- * 200 m to keep the frame that cheap; every system still runs every pass.
+ * <p>Cost, and why 1 000 frames and not 2 000: on the project's 2-core machine under Mesa llvmpipe a frame of this
+ * world takes about 50 ms, most of it the terrain drawn into the shadow cascades, the reflection and the view, so
+ * 2 000 frames would take close to two minutes; 1 000 fit the minute a CI test may take (measured: 51 s on a quiet
+ * machine, 54 s beside other builds). Shadows use two cascades over 400 m and the trees end at 200 m to keep the
+ * frame that cheap (with four cascades, 400 frames took 66 s); every system still runs every pass.
  */
 @GlTest
 class SoakTest {
