@@ -26,6 +26,13 @@ public final class CameraPathParser {
     /** A plain decimal number: no NaN, Infinity, hexadecimal or type suffixes, which Double.parseDouble allows. */
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
 
+    /**
+     * Largest magnitude of any number, 10⁹ (metres, seconds or degrees): far beyond any world or flight, and small
+     * enough that the path's arithmetic (reflected end points, distances, their products in the curve) stays finite;
+     * 1e308 would sample as NaN.
+     */
+    static final double MAX_MAGNITUDE = 1e9;
+
     private static final String DIRECTIVE = "heights";
 
     private CameraPathParser() {
@@ -189,6 +196,9 @@ public final class CameraPathParser {
             double value = Double.parseDouble(token.text());
             if (!Double.isFinite(value)) {
                 throw error(token, "a finite number for " + field);
+            }
+            if (Math.abs(value) > MAX_MAGNITUDE) {
+                throw error(token, "a number within ±1e9 for " + field);
             }
             return value;
         }

@@ -217,6 +217,11 @@ public final class Settings {
         String valid = validValues(key);
         try {
             if (t == String.class) {
+                if (text.indexOf('\n') >= 0 || text.indexOf('\r') >= 0) {
+                    // A settings file holds one key=value a line: a line break could not be saved and read back.
+                    throw new SettingsException(key.key() + " is not valid: expected one line of text, found a line"
+                            + " break");
+                }
                 return text;
             }
             if (t == boolean.class) {

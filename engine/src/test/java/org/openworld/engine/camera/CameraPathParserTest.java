@@ -45,6 +45,17 @@ class CameraPathParserTest {
         assertError("0 0 0 0 0 0\n1 0 1e999 0 0 0\n", "2:5: expected a finite number for y, found '1e999'");
     }
 
+    /** Found by the fuzz test: finite but huge numbers overflowed the curve, and the path sampled as NaN. */
+    @Test
+    void reportsANumberTooLargeForThePathArithmetic() throws CameraPathFormatException {
+        assertError("0 0 0 0 0 0\n1 -1e308 0 0 0 0\n", "2:3: expected a number within ±1e9 for x, found '-1e308'");
+        assertError("0 0 0 0 0 0\n1e10 0 0 0 0 0\n", "2:1: expected a number within ±1e9 for time, found '1e10'");
+        CameraPath widest = CameraPathParser.parse(SOURCE, "-1e9 -1e9 1e9 -1e9 -1e9 0\n1e9 1e9 -1e9 1e9 1e9 0\n");
+        CameraPose middle = widest.sample(0, (x, z) -> 0);
+        assertTrue(Double.isFinite(middle.x()) && Double.isFinite(middle.y()) && Double.isFinite(middle.yaw()),
+                middle.toString());
+    }
+
     @Test
     void reportsTooFewAndTooManyFields() {
         assertError("0 0 0 0 0 0\n1  2 3 4 5\n", "2:11: expected a number for pitch, found end of line");

@@ -60,6 +60,17 @@ class SettingsFileTest {
         assertTrue(!loaded.systemEnabled("water") && loaded.systemEnabled("snow"));
     }
 
+    /** Found by the fuzz test: a text value with a line break was taken, then saved as two lines that do not read. */
+    @Test
+    void aTextValueWithALineBreakIsRefusedSoEverySavedFileReadsBack() {
+        Settings s = fresh();
+        for (String value : new String[] {"a\nb", "a\rb", "a\r\nb"}) {
+            SettingsException e = assertThrows(SettingsException.class, () -> s.set("file.source", value));
+            assertEquals("file.source is not valid: expected one line of text, found a line break", e.getMessage());
+        }
+        assertEquals("", s.text("file.source"));
+    }
+
     @Test
     void aHandWrittenFileMayHoldAFewKeysCommentsAndBlankLines() throws IOException {
         Path file = dir.resolve("few.settings");
