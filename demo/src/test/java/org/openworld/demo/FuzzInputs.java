@@ -211,14 +211,21 @@ final class FuzzInputs {
             return broken;
         }
 
-        /** Whether {@link #bytes()} are well-formed UTF-8, so that the file is text. */
-        boolean isUtf8() {
+        /**
+         * Whether {@link #bytes()} are a text file as {@code TextFile} reads one: well-formed UTF-8 without a NUL byte.
+         * Anything else is refused as "not a text file: byte 0x.. at offset N", naming the file, before any line.
+         */
+        boolean isText() {
             try {
-                StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(bytes()));
-                return true;
+                return StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(bytes())).chars().noneMatch(c -> c == 0);
             } catch (CharacterCodingException e) {
                 return false;
             }
+        }
+
+        /** The message a file that is not text gets, with the file's name in it. */
+        static String notTextMessage(String file) {
+            return ".*" + java.util.regex.Pattern.quote(file) + ".*not a text file: byte 0x[0-9a-f]{2} at offset \\d+.*";
         }
 
         @Override
