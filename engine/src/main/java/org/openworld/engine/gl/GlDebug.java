@@ -2,6 +2,7 @@ package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL43C.*;
 
+import java.util.List;
 import java.util.function.Consumer;
 import org.lwjgl.opengl.GL;
 import org.lwjgl.opengl.GLCapabilities;
@@ -31,6 +32,8 @@ public final class GlDebug {
     private final int maxLabel;
     private final boolean available;
     private GLDebugMessageCallback callback;
+    /** Where messages go while they are printed; null otherwise. */
+    private Consumer<String> sink;
 
     GlDebug() {
         GLCapabilities caps = GL.getCapabilities();
@@ -77,12 +80,15 @@ public final class GlDebug {
     /**
      * Hands every driver message of low severity or above to {@code sink} as one line, e.g.
      * {@code GL error (api, high, id 1282): GL_INVALID_OPERATION in glBindTexture(...)}; notifications (the driver
-     * saying where a buffer lives) and the engine's own group markers are left out. {@code null} stops the output.
+     * saying where a buffer lives) and the engine's own group markers are left out. So are the shader compiler's:
+     * their source numbers and lines are those of the expanded text, so {@link ShaderProgram} hands them over itself,
+     * mapped back to their files ({@link #compilerMessages}). {@code null} stops the output.
      */
     public void printMessages(Consumer<String> sink) {
         if (!available) {
             return;
         }
+        this.sink = sink;
         if (sink == null) {
             glDisable(GL_DEBUG_OUTPUT);
             glDebugMessageCallback(null, 0);
@@ -96,8 +102,20 @@ public final class GlDebug {
         freeCallback();
         callback = fresh;
         glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DEBUG_SEVERITY_NOTIFICATION, (int[]) null, false);
+        glDebugMessageControl(GL_DEBUG_SOURCE_SHADER_COMPILER, GL_DONT_CARE, GL_DONT_CARE, (int[]) null, false);
         glEnable(GL_DEBUG_OUTPUT);
         glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    }
+
+    /**
+     * The log of a shader that compiled, its lines already mapped to their files ({@code ShaderLog}), to the sink
+     * while messages are printed: the compiler's warnings, in place of its own debug messages, which name the
+     * expanded text's lines.
+     */
+    void compilerMessages(List<String> mapped) {
+        if (sink != null) {
+            mapped.forEach(line -> sink.accept("GL shader compiler: " + line));
+        }
     }
 
     /** One message as one line: {@code GL <type> (<source>, <severity>, id <id>): <message>}. */

@@ -206,6 +206,10 @@ public final class ShaderProgram implements Labelled {
             String heading = this + ": " + sources.displayName(stage) + with + " did not compile";
             throw new ShaderException(report(heading, log));
         }
+        String warnings = glGetShaderInfoLog(shader);
+        if (!warnings.isBlank()) {
+            gl.debug().compilerMessages(ShaderLog.compile(warnings, expanded, sources));
+        }
         return shader;
     }
 

@@ -8,6 +8,7 @@ import static org.lwjgl.opengl.GL11C.*;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.GlTest;
@@ -80,6 +81,39 @@ class ShaderProgramTest {
         assertTrue(reports(e, fog + ":15:", "fogg"), e.getMessage());
         // Every line of the driver's log is put at a file line: none is left to name the stage file alone.
         assertTrue(logLines(e).stream().allMatch(line -> line.startsWith(fog + ":15:")), e.getMessage());
+    }
+
+    @Test
+    void withDebugOutputTheCompilersMessagesNameTheirFilesToo() throws IOException {
+        // --dev prints the driver's messages; the compiler's would name lines of the expanded text, so the debug
+        // output leaves them out and the program hands over its log, mapped: a warning as a line at its file
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", """
+                // The colour every pixel gets, from a value never set.
+                vec3 tint() {
+                    float unset;
+                    return vec3(unset);
+                }
+                """);
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+        List<String> printed = new ArrayList<>();
+        GL.context().debug().printMessages(printed::add);
+        try {
+            library.program("fill.vert", "fill.frag").close();
+            String tint = dir.resolve("lib/tint.glsl").toString();
+            assertTrue(printed.stream().anyMatch(line -> line.startsWith("GL shader compiler: " + tint + ":4:")
+                    && line.contains("unset")), printed.toString());
+
+            printed.clear();
+            write("lib/tint.glsl", "vec3 tint() { return vec3(fogg); }\n");
+            ShaderLibrary broken = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+            assertThrows(ShaderException.class, () -> broken.program("fill.vert", "fill.frag"));
+            assertTrue(printed.stream().noneMatch(line -> line.contains("fogg")),
+                    "a failed compile is reported once, mapped, by its exception: " + printed);
+        } finally {
+            GL.context().debug().printMessages(null);
+        }
     }
 
     @Test
