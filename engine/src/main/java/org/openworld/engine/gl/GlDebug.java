@@ -110,7 +110,8 @@ public final class GlDebug {
     /**
      * The log of a shader that compiled, its lines already mapped to their files ({@code ShaderLog}), to the sink
      * while messages are printed: the compiler's warnings, in place of its own debug messages, which name the
-     * expanded text's lines.
+     * expanded text's lines. A driver that takes the program from its shader cache (Mesa's) compiles nothing and
+     * has no warnings to give.
      */
     void compilerMessages(List<String> mapped) {
         if (sink != null) {

@@ -89,8 +89,9 @@ class ShaderProgramTest {
         // output leaves them out and the program hands over its log, mapped: a warning as a line at its file
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
-        write("lib/tint.glsl", """
-                // The colour every pixel gets, from a value never set.
+        // a source of its own: Mesa's shader cache gives a text it compiled before (another run) no log at all
+        write("lib/tint.glsl", "// run " + System.nanoTime() + """
+
                 vec3 tint() {
                     float unset;
                     return vec3(unset);
@@ -106,7 +107,7 @@ class ShaderProgramTest {
                     && line.contains("unset")), printed.toString());
 
             printed.clear();
-            write("lib/tint.glsl", "vec3 tint() { return vec3(fogg); }\n");
+            write("lib/tint.glsl", "// run " + System.nanoTime() + "\nvec3 tint() { return vec3(fogg); }\n");
             ShaderLibrary broken = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
             assertThrows(ShaderException.class, () -> broken.program("fill.vert", "fill.frag"));
             assertTrue(printed.stream().noneMatch(line -> line.contains("fogg")),
