@@ -139,7 +139,7 @@ final class ShadowProbe {
         depthCopy = owned.replace("probe.depth", depthCopy,
                 new Framebuffer(gl, width, height, null, Format.DEPTH24_STENCIL8, Sampling.NEAREST_CLAMP));
         probed = owned.replace("probe.points", probed, points(width, height));
-        lastProbed = owned.replace("probe.points", lastProbed, points(width, height));
+        lastProbed = owned.replace("probe.last-points", lastProbed, points(width, height));
         revisited = owned.replace("probe.revisited", revisited, points(width, height));
         haveLast = false;
         pixels = new float[width * height * ShadowStatistics.CHANNELS];

@@ -83,6 +83,8 @@ public final class SkySystem implements EngineSystem {
     private SunTables tables;
     private SunTables uploaded;
     private double simTime;
+    /** Whether a simulation step has run: init's update, of 0 s, sees the camera before anyone placed it. */
+    private boolean stepped;
     private double environmentTime = Double.NEGATIVE_INFINITY;
     private boolean environmentDirty = true;
 
@@ -168,15 +170,16 @@ public final class SkySystem implements EngineSystem {
             building = null;
         }
         if (tables == null || tables.staleFor(atmosphere, elevation, altitude)) {
-            // at once, not in the background, when there are none yet, when the sun or the eye jumped, and at the
-            // first step: the tables of init are for wherever the camera was before the director placed it
-            if (tables == null || step > 0 && simTime == step || jumped(atmosphere, elevation, altitude)) {
+            // at once, not in the background, when there are none yet, when the sun or the eye jumped, and until
+            // the first step: the tables of init are for wherever the camera was before the director placed it
+            if (tables == null || !stepped || jumped(atmosphere, elevation, altitude)) {
                 accept(build(tables, atmosphere, elevation, altitude), counters);
             } else if (building == null) {
                 SunTables current = tables;
                 building = CompletableFuture.supplyAsync(() -> build(current, atmosphere, elevation, altitude), worker);
             }
         }
+        stepped |= step > 0;
         SkyLight light = tables.light();
         world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient())));
         world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
