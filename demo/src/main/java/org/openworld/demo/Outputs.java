@@ -8,9 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
-import java.util.List;
 import java.util.Set;
-import java.util.stream.Stream;
 
 /**
  * Checks a command's {@code --out} before any work, so a run is never lost for want of a place to write it: every
@@ -64,9 +62,9 @@ final class Outputs {
     }
 
     /**
-     * A folder that a whole run replaces (bench: {@code names} are its files): its parent as {@link #folder}, and
-     * the folder absent, or holding nothing but the files of an earlier run, since the new run replaces the whole
-     * folder. A file in its place is refused.
+     * A folder a run is written into (bench: {@code names} are its files): its parent as {@link #folder}, and a
+     * folder or nothing at {@code dir}, never a file. A new run replaces the earlier run's files all together and
+     * keeps whatever else the folder holds ({@code AtomicFiles.replaceFolder}).
      */
     static void runFolder(Path dir, Set<String> names) {
         Path absolute = dir.toAbsolutePath();
@@ -75,19 +73,8 @@ final class Outputs {
             throw refused(dir, "is a file; give a folder for the run's " + String.join(", ", names.stream().sorted()
                     .toList()));
         }
-        if (!Files.isDirectory(dir)) {
-            return;
-        }
-        try (Stream<Path> files = Files.list(dir)) {
-            List<String> others = files.map(p -> p.getFileName().toString()).filter(n -> !names.contains(n))
-                    .sorted().toList();
-            if (!others.isEmpty()) {
-                throw refused(dir, "holds " + others.get(0) + (others.size() > 1 ? " and " + (others.size() - 1)
-                        + " more" : "") + ", not an earlier run's file; a run replaces the whole folder, so give "
-                        + "a new folder or an earlier run's");
-            }
-        } catch (IOException e) {
-            throw refused(dir, "cannot read the folder: " + reason(e));
+        if (Files.isDirectory(dir) && !Files.isWritable(dir)) {
+            throw refused(dir, "cannot write in the folder");
         }
     }
 

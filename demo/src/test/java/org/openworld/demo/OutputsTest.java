@@ -49,15 +49,6 @@ class OutputsTest {
                 "bench", "--path", VALLEY, "--out", out.toString());
     }
 
-    @Test
-    void benchRefusesAFolderThatHoldsMoreThanARun() throws Exception {
-        Path out = Files.createDirectory(dir.resolve("home"));
-        Files.writeString(out.resolve("thesis.tex"), "years of work");
-        Files.writeString(out.resolve(BenchReport.SUMMARY_JSON), "{}");
-        assertRefused("--out " + out + ": holds thesis.tex, not an earlier run's file; a run replaces the whole "
-                + "folder, so give a new folder or an earlier run's", "bench", "--path", VALLEY, "--out", out.toString());
-        assertTrue(Files.exists(out.resolve("thesis.tex")));
-    }
 
     @Test
     void shotInAFolderThatCannotBeWrittenSaysWhy() {

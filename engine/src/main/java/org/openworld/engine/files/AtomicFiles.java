@@ -54,8 +54,11 @@ public final class AtomicFiles {
     }
 
     /**
-     * Fills a new folder and swaps it in for {@code folder} (created if absent), deleting the old one and everything
-     * in it. If {@code content} fails, the new folder is deleted and {@code folder} is left as it was.
+     * Fills a new folder and swaps it in for {@code folder} (created if absent). What the old folder holds that the
+     * new content does not write (a log, the camera path a script put beside the run) is moved into the new folder
+     * just before the swap, by renames, so it is kept, and a file still open for writing (a shell's redirect) goes on
+     * being written in its new place; the old folder, holding only the replaced files, is then deleted. If
+     * {@code content} fails, the new folder is deleted and {@code folder} is left as it was.
      */
     public static void replaceFolder(Path folder, Content content) throws IOException {
         Path target = folder.toAbsolutePath();
@@ -71,7 +74,12 @@ public final class AtomicFiles {
             throw e;
         }
         Path aside = aside(target);
-        if (Files.exists(target)) {
+        if (Files.isDirectory(target)) {
+            try (Stream<Path> old = Files.list(target)) {
+                for (Path kept : old.filter(p -> !Files.exists(fresh.resolve(p.getFileName()))).toList()) {
+                    move(kept, fresh.resolve(kept.getFileName()));
+                }
+            }
             move(target, aside);
         }
         move(fresh, target);

@@ -38,10 +38,23 @@ class AtomicFilesTest {
     }
 
     @Test
-    void aFolderIsReplacedWithAllItsFiles() throws IOException {
+    void aFolderIsReplacedWithAllItsFilesAndKeepsWhatElseItHolds() throws IOException {
         Path run = oldRun();
-        AtomicFiles.replaceFolder(run, fresh -> Files.writeString(fresh.resolve("b.txt"), "new"));
-        assertEquals(List.of("b.txt"), names(run), "the old folder's files are gone with it");
+        // a log still open for writing, as a shell's redirect into the run folder leaves it during the run
+        try (var log = Files.newBufferedWriter(run.resolve("bench.log"))) {
+            log.write("before ");
+            log.flush();
+            AtomicFiles.replaceFolder(run, fresh -> {
+                Files.writeString(fresh.resolve("a.txt"), "new a");
+                Files.writeString(fresh.resolve("b.txt"), "new b");
+            });
+            log.write("after");
+        }
+        assertEquals(List.of("a.txt", "b.txt", "bench.log"), names(run));
+        assertEquals("new a", Files.readString(run.resolve("a.txt")), "the run's files are the new ones");
+        assertEquals("new b", Files.readString(run.resolve("b.txt")));
+        assertEquals("before after", Files.readString(run.resolve("bench.log")),
+                "another file is kept, and an open one goes on being written in its new place");
         assertEquals(List.of("run"), names(dir), "no temporary or aside folder stays");
     }
 
