@@ -53,6 +53,11 @@ final class BenchCommand implements Callable<Integer> {
             description = "Compare two summary.json files: each metric side by side with the ratio B/A.")
     List<Path> compare;
 
+    @Option(names = "--profile",
+            description = "Finish the GPU around every span and record its wall time in place of the timer query: "
+                    + "an exact split of the frame on any driver, for a slower, serialised frame.")
+    boolean profile;
+
     @Option(names = "--discard-partial",
             description = "On SIGINT or SIGTERM, write nothing and keep the earlier run (default: write the frames "
                     + "measured so far as a partial run).")
@@ -83,6 +88,9 @@ final class BenchCommand implements Callable<Integer> {
              StopSignal stop = StopSignal.install()) {
             var engine = launch.engine;
             step = engine.settings().get(EngineSettings.class).step();
+            if (profile) {
+                engine.profile();
+            }
             int recorded = frames != null ? frames : (int) Math.floor(cameraPath.duration() / step) + 1;
             List<FrameRecord> records = new ArrayList<>();
             int total = warmup + recorded;

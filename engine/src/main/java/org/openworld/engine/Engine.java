@@ -71,6 +71,7 @@ public final class Engine implements AutoCloseable {
     private FrameTiming timing;
     private SharedBindings shared;
     private long frame;
+    private boolean profiling;
 
     /**
      * Resolves the system order and initialises every system (on this, the GL thread).
@@ -200,13 +201,26 @@ public final class Engine implements AutoCloseable {
         return settings.systemEnabled(system);
     }
 
+    /**
+     * Profiles every frame from the first (docs/benchmarks.md, "Profiling"): the GPU is finished around each span
+     * (each system in each pass, each update, each pass's clear as {@code pass.engine}) and the span's wall time is
+     * recorded in place of its timer query, so the spans split the frame exactly on any driver, llvmpipe included,
+     * at the price of a serialised, slower frame.
+     *
+     * @throws IllegalStateException after the first frame
+     */
+    public void profile() {
+        timing.profile();
+        profiling = true;
+    }
+
     /** Advances the simulation by exactly one fixed step. */
     public void update() {
         double step = settings.get(EngineSettings.class).step();
         for (EngineSystem system : order.systems()) {
             String name = system.spec().name();
             if (isEnabled(name)) {
-                timing.time(name, system.spec().isUpdatedOnGpu() ? "update." + name : null,
+                timing.time(name, system.spec().isUpdatedOnGpu() || profiling ? "update." + name : null,
                         () -> system.update(world, step));
             }
         }
@@ -243,11 +257,14 @@ public final class Engine implements AutoCloseable {
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
                 shared.bind(world, view, viewer, clock.simTime(), frame, shadowDrawn);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
-                view.target().bind();
-                glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
-                if (pass != Pass.OVERLAY) {
-                    clear(pass);
-                }
+                String label = pass.label() + (views.size() > 1 ? String.valueOf(v) : "") + ".";
+                timing.timeEngine(label + "engine", () -> {
+                    view.target().bind();
+                    glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
+                    if (pass != Pass.OVERLAY) {
+                        clear(pass);
+                    }
+                });
                 // 3. each system's state for the whole pass (EngineSystem.beginPass), before anyone draws
                 RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
                 for (EngineSystem system : drawing) {
@@ -257,7 +274,6 @@ public final class Engine implements AutoCloseable {
                 }
                 // 4. the systems draw, each timed on the GPU as one span labelled pass.system, or passN.system
                 //    for the N-th of several views (shadow0.terrain, shadow1.terrain, ... one per cascade)
-                String label = pass.label() + (views.size() > 1 ? String.valueOf(v) : "") + ".";
                 for (EngineSystem system : drawing) {
                     if (!isEnabled(system.spec().name())) {
                         continue;

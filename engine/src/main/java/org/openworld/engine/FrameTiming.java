@@ -1,5 +1,7 @@
 package org.openworld.engine;
 
+import static org.lwjgl.opengl.GL11C.glFinish;
+
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.LinkedHashMap;
@@ -24,6 +26,11 @@ import org.openworld.engine.gl.GpuTimers;
  *
  * <p>At most two frames are in flight ({@link FrameThrottle}), as with a swap chain: without it a driver that queues
  * work would let the CPU run ahead and the wall times would measure the queue, not the frames.
+ *
+ * <p><b>Profiling</b> ({@link #profile}): timer queries read near zero on a driver that rasterises at flush (Mesa's
+ * llvmpipe). A profiled frame instead finishes the GPU ({@code glFinish}) before and after every span, each update
+ * included, and records each span's wall time, so the spans split the frame exactly, on any driver, at the price of
+ * serialising CPU and GPU: a profiled frame is slower than a plain one, and its parts are what each costs alone.
  */
 final class FrameTiming {
 
@@ -33,6 +40,10 @@ final class FrameTiming {
     private final List<EngineSystem> systems;
     private final Map<String, Double> systemNanos = new LinkedHashMap<>();
     private final Deque<FrameRecord> awaitingGpu = new ArrayDeque<>();
+    /** The profiled frame's span times, milliseconds, in the order the spans ran. */
+    private final Map<String, Double> profiledMs = new LinkedHashMap<>();
+    private final Deque<FrameRecord> profiled = new ArrayDeque<>();
+    private boolean profiling;
     private long frameStart;
     private long lastFrameEnd;
 
@@ -41,6 +52,14 @@ final class FrameTiming {
         this.systems = systems;
         timers = owned.own(new GpuTimers(gl));
         throttle = owned.own(new FrameThrottle(gl));
+    }
+
+    /** Profiles every frame: each span is timed by finishing the GPU around it. Only before the first frame. */
+    void profile() {
+        if (lastFrameEnd != 0 || frameStart != 0) {
+            throw new IllegalStateException("profiling is chosen before the first frame");
+        }
+        profiling = true;
     }
 
     /** The frame's rendering starts now. */
@@ -53,20 +72,46 @@ final class FrameTiming {
      * {@code gpuSpan} (null: its work issues no GPU commands worth a span).
      */
     void time(String system, String gpuSpan, Runnable work) {
+        if (profiling) {
+            glFinish();
+        }
         long t0 = System.nanoTime();
-        if (gpuSpan != null) {
+        if (gpuSpan != null && !profiling) {
             timers.begin(gpuSpan);
         }
         work.run();
-        if (gpuSpan != null) {
+        if (gpuSpan != null && !profiling) {
             timers.end();
         }
-        systemNanos.merge(system, (double) (System.nanoTime() - t0), Double::sum);
+        long cpuEnd = System.nanoTime();
+        systemNanos.merge(system, (double) (cpuEnd - t0), Double::sum);
+        if (profiling && gpuSpan != null) {
+            glFinish();
+            profiledMs.merge(gpuSpan, (System.nanoTime() - t0) / 1e6, Double::sum);
+        }
+    }
+
+    /**
+     * Runs the engine's own part of a pass (binding and clearing its target), timed only when profiling, as the
+     * span {@code pass.engine}, so that a profiled frame's spans cover all of it.
+     */
+    void timeEngine(String span, Runnable work) {
+        if (!profiling) {
+            work.run();
+            return;
+        }
+        glFinish();
+        long t0 = System.nanoTime();
+        work.run();
+        glFinish();
+        profiledMs.merge(span, (System.nanoTime() - t0) / 1e6, Double::sum);
     }
 
     /** Closes the frame's spans, waits for the frame before the last, and queues the frame's CPU record. */
     void endFrame(long frame, double simTime, DrawStats stats, Counters counters) {
-        timers.endFrame(frame);
+        if (!profiling) {
+            timers.endFrame(frame);
+        }
         double cpuMs = (System.nanoTime() - frameStart) / 1e6;
         throttle.endFrame();
         long frameEnd = System.nanoTime();
@@ -79,9 +124,16 @@ final class FrameTiming {
                 systemMs.put(s.spec().name(), nanos / 1e6);
             }
         }
-        awaitingGpu.add(new FrameRecord((int) frame, simTime, wallMs, cpuMs, systemMs, Map.of(), stats.triangles(),
-                stats.drawCalls(), counters.snapshot()));
+        if (profiling) {
+            // no timer queries were made: the record is whole now, its spans' wall times in place of GPU times
+            profiled.add(new FrameRecord((int) frame, simTime, wallMs, cpuMs, systemMs, Map.copyOf(profiledMs),
+                    stats.triangles(), stats.drawCalls(), counters.snapshot()));
+        } else {
+            awaitingGpu.add(new FrameRecord((int) frame, simTime, wallMs, cpuMs, systemMs, Map.of(), stats.triangles(),
+                    stats.drawCalls(), counters.snapshot()));
+        }
         systemNanos.clear();
+        profiledMs.clear();
     }
 
     /**
@@ -90,6 +142,9 @@ final class FrameTiming {
      * @param wait true to wait for the GPU to finish every frame rendered so far
      */
     void collect(boolean wait, Consumer<FrameRecord> sink) {
+        while (!profiled.isEmpty()) {
+            sink.accept(profiled.pop());
+        }
         timers.collect(wait, (frameIndex, gpuMs) -> {
             FrameRecord cpu = awaitingGpu.pop();
             sink.accept(new FrameRecord(cpu.frame(), cpu.simTime(), cpu.wallMs(), cpu.cpuMs(), cpu.systemCpuMs(), gpuMs,
