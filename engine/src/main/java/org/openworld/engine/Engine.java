@@ -260,6 +260,7 @@ public final class Engine implements AutoCloseable {
                 String label = pass.label() + (views.size() > 1 ? String.valueOf(v) : "") + ".";
                 timing.timeEngine(label + "engine", () -> {
                     view.target().bind();
+                    glDisable(GL_SCISSOR_TEST); // the whole target; a pass's owner may scissor it in beginPass
                     glFrontFace(view.camera().mirrored() ? GL_CW : GL_CCW);
                     if (pass != Pass.OVERLAY) {
                         clear(pass);
@@ -284,9 +285,10 @@ public final class Engine implements AutoCloseable {
             }
             shadowDrawn |= pass == Pass.SHADOW && !views.isEmpty();
         }
-        // a neutral state for whatever draws next (the window's panel): front faces wind CCW, no stencil test
+        // a neutral state for whatever draws next (the window's panel): front faces wind CCW, no stencil nor scissor
         glFrontFace(GL_CCW);
         glDisable(GL_STENCIL_TEST);
+        glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         // 5. the frame's times queued for its GPU times; at most two frames in flight, as with a swap chain
         timing.endFrame(frame, clock.simTime(), stats, counters);

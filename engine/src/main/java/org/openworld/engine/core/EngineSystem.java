@@ -42,7 +42,9 @@ public interface EngineSystem extends AutoCloseable {
      * the engine has bound the pass's target and cleared it (OVERLAY, drawn over the picture, is not cleared), before
      * any system's {@link #render} in it, and only while this system is switched on. It is for GL state that the
      * systems drawing <em>before</em> this one must already obey: the water's stencil method has every fragment drawn
-     * in MAIN mark the stencil, so it sets that rule here, and no other system need know of it.
+     * in MAIN mark the stencil, so it sets that rule here, and no other system need know of it; and it scissors the
+     * reflection pass to the water's part of the screen. Each pass starts without a scissor, its target cleared
+     * whole.
      *
      * <p>Every working system's hook runs, in frame order, before the first one draws; so set only state that this
      * system's technique owns and that the others' drawing does not change. The engine puts back a neutral state

@@ -9,7 +9,7 @@ import org.openworld.engine.core.FftThreads;
 /**
  * The water's ripples: a periodic tile of wind-driven waves that loops in time, synthesised once on the CPU as
  * Tessendorf's FFT ocean (J. Tessendorf, "Simulating Ocean Water", SIGGRAPH course notes 2001) and handed to the
- * shader as {@link #frames()} layers of surface slopes and heights. The derivation, step by step, is in
+ * shader as {@link #frames()} layers of surface slopes. The derivation, step by step, is in
  * {@code docs/water.md}, section "The ripples, derived".
  *
  * <p><b>What it does.</b> The waves come from {@link RippleSpectrum}: Phillips' wind-sea spectrum on the tile's
@@ -23,7 +23,8 @@ import org.openworld.engine.core.FftThreads;
  *       frames is the caller's {@code rmsSlope}, meant to be Cox and Munk's clean-surface
  *       √(0.003 + 0.00512 V) for a wind of V m/s (JOSA 44, 1954), possibly scaled; this class honours whatever it is
  *       given;</li>
- *   <li>the texels: slopes and height packed into RGBA8 ({@link #texels}).</li>
+ *   <li>the texels: the slopes of two successive frames packed into RGBA8 ({@link #texels}), so the shader blends
+ *       between frames with one texture read.</li>
  * </ul>
  *
  * <p><b>Cost.</b> At start-up, O(F · N² log N) for F frames of N² texels: per frame, N² sines and cosines for the
@@ -47,9 +48,6 @@ final class RippleField {
     /** Largest tile side, texels: 4096² floats are 64 MiB per layer, already far beyond a ripple texture. */
     static final int MAX_SIZE = 4096;
 
-    /** The height channel of {@link #texels} spans ± this many RMS heights (beyond 3σ is rare: 0.3 % of texels). */
-    static final double HEIGHT_RANGE_IN_RMS = 3;
-
     private final int frames;
     private final double tileMetres;
     private final double periodSeconds;
@@ -57,7 +55,6 @@ final class RippleField {
     private final RippleSpectrum spectrum;
     private final List<Frame> layers;
     private final double rmsSlope;
-    private final double rmsHeight;
 
     /**
      * One moment of the field, texels in rows z = 0.., x fastest.
@@ -115,18 +112,12 @@ final class RippleField {
 
         // 3. what they hold
         double slopeSum = 0;
-        double heightSum = 0;
         for (Frame frame : layers) {
             for (float s : frame.slopes()) {
                 slopeSum += (double) s * s;
             }
-            for (float v : frame.heights()) {
-                heightSum += (double) v * v;
-            }
         }
-        double texels = (double) frames * size * size;
-        this.rmsSlope = Math.sqrt(slopeSum / texels);
-        this.rmsHeight = Math.sqrt(heightSum / texels);
+        this.rmsSlope = Math.sqrt(slopeSum / ((double) frames * size * size));
     }
 
     /**
@@ -256,16 +247,12 @@ final class RippleField {
         return rmsSlope;
     }
 
-    /** √(mean of h²) over all texels and frames, metres: the height channel of {@link #texels} spans ±3 of it. */
-    double rmsHeight() {
-        return rmsHeight;
-    }
-
     /**
-     * The frames as RGBA8 texels for a texture array, one {@code 4 · size²} byte array per frame, rows z = 0..,
-     * x fastest: R = 128 + 127 · clamp(sx / slopeScale, −1, 1), G likewise for sz, B likewise for
-     * h / ({@value #HEIGHT_RANGE_IN_RMS} · {@link #rmsHeight()}), A = 255, each rounded to the nearest integer. The
-     * shader decodes s = (byte − 128) / 127 · slopeScale, within 0.5 / 127 · slopeScale of the float.
+     * The frames as RGBA8 texels for a texture array, one {@code 4 · size²} byte array per frame f, rows z = 0..,
+     * x fastest: R = 128 + 127 · clamp(sx / slopeScale, −1, 1) and G likewise for sz, both of frame f; B and A the
+     * same of frame f + 1 (frame 0 after the last: the loop closes), each rounded to the nearest integer. The shader
+     * decodes s = (byte − 128) / 127 · slopeScale, within 0.5 / 127 · slopeScale of the float, and blends frame f
+     * into f + 1 from a single texture read, where a texel of one frame would take two.
      *
      * @param slopeScale the slope that maps to 255 (its negative to 1), &gt; 0: a few times {@link #rmsSlope()}
      *                   keeps clamping rare and the steps fine
@@ -275,15 +262,16 @@ final class RippleField {
             throw new IllegalArgumentException("slopeScale must be finite and > 0, got " + slopeScale);
         }
         int size = spectrum.size();
-        double heightScale = HEIGHT_RANGE_IN_RMS * rmsHeight;
         List<byte[]> out = new ArrayList<>(frames);
-        for (Frame frame : layers) {
+        for (int f = 0; f < frames; f++) {
+            float[] now = layers.get(f).slopes();
+            float[] next = layers.get((f + 1) % frames).slopes();
             byte[] rgba = new byte[4 * size * size];
             for (int i = 0; i < size * size; i++) {
-                rgba[4 * i] = unorm8(frame.slopes()[2 * i] / slopeScale);
-                rgba[4 * i + 1] = unorm8(frame.slopes()[2 * i + 1] / slopeScale);
-                rgba[4 * i + 2] = unorm8(frame.heights()[i] / heightScale);
-                rgba[4 * i + 3] = (byte) 255;
+                rgba[4 * i] = unorm8(now[2 * i] / slopeScale);
+                rgba[4 * i + 1] = unorm8(now[2 * i + 1] / slopeScale);
+                rgba[4 * i + 2] = unorm8(next[2 * i] / slopeScale);
+                rgba[4 * i + 3] = unorm8(next[2 * i + 1] / slopeScale);
             }
             out.add(rgba);
         }

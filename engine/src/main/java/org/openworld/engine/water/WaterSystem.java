@@ -3,9 +3,11 @@ package org.openworld.engine.water;
 import static org.lwjgl.opengl.GL11C.*;
 import static org.lwjgl.opengl.GL14C.glBlendFuncSeparate;
 import static org.lwjgl.opengl.GL30C.*;
+import static org.lwjgl.opengl.GL32C.GL_DEPTH_CLAMP;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
@@ -83,6 +85,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     private Owned owned;
     private Mesh fullScreen;
     private ShaderProgram fresnelProgram;
+    private ShaderProgram underwaterProgram;
     private ShaderProgram stencilProgram;
     private Texture2D fresnelTable;
     private TextureArray ripples;
@@ -102,16 +105,47 @@ public final class WaterSystem implements EngineSystem, PassOwner {
      */
     private ViewCamera mirroredViewer;
     private double simTime;
-    private FresnelUniforms fresnelUniforms;
-    private StencilUniforms stencilUniforms;
+    private OpticsUniforms fresnelUniforms;
+    private OpticsUniforms underwaterUniforms;
+    private Uniform.Int reflectedUniform;
+    private Uniform.Vec3 bodyUniform;
+    private Uniform.Float microSlope2Uniform;
+    private Uniform.Vec3 insideUniform;
+    private PlaneUniforms stencilPlane;
+    private Uniform.Int stencilStep;
+    private Uniform.Float stencilAlpha;
 
-    private record FresnelUniforms(Uniform.Float level, Uniform.Int reflected, Uniform.Int underwater,
-                                   Uniform.Vec3 extinction, Uniform.Vec3 body, Uniform.Vec3 inside,
-                                   Uniform.Vec4 ripple,
-                                   Uniform.Float microSlope2) {
+    /** Where the plane lies on the screen (water.vert): its NDC depth and the horizon that cuts it. */
+    private record PlaneUniforms(Uniform.Vec3 depth, Uniform.Vec3 horizon) {
+
+        static PlaneUniforms of(ShaderProgram program) {
+            return new PlaneUniforms(program.vec3("uDepthPlane"), program.vec3("uHorizon"));
+        }
+
+        /** The plane's depth and horizon; null for a full-screen triangle at depth 0, nothing cut (no clip). */
+        void set(PlaneOnScreen plane) {
+            if (plane == null) {
+                depth.set(0, 0, 0);
+                horizon.set(0, 0, 1);
+            } else {
+                depth.set(plane.depth());
+                horizon.set(plane.horizon());
+            }
+        }
     }
 
-    private record StencilUniforms(Uniform.Float level, Uniform.Int step, Uniform.Float alpha) {
+    /** The uniforms of water/optics.glsl, which both of the Fresnel method's programs include. */
+    private record OpticsUniforms(PlaneUniforms plane, Uniform.Float level, Uniform.Vec3 extinction,
+                                  Uniform.Vec4 ripple) {
+
+        static OpticsUniforms of(ShaderProgram program) {
+            program.sampler("refraction", UNIT_REFRACTION);
+            program.sampler("depthCopy", UNIT_DEPTH);
+            program.sampler("fresnelTable", UNIT_FRESNEL);
+            program.sampler("ripples", UNIT_RIPPLES);
+            return new OpticsUniforms(PlaneUniforms.of(program), program.float1("uLevel"),
+                    program.vec3("uExtinction"), program.vec4("uRipple"));
+        }
     }
 
     @Override
@@ -120,7 +154,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         // copies to show what lies behind the water. The level is published, not written in the frame: the trees,
         // opaque and so before the water, read it too.
         return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class)
-                .publishes(WaterLevel.class).overOpaque().draws(Pass.MAIN);
+                .publishes(WaterLevel.class).overOpaque().prepares(Pass.REFLECTION).draws(Pass.MAIN);
     }
 
     @Override
@@ -138,20 +172,22 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         gl = context.gl();
         owned = context.owned();
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
+        // above and under the water: two programs, not one with a branch, so neither pays for the other's shading
         fresnelProgram = context.own("fresnel", context.shaders().program("water/water.vert", "water/fresnel.frag"));
         fresnelProgram.sampler("reflection", UNIT_REFLECTION);
-        fresnelProgram.sampler("refraction", UNIT_REFRACTION);
-        fresnelProgram.sampler("depthCopy", UNIT_DEPTH);
-        fresnelProgram.sampler("fresnelTable", UNIT_FRESNEL);
-        fresnelProgram.sampler("ripples", UNIT_RIPPLES);
-        fresnelUniforms = new FresnelUniforms(fresnelProgram.float1("uLevel"), fresnelProgram.int1("uReflected"),
-                fresnelProgram.int1("uUnderwater"), fresnelProgram.vec3("uExtinction"), fresnelProgram.vec3("uBody"),
-                fresnelProgram.vec3("uInside"),
-                fresnelProgram.vec4("uRipple"), fresnelProgram.float1("uMicroSlope2"));
+        fresnelUniforms = OpticsUniforms.of(fresnelProgram);
+        reflectedUniform = fresnelProgram.int1("uReflected");
+        bodyUniform = fresnelProgram.vec3("uBody");
+        microSlope2Uniform = fresnelProgram.float1("uMicroSlope2");
+        underwaterProgram = context.own("underwater",
+                context.shaders().program("water/water.vert", "water/underwater.frag"));
+        underwaterUniforms = OpticsUniforms.of(underwaterProgram);
+        insideUniform = underwaterProgram.vec3("uInside");
         stencilProgram = context.own("stencil", context.shaders().program("water/water.vert", "water/stencil.frag"));
         stencilProgram.sampler("reflection", UNIT_REFLECTION);
-        stencilUniforms = new StencilUniforms(stencilProgram.float1("uLevel"), stencilProgram.int1("uStep"),
-                stencilProgram.float1("uAlpha"));
+        stencilPlane = PlaneUniforms.of(stencilProgram);
+        stencilStep = stencilProgram.int1("uStep");
+        stencilAlpha = stencilProgram.float1("uAlpha");
         fresnelTable = context.own("fresnelTable",
                 Texture2D.empty(gl, FRESNEL_SIZE, 2, Format.R16F, Sampling.LINEAR_CLAMP));
         FloatBuffer table = MemoryUtil.memAllocFloat(2 * FRESNEL_SIZE).put(Fresnel.table(FRESNEL_SIZE)).flip();
@@ -174,7 +210,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     @Override
     public List<PassView> passViews(World world, PassView viewer) {
         WaterSettings s = world.resource(Settings.class).get(WaterSettings.class);
-        if (viewer.camera().position().y() < s.level() + MirrorCamera.MIN_HEIGHT) {
+        if (viewer.camera().position().y() < s.level() + MirrorCamera.MIN_HEIGHT
+                || !onScreen(viewer.camera(), s).visible()) {
             return List.of();
         }
         int width = s.reflection().of(viewer.target().width());
@@ -196,6 +233,10 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     @Override
     public void beginPass(Pass pass, RenderContext context) {
         WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
+        if (pass == Pass.REFLECTION) {
+            scissorToWater(s, context.target());
+            return;
+        }
         if (pass != Pass.MAIN || !drawsByStencil(s, context.camera())) {
             return;
         }
@@ -207,8 +248,32 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     }
 
+    /**
+     * The reflection pass draws only where the water can be seen: the bounding rectangle of the screen below the
+     * horizon ({@link PlaneOnScreen}), in the reflection target's pixels (it is aligned with the screen). Nothing
+     * there is lost: a mirrored ray points below the horizon, so the water looks the reflection up below the horizon
+     * line only. Set after the engine cleared the whole target (alpha 0: nothing drawn), and lifted by the engine at
+     * the next pass.
+     */
+    private void scissorToWater(WaterSettings s, Framebuffer target) {
+        Vector4fc ndc = onScreen(mirroredViewer, s).bounds();
+        int x0 = (int) Math.floor((ndc.x() + 1) / 2 * target.width());
+        int y0 = (int) Math.floor((ndc.y() + 1) / 2 * target.height());
+        int x1 = (int) Math.ceil((ndc.z() + 1) / 2 * target.width());
+        int y1 = (int) Math.ceil((ndc.w() + 1) / 2 * target.height());
+        glScissor(x0, y0, x1 - x0, y1 - y0);
+        glEnable(GL_SCISSOR_TEST);
+    }
+
+    private static PlaneOnScreen onScreen(ViewCamera camera, WaterSettings s) {
+        return PlaneOnScreen.of(camera.viewProjection(), camera.position().y(), (float) s.level());
+    }
+
     @Override
     public void render(Pass pass, RenderContext context) {
+        if (pass != Pass.MAIN) {
+            return; // the reflection pass only takes the scissor (beginPass)
+        }
         WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
         updateRipples(s);
         boolean underwater = underwater(s, context.camera());
@@ -245,29 +310,52 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     private void drawFresnel(WaterSettings s, boolean underwater, boolean reflected, RenderContext context) {
         WaterOptics optics = WaterOptics.of(s.clarity());
-        double slopeVariance = s.rmsSlope() * s.rmsSlope();
-        fresnelProgram.use();
-        fresnelUniforms.level().set((float) s.level());
-        fresnelUniforms.reflected().set(reflected ? 1 : 0);
-        fresnelUniforms.underwater().set(underwater ? 1 : 0);
-        fresnelUniforms.extinction().set(optics.extinction());
-        fresnelUniforms.body().set(optics.body());
-        fresnelUniforms.inside().set(optics.inside());
-        fresnelUniforms.ripple().set((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
+        ShaderProgram program = underwater ? underwaterProgram : fresnelProgram;
+        OpticsUniforms uniforms = underwater ? underwaterUniforms : fresnelUniforms;
+        program.use();
+        uniforms.level().set((float) s.level());
+        uniforms.extinction().set(optics.extinction());
+        uniforms.ripple().set((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
                 (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale);
-        fresnelUniforms.microSlope2().set((float) (slopeVariance * (1 - RESOLVED_VARIANCE)));
-        if (reflection != null) {
-            reflection.color().bind(UNIT_REFLECTION);
-        }
         behind.color().bind(UNIT_REFRACTION);
         behind.depth().bind(UNIT_DEPTH);
         fresnelTable.bind(UNIT_FRESNEL);
         ripples.bind(UNIT_RIPPLES);
-        // every pixel's own depth test, against the copy: the shader writes the water's depth where it is seen
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
         glDepthMask(true);
+        if (underwater) {
+            // every pixel is under water: the shader writes the surface's depth, or the scene's where that is nearer
+            insideUniform.set(optics.inside());
+            uniforms.plane().set(null);
+            glDepthFunc(GL_ALWAYS);
+            fullScreen.draw(context.stats());
+            glDepthFunc(GL_LESS);
+            return;
+        }
+        double slopeVariance = s.rmsSlope() * s.rmsSlope();
+        reflectedUniform.set(reflected ? 1 : 0);
+        bodyUniform.set(optics.body());
+        microSlope2Uniform.set((float) (slopeVariance * (1 - RESOLVED_VARIANCE)));
+        if (reflection != null) {
+            reflection.color().bind(UNIT_REFLECTION);
+        }
+        drawPlane(uniforms.plane(), s, context);
+    }
+
+    /**
+     * The plane as geometry with its own depth, cut at the horizon ({@link PlaneOnScreen}): depth-tested before its
+     * fragment shader runs, so only the water that is seen is shaded. Beyond the far plane the depth is clamped to
+     * it (depth clamp instead of clipping), where the sky lies, so the test passes with equal depths: the water
+     * reaches the horizon.
+     */
+    private void drawPlane(PlaneUniforms uniforms, WaterSettings s, RenderContext context) {
+        uniforms.set(onScreen(context.camera(), s));
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_DEPTH_CLAMP);
+        glEnable(GL_CLIP_DISTANCE0);
         fullScreen.draw(context.stats());
+        glDisable(GL_CLIP_DISTANCE0);
+        glDisable(GL_DEPTH_CLAMP);
         glDepthFunc(GL_LESS);
     }
 
@@ -277,18 +365,16 @@ public final class WaterSystem implements EngineSystem, PassOwner {
      */
     private void drawStencil(WaterSettings s, boolean reflected, RenderContext context) {
         stencilProgram.use();
-        stencilUniforms.level().set((float) s.level());
-        stencilUniforms.alpha().set((float) s.alpha());
+        stencilAlpha.set((float) s.alpha());
         // 2. the water plane: depth tested, alpha only, 0xFF into the stencil where it passes
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
         glDepthMask(true);
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glColorMask(false, false, false, true);
-        stencilUniforms.step().set(2);
-        fullScreen.draw(context.stats());
+        stencilStep.set(2);
+        drawPlane(stencilPlane, s, context);
         glColorMask(true, true, true, true);
         // 4. the mirrored scene over the whole screen, kept where the stencil says water, blended by its alpha
         if (reflected) {
@@ -299,7 +385,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             glEnable(GL_BLEND);
             glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA, GL_ZERO, GL_ONE);
-            stencilUniforms.step().set(4);
+            stencilStep.set(4);
+            stencilPlane.set(null);
             fullScreen.draw(context.stats());
             glDisable(GL_BLEND);
             glDepthMask(true);
