@@ -2,6 +2,7 @@ package org.openworld.engine.water;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -308,6 +309,39 @@ class WaterRenderTest {
         assertTrue(records.get(1).passGpuMs().containsKey("reflection.terrain"));
         assertTrue(records.get(1).passGpuMs().containsKey("reflection.sky"));
         assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
+    }
+
+    /**
+     * The reflection pass draws only over the water's part of the screen: read back, its target (cleared to alpha 0,
+     * covered with alpha 1 wherever the sky or the terrain draws) is empty above the horizon and full below it.
+     */
+    @Test
+    void theReflectionPassTouchesNoPixelAboveTheHorizon() {
+        // pitch 0: the horizon is the middle row; the water, and so the reflection it reads, fills the lower half
+        Image reflection = render(settings(tower), AT_THE_TOWER).reflection();
+        int horizon = reflection.height() / 2;
+        int drawnAbove = 0;
+        int emptyBelow = 0;
+        for (int y = 0; y < reflection.height(); y++) {
+            for (int x = 0; x < reflection.width(); x++) {
+                boolean drawn = reflection.channel(x, y, 3) > 0;
+                if (y < horizon - 1) {
+                    drawnAbove += drawn ? 1 : 0;
+                } else if (y > horizon + 1) {
+                    emptyBelow += drawn ? 0 : 1;
+                }
+            }
+        }
+        assertEquals(0, drawnAbove, "reflection pixels drawn above the horizon, where no water is");
+        assertEquals(0, emptyBelow, "reflection pixels left empty below the horizon, where the water is");
+    }
+
+    @Test
+    void noReflectionPassWhenNoWaterIsOnScreen() {
+        // 40 degrees up with a 60 degree field: the picture's lowest row looks 10 degrees above the horizon
+        Frame frame = render(settings(tower), new CameraPose(0, 10, 150, 0, 40, 60));
+        assertNull(frame.reflection(), "a reflection pass ran with no water in sight");
+        assertTrue(frame.picture().meanLuma(0, 0, W, H) > 20, "the sky is drawn");
     }
 
     /** The picture row where the water surface at (0, z) appears. */
