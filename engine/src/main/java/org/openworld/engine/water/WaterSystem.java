@@ -29,10 +29,8 @@ import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
-import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
-import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.water.WaterSettings.Method;
@@ -73,20 +71,11 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     static final double RESOLVED_VARIANCE = 0.3;
     /** Slopes are packed into bytes over ± this many times their RMS: beyond 4σ lies 0.03% of a Gaussian. */
     private static final double SLOPE_RANGE = 4;
-    /** Texture units of the water's own textures. */
-    private static final int UNIT_REFLECTION = 0;
-    private static final int UNIT_REFRACTION = 1;
-    private static final int UNIT_DEPTH = 2;
-    private static final int UNIT_FRESNEL = 3;
-    private static final int UNIT_RIPPLES = 4;
-
     private GlContext gl;
     /** What this system owns, for the targets and ripples re-made when the size or the wind changes. */
     private Owned owned;
     private Mesh fullScreen;
-    private ShaderProgram fresnelProgram;
-    private ShaderProgram underwaterProgram;
-    private ShaderProgram stencilProgram;
+    private WaterPrograms programs;
     private Texture2D fresnelTable;
     private TextureArray ripples;
     private float rippleSlopeScale;
@@ -105,49 +94,6 @@ public final class WaterSystem implements EngineSystem, PassOwner {
      */
     private ViewCamera mirroredViewer;
     private double simTime;
-    private OpticsUniforms fresnelUniforms;
-    private OpticsUniforms underwaterUniforms;
-    private Uniform.Int reflectedUniform;
-    private Uniform.Vec3 bodyUniform;
-    private Uniform.Float microSlope2Uniform;
-    private Uniform.Vec3 insideUniform;
-    private PlaneUniforms stencilPlane;
-    private Uniform.Int stencilStep;
-    private Uniform.Float stencilAlpha;
-
-    /** Where the plane lies on the screen (water.vert): its NDC depth and the horizon that cuts it. */
-    private record PlaneUniforms(Uniform.Vec3 depth, Uniform.Vec3 horizon) {
-
-        static PlaneUniforms of(ShaderProgram program) {
-            return new PlaneUniforms(program.vec3("uDepthPlane"), program.vec3("uHorizon"));
-        }
-
-        /** The plane's depth and horizon; null for a full-screen triangle at depth 0, nothing cut (no clip). */
-        void set(PlaneOnScreen plane) {
-            if (plane == null) {
-                depth.set(0, 0, 0);
-                horizon.set(0, 0, 1);
-            } else {
-                depth.set(plane.depth());
-                horizon.set(plane.horizon());
-            }
-        }
-    }
-
-    /** The uniforms of water/optics.glsl, which both of the Fresnel method's programs include. */
-    private record OpticsUniforms(PlaneUniforms plane, Uniform.Float level, Uniform.Vec3 extinction,
-                                  Uniform.Vec4 ripple) {
-
-        static OpticsUniforms of(ShaderProgram program) {
-            program.sampler("refraction", UNIT_REFRACTION);
-            program.sampler("depthCopy", UNIT_DEPTH);
-            program.sampler("fresnelTable", UNIT_FRESNEL);
-            program.sampler("ripples", UNIT_RIPPLES);
-            return new OpticsUniforms(PlaneUniforms.of(program), program.float1("uLevel"),
-                    program.vec3("uExtinction"), program.vec4("uRipple"));
-        }
-    }
-
     @Override
     public SystemSpec spec() {
         // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
@@ -172,22 +118,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         gl = context.gl();
         owned = context.owned();
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
-        // above and under the water: two programs, not one with a branch, so neither pays for the other's shading
-        fresnelProgram = context.own("fresnel", context.shaders().program("water/water.vert", "water/fresnel.frag"));
-        fresnelProgram.sampler("reflection", UNIT_REFLECTION);
-        fresnelUniforms = OpticsUniforms.of(fresnelProgram);
-        reflectedUniform = fresnelProgram.int1("uReflected");
-        bodyUniform = fresnelProgram.vec3("uBody");
-        microSlope2Uniform = fresnelProgram.float1("uMicroSlope2");
-        underwaterProgram = context.own("underwater",
-                context.shaders().program("water/water.vert", "water/underwater.frag"));
-        underwaterUniforms = OpticsUniforms.of(underwaterProgram);
-        insideUniform = underwaterProgram.vec3("uInside");
-        stencilProgram = context.own("stencil", context.shaders().program("water/water.vert", "water/stencil.frag"));
-        stencilProgram.sampler("reflection", UNIT_REFLECTION);
-        stencilPlane = PlaneUniforms.of(stencilProgram);
-        stencilStep = stencilProgram.int1("uStep");
-        stencilAlpha = stencilProgram.float1("uAlpha");
+        programs = new WaterPrograms(context);
         fresnelTable = context.own("fresnelTable",
                 Texture2D.empty(gl, FRESNEL_SIZE, 2, Format.R16F, Sampling.LINEAR_CLAMP));
         FloatBuffer table = MemoryUtil.memAllocFloat(2 * FRESNEL_SIZE).put(Fresnel.table(FRESNEL_SIZE)).flip();
@@ -252,15 +183,15 @@ public final class WaterSystem implements EngineSystem, PassOwner {
      * The reflection pass draws only where the water can be seen: the bounding rectangle of the screen below the
      * horizon ({@link PlaneOnScreen}), in the reflection target's pixels (it is aligned with the screen). Nothing
      * there is lost: a mirrored ray points below the horizon, so the water looks the reflection up below the horizon
-     * line only. Set after the engine cleared the whole target (alpha 0: nothing drawn), and lifted by the engine at
-     * the next pass.
+     * line only; one texel more on each side keeps the bilinear look-ups at the horizon as they were. Set after the
+     * engine cleared the whole target (alpha 0: nothing drawn), and lifted by the engine at the next pass.
      */
     private void scissorToWater(WaterSettings s, Framebuffer target) {
         Vector4fc ndc = onScreen(mirroredViewer, s).bounds();
-        int x0 = (int) Math.floor((ndc.x() + 1) / 2 * target.width());
-        int y0 = (int) Math.floor((ndc.y() + 1) / 2 * target.height());
-        int x1 = (int) Math.ceil((ndc.z() + 1) / 2 * target.width());
-        int y1 = (int) Math.ceil((ndc.w() + 1) / 2 * target.height());
+        int x0 = Math.max(0, (int) Math.floor((ndc.x() + 1) / 2 * target.width()) - 1);
+        int y0 = Math.max(0, (int) Math.floor((ndc.y() + 1) / 2 * target.height()) - 1);
+        int x1 = Math.min(target.width(), (int) Math.ceil((ndc.z() + 1) / 2 * target.width()) + 1);
+        int y1 = Math.min(target.height(), (int) Math.ceil((ndc.w() + 1) / 2 * target.height()) + 1);
         glScissor(x0, y0, x1 - x0, y1 - y0);
         glEnable(GL_SCISSOR_TEST);
     }
@@ -310,46 +241,38 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     private void drawFresnel(WaterSettings s, boolean underwater, boolean reflected, RenderContext context) {
         WaterOptics optics = WaterOptics.of(s.clarity());
-        ShaderProgram program = underwater ? underwaterProgram : fresnelProgram;
-        OpticsUniforms uniforms = underwater ? underwaterUniforms : fresnelUniforms;
-        program.use();
-        uniforms.level().set((float) s.level());
-        uniforms.extinction().set(optics.extinction());
-        uniforms.ripple().set((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
+        WaterPrograms.Ripple ripple = new WaterPrograms.Ripple((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
                 (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale);
-        behind.color().bind(UNIT_REFRACTION);
-        behind.depth().bind(UNIT_DEPTH);
-        fresnelTable.bind(UNIT_FRESNEL);
-        ripples.bind(UNIT_RIPPLES);
+        behind.color().bind(WaterPrograms.UNIT_REFRACTION);
+        behind.depth().bind(WaterPrograms.UNIT_DEPTH);
+        fresnelTable.bind(WaterPrograms.UNIT_FRESNEL);
+        ripples.bind(WaterPrograms.UNIT_RIPPLES);
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         if (underwater) {
             // every pixel is under water: the shader writes the surface's depth, or the scene's where that is nearer
-            insideUniform.set(optics.inside());
-            uniforms.plane().set(null);
+            programs.useBelow((float) s.level(), optics, ripple);
             glDepthFunc(GL_ALWAYS);
             fullScreen.draw(context.stats());
             glDepthFunc(GL_LESS);
             return;
         }
-        double slopeVariance = s.rmsSlope() * s.rmsSlope();
-        reflectedUniform.set(reflected ? 1 : 0);
-        bodyUniform.set(optics.body());
-        microSlope2Uniform.set((float) (slopeVariance * (1 - RESOLVED_VARIANCE)));
         if (reflection != null) {
-            reflection.color().bind(UNIT_REFLECTION);
+            reflection.color().bind(WaterPrograms.UNIT_REFLECTION);
         }
-        drawPlane(uniforms.plane(), s, context);
+        double slopeVariance = s.rmsSlope() * s.rmsSlope();
+        programs.useAbove(onScreen(context.camera(), s), (float) s.level(), optics, ripple, reflected,
+                (float) (slopeVariance * (1 - RESOLVED_VARIANCE)));
+        drawPlane(context);
     }
 
     /**
-     * The plane as geometry with its own depth, cut at the horizon ({@link PlaneOnScreen}): depth-tested before its
-     * fragment shader runs, so only the water that is seen is shaded. Beyond the far plane the depth is clamped to
-     * it (depth clamp instead of clipping), where the sky lies, so the test passes with equal depths: the water
-     * reaches the horizon.
+     * The plane as geometry with its own depth, cut at the horizon ({@link PlaneOnScreen}, set in the program):
+     * depth-tested before its fragment shader runs, so only the water that is seen is shaded. Beyond the far plane
+     * the depth is clamped to it (depth clamp instead of clipping), where the sky lies, so the test passes on equal
+     * depths: the water reaches the horizon.
      */
-    private void drawPlane(PlaneUniforms uniforms, WaterSettings s, RenderContext context) {
-        uniforms.set(onScreen(context.camera(), s));
+    private void drawPlane(RenderContext context) {
         glDepthFunc(GL_LEQUAL);
         glEnable(GL_DEPTH_CLAMP);
         glEnable(GL_CLIP_DISTANCE0);
@@ -364,8 +287,6 @@ public final class WaterSystem implements EngineSystem, PassOwner {
      * and the reflection pass step 3 (the mirrored scene, front faces culled by the flipped winding, stencil off).
      */
     private void drawStencil(WaterSettings s, boolean reflected, RenderContext context) {
-        stencilProgram.use();
-        stencilAlpha.set((float) s.alpha());
         // 2. the water plane: depth tested, alpha only, 0xFF into the stencil where it passes
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
@@ -373,20 +294,19 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         glStencilFunc(GL_ALWAYS, 0xFF, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glColorMask(false, false, false, true);
-        stencilStep.set(2);
-        drawPlane(stencilPlane, s, context);
+        programs.useStencil(2, (float) s.alpha(), onScreen(context.camera(), s));
+        drawPlane(context);
         glColorMask(true, true, true, true);
         // 4. the mirrored scene over the whole screen, kept where the stencil says water, blended by its alpha
         if (reflected) {
-            reflection.color().bind(UNIT_REFLECTION);
+            reflection.color().bind(WaterPrograms.UNIT_REFLECTION);
             glDisable(GL_DEPTH_TEST);
             glDepthMask(false);
             glStencilFunc(GL_EQUAL, 0xFF, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             glEnable(GL_BLEND);
             glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA, GL_ZERO, GL_ONE);
-            stencilStep.set(4);
-            stencilPlane.set(null);
+            programs.useStencil(4, (float) s.alpha(), null);
             fullScreen.draw(context.stats());
             glDisable(GL_BLEND);
             glDepthMask(true);
