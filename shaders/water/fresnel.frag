@@ -78,19 +78,19 @@ vec3 aboveWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     vec3 straight = refract(dir, vec3(0.0, 1.0, 0.0), 1.0 / WATER_INDEX);
     vec2 uvT = uv + screenUv(p + path * bent) - screenUv(p + path * straight);
     float depthT = texture(depthCopy, uvT).r;
-    if (!onScreen(uvT) || depthT < gl_FragCoord.z || scenePoint(uvT, depthT).y > uLevel) {
+    vec3 bottomT = scenePoint(uvT, depthT);
+    if (!onScreen(uvT) || depthT < gl_FragCoord.z || bottomT.y > uLevel) {
         uvT = uv;
         depthT = sceneDepth;
+        bottomT = bottom;
     }
-    bottom = scenePoint(uvT, depthT);
-    float through = distance(eye, bottom) - t + (uLevel - bottom.y);
+    float through = distance(eye, bottomT) - t + (uLevel - bottomT.y);
     vec3 transmittance = depthT >= 1.0 ? vec3(0.0) : exp(-uExtinction * through);
     vec3 body = toneMapped(lightAtDepth(0.0, sunSeen) * uBody * air.a + air.rgb);
     vec3 seen = transmittance * picture(refraction, uvT) + (1.0 - transmittance) * body;
     // 3. the mix, and the sun
     return f * reflected + (1.0 - f) * seen + toneMapped(glitter(n, toEye) * sunSeen * air.a);
 }
-
 
 void main() {
     vec3 eye = cameraPos();

@@ -98,7 +98,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     public SystemSpec spec() {
         // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
         // copies to show what lies behind the water. The level is published, not written in the frame: the trees,
-        // opaque and so before the water, read it too.
+        // opaque and so before the water, read it too. prepares(REFLECTION): in the reflection pass it draws
+        // nothing, only scissors the pass to the water's part of the screen (beginPass).
         return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class)
                 .publishes(WaterLevel.class).overOpaque().prepares(Pass.REFLECTION).draws(Pass.MAIN);
     }
