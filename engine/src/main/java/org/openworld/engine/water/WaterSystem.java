@@ -71,6 +71,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     static final double RESOLVED_VARIANCE = 0.3;
     /** Slopes are packed into bytes over ± this many times their RMS: beyond 4σ lies 0.03% of a Gaussian. */
     private static final double SLOPE_RANGE = 4;
+
     private GlContext gl;
     /** What this system owns, for the targets and ripples re-made when the size or the wind changes. */
     private Owned owned;
@@ -87,13 +88,14 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     private Framebuffer behind;
     /**
      * The viewer's camera that the reflection target mirrors: written by {@link #passViews} when it gives the engine a
-     * reflection view, only read by {@link #render}, which uses the reflection when this is the very camera MAIN
-     * draws with. The engine makes the viewer's camera anew each frame and hands the same object to the owners of a
+     * reflection view, read by {@link #beginPass} to scissor that pass and by {@link #render}, which uses the
+     * reflection when this is the very camera MAIN draws with. The engine makes the viewer's camera anew each frame and hands the same object to the owners of a
      * pass and to MAIN's systems, so a frame whose reflection pass did not run (the eye under the water, or nothing
      * drawing in it) finds an older camera here and shows no reflection: nothing needs resetting after MAIN.
      */
     private ViewCamera mirroredViewer;
     private double simTime;
+
     @Override
     public SystemSpec spec() {
         // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
@@ -220,8 +222,9 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         }
     }
 
+    /** At the surface itself the eye counts as under it: from above, the plane would pass through the eye. */
     private static boolean underwater(WaterSettings s, ViewCamera camera) {
-        return camera.position().y() < s.level();
+        return camera.position().y() <= s.level();
     }
 
     /** The paper's method when chosen and the eye is above the water; else (and always below it) the Fresnel one. */
