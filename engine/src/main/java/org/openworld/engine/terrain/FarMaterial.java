@@ -37,7 +37,7 @@ final class FarMaterial {
 
     /** Texels along the side of the baked texture, at most. */
     static final int MAX_SIZE = 2048;
-    /** The near material fades into the far one over this last fraction of {@code materials.far-distance}. */
+    /** The near material fades into the far one over this last fraction of the far distance. */
     static final double BLEND_FRACTION = 0.3;
 
     private final GlContext gl;
@@ -46,6 +46,7 @@ final class FarMaterial {
     private final ShaderProgram program;
     private final TerrainMaterials.Uniforms uniforms;
     private final Mesh triangle;
+    private final double texelMetres;
     private MaterialSettings.SnowMode bakedSnow;
     private double bakedScale = Double.NaN;
 
@@ -59,6 +60,7 @@ final class FarMaterial {
     FarMaterial(EngineContext context, HeightMap base, int unitHeights) {
         this.gl = context.gl();
         int size = Math.min(base.size(), MAX_SIZE);
+        texelMetres = base.extent() / size;
         Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
         colour = context.own("far-material.colour", Texture2D.withMips(gl, size, size, Format.SRGB8_ALPHA8, wrap));
         slope = context.own("far-material.slope", Texture2D.withMips(gl, size, size, Format.RGBA8, wrap));
@@ -76,6 +78,11 @@ final class FarMaterial {
         program.int1("bakeLevel").set(Integer.numberOfTrailingZeros(base.size() / size));
         program.vec2("bakeSize").set(size, size);
         uniforms = TerrainMaterials.layerUniforms(program);
+    }
+
+    /** Metres of ground along the side of one baked texel. */
+    double texelMetres() {
+        return texelMetres;
     }
 
     /** Binds the baked colour and gloss to {@code unit}, the detail slope to {@code unit + 1}. */

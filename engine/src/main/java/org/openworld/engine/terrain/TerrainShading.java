@@ -10,7 +10,8 @@ import org.openworld.engine.gl.Uniform;
  * The terrain's colour in the passes that see it (main, reflection): materials that cost less with distance, and a
  * program per view so no pixel pays for a view it does not show.
  *
- * <p><b>Near and far.</b> Patches whose box lies nearer than {@code materials.far-distance} D run the near program:
+ * <p><b>Near and far.</b> Patches whose box lies nearer than D = {@code materials.far-texels} baked texels (300 m by
+ * default) run the near program:
  * every layer of {@code material.glsl} (three materials at two scales, two 4-octave noises). The rest run the far
  * program: two lookups in the {@link FarMaterial} baked at start (colour and gloss, detail slope). Between
  * (1 − {@link FarMaterial#BLEND_FRACTION})·D and D the near program fades its material into the baked one, which it
@@ -92,10 +93,10 @@ final class TerrainShading {
         int all = order.size();
         switch (colouring) {
             case SHADED -> {
-                int nearCount = order.nearerThan(settings.farDistance());
+                double farDistance = settings.farTexels() * farMaterial.texelMetres();
+                int nearCount = order.nearerThan(farDistance);
                 materials.bind(nearUniforms, settings, unitMaterials);
-                farBand.set((float) (settings.farDistance() * (1 - FarMaterial.BLEND_FRACTION)),
-                        (float) settings.farDistance());
+                farBand.set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
                 materials.bind(farUniforms, settings, unitMaterials);
                 renderer.draw(patches, order.order(), nearCount, all, copyOffsets, stats);

@@ -114,7 +114,7 @@ public final class TerrainSystem implements EngineSystem {
         entity = context.world().spawn();
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
-        // 3. the GPU side: maps, materials, the shared patch geometry and the program
+        // 3. the GPU side: maps, the shared patch geometry, the programs and materials
         maps = new TerrainMaps(context, data.pyramid(), data.snow());
         renderer = context.own(new PatchRenderer(context, patterns));
         depthProgram = context.own("depth", context.shaders().program("terrain/terrain.vert", "terrain/depth.frag"));

@@ -21,7 +21,7 @@ import org.openworld.engine.gl.Image;
 
 /**
  * The baked far material against the near one it stands in for: the same ground drawn all near
- * ({@code materials.far-distance} beyond everything) and all far ({@code 0}) must agree in its mean colour over every
+ * ({@code materials.far-texels} beyond everything) and all far ({@code 0}) must agree in its mean colour over every
  * block of the picture, since where the two meet the near program fades into the far one. A far material that lost
  * a layer, the macro tint, the snow or its place on the map would shift whole blocks. Pictures go to
  * {@code target/test-images/far-material-*.png}.
@@ -45,9 +45,9 @@ class FarMaterialRenderTest {
                 new TerrainSystem(), new CullingSystem())) {
             engine.world().setResource(new TimeOfDay(11.0, 0));
             engine.world().resource(Camera.class).setPose(new CameraPose(0, 450, 350, 0, -35, 60));
-            engine.settings().set("materials.far-distance", "100000");
+            engine.settings().set("materials.far-texels", "100000");
             Image near = frame(engine, "near");
-            engine.settings().set("materials.far-distance", "0");
+            engine.settings().set("materials.far-texels", "0");
             Image far = frame(engine, "far");
 
             double sum = 0;
