@@ -6,8 +6,8 @@
 //   MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint)
 //                                             steps 1-3: albedo, detail slope and gloss, unlit
 //   vec3 lightTerrain(TerrainSurface s, MatTexel m)   steps 4-5: the detail normal and the light
-// The far variant of the terrain (terrain.frag with TERRAIN_FAR) reads steps 1-3 baked once into a world texture
-// (terrain/bake.frag, engine: FarMaterial) and lights it with the height field's normal alone.
+// The far variant of the terrain (terrain.frag with TERRAIN_FAR) reads steps 1-3 baked once into world textures
+// (terrain/bake.frag, engine: FarMaterial) and lights them with lightTerrain.
 //
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
