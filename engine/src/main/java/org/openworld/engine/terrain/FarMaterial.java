@@ -3,10 +3,10 @@ package org.openworld.engine.terrain;
 import static org.lwjgl.opengl.GL30C.*;
 
 import org.openworld.engine.core.EngineContext;
-import org.openworld.engine.gl.Format;
-import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
@@ -25,13 +25,14 @@ import org.openworld.engine.gl.Texture2D;
  * with mips: 43 MiB at 2048².
  *
  * <p><b>When.</b> At start and again when a setting it depends on changes ({@code materials.snow-mode},
- * {@code materials.detail-scale}): one full-screen pass over the texture, a few hundred milliseconds on llvmpipe.
+ * {@code materials.detail-scale}): one full-screen pass over the textures, then their mips (with the extra programs,
+ * a shot's start-up on llvmpipe grows by about 0.2 s).
  *
  * <p><b>Limits.</b> A texel is a mean: detail finer than a texel (the fine tile, a blade of grass, a blend edge
  * sharper than a texel) is gone, and the mean slope lights like one normal, not like the many it stands for (a
- * rough surface's highlight is wider than that); a generated tile's macro variation is
- * made periodic by fading each edge into the opposite one, so within {@code 2 · MAT_MACRO_SCALE} of a tile edge the far
- * ground's variation is not the near ground's.
+ * rough surface's highlight is wider than that). A generated tile's macro variation is made periodic by fading each
+ * edge into the opposite one, so within {@code 2 · MAT_MACRO_SCALE} of a tile edge the far ground's variation is not
+ * the near ground's.
  */
 final class FarMaterial {
 
@@ -51,8 +52,8 @@ final class FarMaterial {
     private double bakedScale = Double.NaN;
 
     /**
-     * Makes the texture and the bake program, handed to the system's owner ({@code terrain.far-material},
-     * {@code terrain.bake}); nothing is baked until {@link #refresh}.
+     * Makes the textures and the bake program, handed to the system's owner ({@code terrain.far-material.colour},
+     * {@code terrain.far-material.slope}, {@code terrain.bake}); nothing is baked until {@link #refresh}.
      *
      * @param unitHeights   texture unit the caller binds the height pyramid to before a refresh; then the gradients
      *                      and the snow map on the next two units
@@ -92,16 +93,14 @@ final class FarMaterial {
     }
 
     /**
-     * Bakes again if the snow mode or the tile size changed since the last bake (or nothing was baked yet): the
+     * Bakes if nothing was baked yet or the snow mode or the detail tile's size changed since the last bake: the
      * caller has bound the maps (see the constructor); the materials take units {@code materialUnit} onwards.
      * Leaves the framebuffer, viewport, depth test, blending and face culling as they were; the program in use and
      * the texture bindings of the materials' units change.
-     *
-     * @return whether it baked
      */
-    boolean refresh(TerrainMaterials materials, MaterialSettings settings, int materialUnit) {
+    void refresh(TerrainMaterials materials, MaterialSettings settings, int materialUnit) {
         if (settings.snowMode() == bakedSnow && settings.detailScale() == bakedScale) {
-            return false;
+            return;
         }
         materials.bind(uniforms, settings, materialUnit);
         int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
@@ -132,7 +131,6 @@ final class FarMaterial {
         slope.generateMipmaps();
         bakedSnow = settings.snowMode();
         bakedScale = settings.detailScale();
-        return true;
     }
 
 }

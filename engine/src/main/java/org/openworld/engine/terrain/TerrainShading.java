@@ -41,12 +41,13 @@ final class TerrainShading {
     private final int unitFar;
 
     /**
-     * Makes the programs, the materials and the far material, handed to the system's owner.
+     * Makes the programs, the materials and the far material, handed to the system's owner, and bakes the far
+     * material with the settings of the start.
      *
      * @param unitHeights   the unit of the height pyramid; the gradients and the snow map take the next two, the
      *                      materials the {@link TerrainMaterials#UNITS} after those, then the far material two
      */
-    TerrainShading(EngineContext context, HeightMap base, int cells, int seed, int unitHeights) {
+    TerrainShading(EngineContext context, TerrainMaps maps, HeightMap base, int cells, int seed, int unitHeights) {
         int unitGradients = unitHeights + 1;
         int unitSnow = unitHeights + 2;
         unitMaterials = unitHeights + 3;
@@ -72,6 +73,10 @@ final class TerrainShading {
         nearUniforms = TerrainMaterials.uniforms(near);
         farUniforms = TerrainMaterials.lightUniforms(far);
         levelsUniforms = TerrainMaterials.lightUniforms(levels);
+        maps.heights.bind(unitHeights);
+        maps.gradients.bind(unitGradients);
+        maps.snow.bind(unitSnow);
+        farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
     }
 
     private static ShaderProgram variant(EngineContext context, String role, List<String> defines, HeightMap base,
@@ -84,7 +89,7 @@ final class TerrainShading {
 
     /**
      * Draws the ordered patches in the colouring asked for, near ones first; the maps are bound to their units.
-     * Re-bakes the far material first if a setting it depends on changed.
+     * Bakes the far material again first if a setting it depends on changed.
      */
     void draw(PatchList patches, PatchOrder order, float[] copyOffsets, MaterialSettings settings,
               TerrainDebugSettings.Colouring colouring, PatchRenderer renderer, DrawStats stats) {

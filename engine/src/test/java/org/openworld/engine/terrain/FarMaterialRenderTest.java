@@ -72,6 +72,34 @@ class FarMaterialRenderTest {
         }
     }
 
+    /** The far material is baked again when the snow rule changes while running: the far ground shows the bands. */
+    @Test
+    void changingTheSnowRuleBakesTheFarMaterialAgain() throws IOException {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400", "materials.far-texels=0"),
+                new TerrainSystem(), new CullingSystem())) {
+            engine.world().setResource(new TimeOfDay(11.0, 0));
+            engine.world().resource(Camera.class).setPose(new CameraPose(0, 450, 350, 0, -35, 60));
+            Image map = frame(engine, "snow-map");
+            engine.settings().set("materials.snow-mode", "altitude-bands");
+            Image bands = frame(engine, "altitude-bands");
+
+            double sum = 0;
+            int blocks = 0;
+            for (int by = 0; by < HEIGHT / BLOCK; by++) {
+                for (int bx = 0; bx < WIDTH / BLOCK; bx++) {
+                    Lab a = blockMean(map, bx, by);
+                    Lab b = blockMean(bands, bx, by);
+                    if (a != null && b != null) {
+                        sum += DeltaE.ciede2000(a, b);
+                        blocks++;
+                    }
+                }
+            }
+            assertTrue(sum / blocks > 3, "mean ΔE00 of the block means, bands against the snow map: " + sum / blocks);
+        }
+    }
+
     /** The mean colour of a block as Lab, or null if any pixel of it is the black background. */
     private static Lab blockMean(Image image, int bx, int by) {
         long r = 0, g = 0, b = 0;
