@@ -2,7 +2,12 @@
 // each a synthesised tileable texture with a tangent-space normal map and a gloss map; lit by the sun and the sky.
 // Engine side: org.openworld.engine.terrain.TerrainMaterials (binds everything below), TerrainTextures (synthesis).
 //
-//   vec3 shadeTerrain(TerrainSurface s)   linear RGB, lit, before fog
+//   vec3 shadeTerrain(TerrainSurface s)       linear RGB, lit, before fog: steps 1-5 below, as the near terrain does
+//   MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint)
+//                                             steps 1-3: albedo, detail slope and gloss, unlit
+//   vec3 lightTerrain(TerrainSurface s, MatTexel m)   steps 4-5: the detail normal and the light
+// The far variant of the terrain (terrain.frag with TERRAIN_FAR) reads steps 1-3 baked once into world textures
+// (terrain/bake.frag, engine: FarMaterial) and lights them with lightTerrain.
 //
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
@@ -92,6 +97,11 @@ float matMacro(vec2 wsXZ) {
     return sum / 0.9375;
 }
 
+// The macro variation at wsXZ: x brightens and darkens and bends the blend edges, y tints; both 0..1.
+vec2 matMacroTint(vec2 wsXZ) {
+    return vec2(matMacro(wsXZ), matMacro(wsXZ.yx * 1.7 + 311.0));
+}
+
 // One material's texels at both scales, mixed; slope is the tangent-space normal's xy in the world's X/Z frame.
 struct MatTexel {
     vec3 albedo;
@@ -102,21 +112,18 @@ struct MatTexel {
 
 struct MatCoords {
     vec2 fine;
-    vec2 fineDx;
-    vec2 fineDy;
     vec2 coarse;
-    vec2 coarseDx;
-    vec2 coarseDy;
     float coarseWeight;
 };
 
-// Explicit gradients: the layers are sampled under branches (skipped where absent), where implicit ones are undefined.
+// Implicit derivatives: every layer is sampled on every pixel, outside any branch (on a software rasteriser a branch
+// skips nothing, and explicit gradients, which sampling under branches needs, cost a per-pixel LOD of their own).
 MatTexel matSample(float layer, MatCoords c) {
     const mat2 unturn = mat2(0.8253, -0.5646, 0.5646, 0.8253); // rotation by -MAT_COARSE_TURN: coarse slopes to world
-    vec4 albedoFine = textureGrad(uMatAlbedo, vec3(c.fine, layer), c.fineDx, c.fineDy);
-    vec4 detailFine = textureGrad(uMatDetail, vec3(c.fine, layer), c.fineDx, c.fineDy);
-    vec4 albedoCoarse = textureGrad(uMatAlbedo, vec3(c.coarse, layer), c.coarseDx, c.coarseDy);
-    vec4 detailCoarse = textureGrad(uMatDetail, vec3(c.coarse, layer), c.coarseDx, c.coarseDy);
+    vec4 albedoFine = texture(uMatAlbedo, vec3(c.fine, layer));
+    vec4 detailFine = texture(uMatDetail, vec3(c.fine, layer));
+    vec4 albedoCoarse = texture(uMatAlbedo, vec3(c.coarse, layer));
+    vec4 detailCoarse = texture(uMatDetail, vec3(c.coarse, layer));
     MatTexel t;
     t.albedo = mix(albedoFine.rgb, albedoCoarse.rgb, c.coarseWeight);
     t.slope = mix(detailFine.rg * 2.0 - 1.0, unturn * (detailCoarse.rg * 2.0 - 1.0), c.coarseWeight);
@@ -131,76 +138,62 @@ float matCover(float amount, float relief) {
     return smoothstep(relief - s, relief + s, amount * (1.0 + 2.0 * s) - s);
 }
 
-vec3 shadeTerrain(TerrainSurface s) {
-    vec3 toEye = cameraPos() - s.wsPos;
-    float eyeDistance = length(toEye);
-    vec3 v = toEye / max(eyeDistance, 1e-4);
-    vec3 l = sunDir();
-    vec3 n0 = normalize(s.wsNormal);
+// Steps 1-3 at s, seen from eyeDistance metres, under the macro variation macroTint (matMacroTint): the surface's
+// albedo, detail slope and gloss, before light.
+MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint) {
+    float n0y = normalize(s.wsNormal).y;
 
     // 1. texture coordinates at two scales, and the macro variation
     const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
     MatCoords c;
     c.fine = s.wsPos.xz / uMatDetailScale;
-    c.fineDx = dFdx(c.fine);
-    c.fineDy = dFdy(c.fine);
     c.coarse = turn * c.fine / MAT_COARSE_FACTOR;
-    c.coarseDx = turn * c.fineDx / MAT_COARSE_FACTOR;
-    c.coarseDy = turn * c.fineDy / MAT_COARSE_FACTOR;
     c.coarseWeight = mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance));
-    float macro = matMacro(s.wsPos.xz);
-    float tint = matMacro(s.wsPos.zx * 1.7 + 311.0);
+    float macro = macroTint.x;
+    float tint = macroTint.y;
     float edge = (macro - 0.5) * 2.0 * MAT_EDGE_NOISE;
 
     // 2. amounts of rock and snow
     float rockByHeight = smoothstep(MAT_GRASS_LINE - 0.06, MAT_GRASS_LINE + 0.06, s.height01 + edge);
-    float rockBySlope = smoothstep(MAT_ROCK_SLOPE, MAT_ROCK_CLIFF, n0.y + 0.5 * edge);
+    float rockBySlope = smoothstep(MAT_ROCK_SLOPE, MAT_ROCK_CLIFF, n0y + 0.5 * edge);
     float rockAmount = max(rockByHeight, rockBySlope);
-    float snowAmount;
-    if (uMatSnowMode == MAT_SNOW_MAP) {
-        float sticks = smoothstep(MAT_SNOW_SLIDES, MAT_SNOW_HOLDS, n0.y);
-        snowAmount = smoothstep(0.3, 0.7, s.snow + edge * 2.0) * sticks;
-    } else {
-        snowAmount = smoothstep(uMatSnowBand.x, uMatSnowBand.y, s.height01);
-    }
+    float sticks = smoothstep(MAT_SNOW_SLIDES, MAT_SNOW_HOLDS, n0y);
+    float snowByMap = smoothstep(0.3, 0.7, s.snow + edge * 2.0) * sticks;
+    float snowByBand = smoothstep(uMatSnowBand.x, uMatSnowBand.y, s.height01);
+    float snowAmount = uMatSnowMode == MAT_SNOW_MAP ? snowByMap : snowByBand;
 
-    // 3. layers: grass, rock over grass (its highest relief first), snow over both (hollows first)
+    // 3. layers: grass, rock over grass (its highest relief first), snow over both (hollows first); a layer that is
+    // absent covers nothing (matCover(0, relief) = 0), so every layer is blended without a branch
+    MatTexel grass = matSample(MAT_GRASS, c);
+    MatTexel rock = matSample(MAT_ROCK, c);
+    MatTexel snow = matSample(MAT_SNOW, c);
+    // macro: greener and yellower, lighter and darker patches of meadow
+    grass.albedo *= mix(vec3(0.75, 0.85, 0.8), vec3(1.3, 1.15, 0.8), tint) * (0.8 + 0.4 * macro);
+    float rockCover = matCover(rockAmount, 1.0 - rock.height);
     MatTexel surface;
-    float rockCover = 0.0;
-    MatTexel rock;
-    if (rockAmount > 0.0) {
-        rock = matSample(MAT_ROCK, c);
-        rockCover = matCover(rockAmount, 1.0 - rock.height);
-    }
-    if (rockCover < 1.0) {
-        MatTexel grass = matSample(MAT_GRASS, c);
-        // macro: greener and yellower, lighter and darker patches of meadow
-        grass.albedo *= mix(vec3(0.75, 0.85, 0.8), vec3(1.3, 1.15, 0.8), tint) * (0.8 + 0.4 * macro);
-        surface = grass;
-        if (rockCover > 0.0) {
-            surface.albedo = mix(surface.albedo, rock.albedo, rockCover);
-            surface.slope = mix(surface.slope, rock.slope, rockCover);
-            surface.height = mix(surface.height, rock.height, rockCover);
-            surface.gloss = mix(surface.gloss, rock.gloss, rockCover);
-        }
-    } else {
-        surface = rock;
-    }
-    if (rockCover > 0.0) {
-        surface.albedo *= mix(vec3(1.0), vec3(0.85 + 0.3 * tint, 0.85 + 0.25 * tint, 0.9 + 0.15 * tint), rockCover);
-    }
-    if (snowAmount > 0.0) {
-        MatTexel snow = matSample(MAT_SNOW, c);
-        float snowCover = matCover(snowAmount, surface.height);
-        surface.albedo = mix(surface.albedo, snow.albedo, snowCover);
-        surface.slope = mix(surface.slope, snow.slope, snowCover);
-        surface.gloss = mix(surface.gloss, snow.gloss, snowCover);
-    }
+    surface.albedo = mix(grass.albedo, rock.albedo, rockCover);
+    surface.slope = mix(grass.slope, rock.slope, rockCover);
+    surface.height = mix(grass.height, rock.height, rockCover);
+    surface.gloss = mix(grass.gloss, rock.gloss, rockCover);
+    surface.albedo *= mix(vec3(1.0), vec3(0.85 + 0.3 * tint, 0.85 + 0.25 * tint, 0.9 + 0.15 * tint), rockCover);
+    float snowCover = matCover(snowAmount, surface.height);
+    surface.albedo = mix(surface.albedo, snow.albedo, snowCover);
+    surface.slope = mix(surface.slope, snow.slope, snowCover);
+    surface.gloss = mix(surface.gloss, snow.gloss, snowCover);
+    return surface;
+}
+
+// Steps 4-5: the material m lit at s (its slope ignored while the normal maps are off).
+vec3 lightTerrain(TerrainSurface s, MatTexel m) {
+    vec3 toEye = cameraPos() - s.wsPos;
+    vec3 v = toEye / max(length(toEye), 1e-4);
+    vec3 l = sunDir();
+    vec3 n0 = normalize(s.wsNormal);
 
     // 4. detail normal: tangent-space (x along +u = +X, y along +v = +Z) through the terrain's TBN
     vec3 n = n0;
     if (uMatNormalMap == 1) {
-        vec3 ts = vec3(surface.slope, sqrt(max(1.0 - dot(surface.slope, surface.slope), 0.0)));
+        vec3 ts = vec3(m.slope, sqrt(max(1.0 - dot(m.slope, m.slope), 0.0)));
         n = normalize(s.wsTangent * ts.x + s.wsBitangent * ts.y + n0 * ts.z);
     }
 
@@ -209,9 +202,9 @@ vec3 shadeTerrain(TerrainSurface s) {
     sunFacing *= sunVisibility(s.wsPos, n0);
     float nl = max(dot(n, l), 0.0) * sunFacing;
     vec3 sky = frame.ambientColor.rgb * (0.6 + 0.4 * n.y);
-    vec3 color = surface.albedo * (frame.sunColor.rgb * nl + sky);
+    vec3 color = m.albedo * (frame.sunColor.rgb * nl + sky);
     if (uMatGlossMap == 1) {
-        float gloss = surface.gloss;
+        float gloss = m.gloss;
         float power = pow(MAT_MAX_POWER, gloss);
         vec3 h = normalize(l + v);
         float vh = max(dot(v, h), 0.0);
@@ -225,4 +218,9 @@ vec3 shadeTerrain(TerrainSurface s) {
         color += environmentRadiance(r, (1.0 - gloss) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
     }
     return color;
+}
+
+// Steps 1-5: the surface at s, lit.
+vec3 shadeTerrain(TerrainSurface s) {
+    return lightTerrain(s, terrainMaterial(s, length(cameraPos() - s.wsPos), matMacroTint(s.wsPos.xz)));
 }

@@ -1,6 +1,12 @@
 #version 330 core
 // Terrain surface: the slope from the gradient map gives the tangent frame, the snow map and the height choose the
 // materials (terrain/material.glsl), then the shared fog and the display transform.
+// Variants, each its own program (#defines), chosen per patch on the CPU (engine: TerrainShading), so none pays for
+// another's work (a branch on a uniform runs both sides on a software rasteriser):
+//   (none)                 near patches: every material layer, fading into the far material over farBand
+//   TERRAIN_FAR            patches wholly beyond farBand.y: the baked far material (two lookups)
+//   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
+//   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
 #include "common/frame.glsl"
 #include "common/fog.glsl"
 #include "common/color.glsl"
@@ -12,9 +18,11 @@ out vec4 fragColor;
 
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered
 uniform sampler2D snowMap;     // snow coverage 0..1
+uniform sampler2D farColour;   // baked steps 1-3 of material.glsl (FarMaterial): rgb albedo (sRGB stored), a gloss
+uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5
 uniform float extent;          // metres per map tile
 uniform vec2 heightRange;      // lowest height, 1 / (highest - lowest), metres
-uniform int colouring;         // 0 shaded, 1 by level (figure 6), 2 tangent space (figure 4)
+uniform vec2 farBand;          // metres from the eye: the near material fades into the far one from x to y
 
 // A distinct colour per level, so the quadtree cut reads at a glance.
 vec3 levelColour(int level) {
@@ -32,21 +40,36 @@ void main() {
     s.wsTangent = normalize(vec3(1.0, slope.x, 0.0));
     s.wsBitangent = normalize(vec3(0.0, slope.y, 1.0));
     s.wsNormal = normalize(vec3(-slope.x, 1.0, -slope.y));
+#ifdef TERRAIN_TANGENT_SPACE
+    // Figure 4: the local frame as colour: the tangent's rise (slope along x) red, the normal's height (flatness)
+    // green, the bitangent's rise (slope along z) blue; squared into linear light
+    vec3 color = 0.5 + 0.5 * vec3(s.wsTangent.y, s.wsNormal.y, s.wsBitangent.y);
+    color = color * color;
+#else
+    vec4 far = texture(farColour, uv);
+    vec2 slopeFar = texture(farSlope, uv).rg * 2.0 - 1.0;
+    MatTexel m;
+  #ifdef TERRAIN_FAR
+    m.albedo = far.rgb;
+    m.slope = slopeFar;
+    m.height = 0.5;
+    m.gloss = far.a;
+  #else
     s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
     s.snow = texture(snowMap, uv).r;
-    vec3 color;
-    if (colouring == 2) {
-        // Figure 4: the local frame as colour: the tangent's rise (slope along x) red, the normal's height
-        // (flatness) green, the bitangent's rise (slope along z) blue; squared into linear light
-        color = 0.5 + 0.5 * vec3(s.wsTangent.y, s.wsNormal.y, s.wsBitangent.y);
-        color = color * color;
-    } else {
-        color = shadeTerrain(s);
-        if (colouring == 1) {
-            float lightness = dot(color, vec3(0.2126, 0.7152, 0.0722));
-            color = levelColour(lodLevel) * (0.25 + 1.5 * lightness);
-        }
-        color = applyFog(color, wsPos);
-    }
+    float eyeDistance = length(cameraPos() - wsPos);
+    m = terrainMaterial(s, eyeDistance, matMacroTint(wsPos.xz));
+    float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
+    m.albedo = mix(m.albedo, far.rgb, toFar);
+    m.slope = mix(m.slope, slopeFar, toFar);
+    m.gloss = mix(m.gloss, far.a, toFar);
+  #endif
+    vec3 color = lightTerrain(s, m);
+  #ifdef TERRAIN_LEVELS
+    float lightness = dot(color, vec3(0.2126, 0.7152, 0.0722));
+    color = levelColour(lodLevel) * (0.25 + 1.5 * lightness);
+  #endif
+    color = applyFog(color, wsPos);
+#endif
     fragColor = vec4(displayColor(color), 1.0);
 }

@@ -8,7 +8,8 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil), which it owns;
- * or one layer of a {@link DepthTextureArray}, which it borrows. The engine's scene target is RGBA8 +
+ * or one layer of a {@link DepthTextureArray}, or level 0 of colour textures (e.g. baked once, then mipmapped), which
+ * it borrows. The engine's scene target is RGBA8 +
  * depth24/stencil8; the water's reflection is colour + depth; each shadow cascade is a depth layer.
  */
 public final class Framebuffer implements Labelled {
@@ -61,6 +62,36 @@ public final class Framebuffer implements Labelled {
         checkComplete();
     }
 
+    /** A colour-only target drawing into level 0 of each of {@code colors}, which stay the caller's to close. */
+    private Framebuffer(GlContext gl, Texture2D[] colors) {
+        this.gl = gl;
+        this.width = colors[0].width();
+        this.height = colors[0].height();
+        this.color = null;
+        this.depth = null;
+        this.id = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        int[] buffers = new int[colors.length];
+        for (int i = 0; i < colors.length; i++) {
+            buffers[i] = GL_COLOR_ATTACHMENT0 + i;
+            glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[i], GL_TEXTURE_2D, colors[i].id(), 0);
+        }
+        glDrawBuffers(buffers);
+        checkComplete();
+    }
+
+    /**
+     * A target for level 0 of one or more colour textures of one size (fragment output i to texture i), e.g. to
+     * render into textures and then build their mips; closing it leaves the textures alone, and {@link #color()}
+     * answers null.
+     */
+    public static Framebuffer onTextures(GlContext gl, Texture2D... colors) {
+        if (colors.length == 0) {
+            throw new IllegalArgumentException("a framebuffer on textures needs at least one texture");
+        }
+        return new Framebuffer(gl, colors);
+    }
+
     /** A target for one layer of a depth array, e.g. one shadow cascade; closing it leaves the array alone. */
     public static Framebuffer onLayer(GlContext gl, DepthTextureArray depth, int layer) {
         if (layer < 0 || layer >= depth.layers()) {
@@ -102,6 +133,7 @@ public final class Framebuffer implements Labelled {
         return height;
     }
 
+    /** The owned colour attachment; null for a depth-only target or one on a borrowed texture. */
     public Texture2D color() {
         return color;
     }

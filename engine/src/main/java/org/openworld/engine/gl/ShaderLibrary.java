@@ -20,7 +20,15 @@ public final class ShaderLibrary {
 
     /** Compiles and links stage files, e.g. {@code program("sky/sky.vert", "sky/sky.frag")}. */
     public ShaderProgram program(String... stageFiles) {
-        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), live::remove));
+        return program(List.of(), stageFiles);
+    }
+
+    /**
+     * A variant of a program: {@code #define NAME} for each of {@code defines} at the top of every stage, e.g.
+     * {@code program(List.of("TERRAIN_FAR"), "terrain/terrain.vert", "terrain/terrain.frag")}.
+     */
+    public ShaderProgram program(List<String> defines, String... stageFiles) {
+        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), defines, live::remove));
     }
 
     /**
@@ -32,7 +40,7 @@ public final class ShaderLibrary {
         if (!vertexStage.endsWith(".vert") || captured.length == 0) {
             throw new IllegalArgumentException("a feedback program is one .vert stage and at least one captured output");
         }
-        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), live::remove));
+        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), List.of(), live::remove));
     }
 
     private ShaderProgram track(ShaderProgram program) {

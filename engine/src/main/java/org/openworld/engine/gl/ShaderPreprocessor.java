@@ -27,6 +27,11 @@ import java.util.regex.Pattern;
  * keep the number. Since GLSL 3.30 the line after {@code #line N} is line N; before, it was N + 1, and the directive
  * is written for the stage's {@code #version}.
  *
+ * <p>A program variant names {@code #define}s ({@link ShaderLibrary#program(java.util.List, String...)}): they are
+ * written right after the stage's {@code #version} line, lines of ours with no origin, so one file can hold a shader's
+ * variants under {@code #ifdef} and the program chosen on the CPU pays only for its own (a branch on a uniform costs
+ * both sides on a software rasteriser, which runs them under masks).
+ *
  * <p>Each file is included at most once per shader (like {@code #pragma once}), so headers may include each other.
  * Include paths are relative to the {@code shaders/} folder. The cost is one pass over each file's lines and one map
  * entry per line; shaders are a few hundred lines.
@@ -64,7 +69,13 @@ public final class ShaderPreprocessor {
     }
 
     public Expanded expand(String path) {
+        return expand(path, List.of());
+    }
+
+    /** The stage with {@code #define NAME} for each of {@code defines} after its {@code #version} line. */
+    public Expanded expand(String path, List<String> defines) {
         Output out = new Output();
+        out.defines = defines;
         append(path, null, 0, out, new LinkedHashSet<>());
         return new Expanded(out.text.toString(), List.copyOf(out.files), Map.copyOf(out.origins));
     }
@@ -90,6 +101,9 @@ public final class ShaderPreprocessor {
             Matcher include = INCLUDE.matcher(line);
             if (root && i == 0) {
                 out.line(line, id, lineNo);
+                for (String define : out.defines) {
+                    out.write("#define " + define);
+                }
             } else if (VERSION.matcher(line).matches()) {
                 throw new ShaderException(sources.displayName(path) + ":" + lineNo
                         + ": #version belongs only on the first line of a stage file");
@@ -117,6 +131,7 @@ public final class ShaderPreprocessor {
         final StringBuilder text = new StringBuilder();
         final List<String> files = new ArrayList<>();
         final Map<Integer, Origin> origins = new HashMap<>();
+        List<String> defines = List.of();
         /** GLSL before 3.30: the line after {@code #line N} is N + 1, so N is written one less. */
         boolean lineAfterDirectiveIsOneMore;
         int lines;
@@ -142,7 +157,7 @@ public final class ShaderPreprocessor {
             origins.put(lines, new Origin(files.get(file), fileLine));
         }
 
-        private void write(String line) {
+        void write(String line) {
             text.append(line).append('\n');
             lines++;
         }

@@ -34,17 +34,19 @@ public final class ShaderProgram implements Labelled {
     private final ShaderSources sources;
     private final List<String> stages;
     private final List<String> captured;
+    private final List<String> defines;
     private final List<Uniform> uniforms = new ArrayList<>();
     private final Consumer<ShaderProgram> onClose;
     private int id;
     private String label;
 
     private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages, List<String> captured,
-                          Consumer<ShaderProgram> onClose) {
+                          List<String> defines, Consumer<ShaderProgram> onClose) {
         this.gl = gl;
         this.sources = sources;
         this.stages = List.copyOf(stages);
         this.captured = List.copyOf(captured);
+        this.defines = List.copyOf(defines);
         this.onClose = onClose;
         this.id = link();
     }
@@ -53,10 +55,11 @@ public final class ShaderProgram implements Labelled {
      * Compiles and links stage files; systems get programs from {@link ShaderLibrary#program}.
      *
      * @param captured the outputs transform feedback records, interleaved in this order (empty: none)
+     * @param defines  names defined at the top of every stage (empty: none)
      */
     static ShaderProgram build(GlContext gl, ShaderSources sources, List<String> stageFiles, List<String> captured,
-                               Consumer<ShaderProgram> onClose) {
-        return new ShaderProgram(gl, sources, stageFiles, captured, onClose);
+                               List<String> defines, Consumer<ShaderProgram> onClose) {
+        return new ShaderProgram(gl, sources, stageFiles, captured, defines, onClose);
     }
 
     public void use() {
@@ -191,7 +194,7 @@ public final class ShaderProgram implements Labelled {
     }
 
     private int compile(String stage) {
-        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(sources).expand(stage);
+        ShaderPreprocessor.Expanded expanded = new ShaderPreprocessor(sources).expand(stage, defines);
         int shader = glCreateShader(Stage.of(stage, sources).glType);
         gl.objects().created(GlObjects.Kind.SHADER);
         glShaderSource(shader, expanded.source());
@@ -268,6 +271,6 @@ public final class ShaderProgram implements Labelled {
 
     @Override
     public String toString() {
-        return "program " + String.join("+", stages);
+        return "program " + String.join("+", stages) + (defines.isEmpty() ? "" : " " + defines);
     }
 }

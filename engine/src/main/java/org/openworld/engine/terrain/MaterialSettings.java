@@ -13,13 +13,19 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param glossMap    add sun highlights and a sky reflection, scaled per texel by the gloss maps (figure 3, "gloss")
  * @param detailScale side of the fine texture tile on the ground; the coarse tile that is blended in to hide the
  *                    repetition is {@code shaders/terrain/material.glsl}'s {@code MAT_COARSE_FACTOR} times larger
+ * @param farTexels   distance from the eye beyond which the terrain reads the {@link FarMaterial} baked once instead
+ *                    of every material layer, in texels of that material (2 m each on the default map, 1 m on a
+ *                    1 km one), so a coarser bake starts further out; the near material fades into it over the last
+ *                    {@link FarMaterial#BLEND_FRACTION} of that distance
  */
 public record MaterialSettings(
         @Setting(doc = "where snow lies: snow-map (probabilistic map) or altitude-bands (plain height bands)")
         SnowMode snowMode,
         @Setting(doc = "tangent-space normal maps on the materials") boolean normalMap,
         @Setting(doc = "gloss maps: sun highlights and sky reflection") boolean glossMap,
-        @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale) {
+        @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
+        @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
+                max = 100000) double farTexels) {
 
     /** How snow is placed on the terrain. */
     public enum SnowMode {
@@ -33,7 +39,9 @@ public record MaterialSettings(
             SnowMode.SNOW_MAP,
             true,
             true,
-            2.7);   // m: 512 texels over 2.7 m is 5 mm per texel, about one pixel on the ground at a walker's feet
+            2.7,    // m: 512 texels over 2.7 m is 5 mm per texel, about one pixel on the ground at a walker's feet
+            150);   // texels (300 m on the default map): nearer, a baked texel spans several pixels of a 720-row view
+                    // and the ground looks blurred; 75 (150 m) already shows it on figure 3's mountainside
 
     public static final SettingsGroup<MaterialSettings> SETTINGS =
             SettingsGroup.of("materials", MaterialSettings.class, DEFAULTS);

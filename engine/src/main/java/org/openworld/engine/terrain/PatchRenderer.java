@@ -19,7 +19,9 @@ import org.openworld.engine.gl.VertexArray;
  *
  * <p>All patches share one vertex grid of (N+1)² (column, row) pairs and one element buffer holding every
  * {@link PatchPatterns} pattern. What differs per patch travels as instance attributes, written once per frame
- * into a streamed buffer, sorted by pattern (a counting sort) so each draw reads a contiguous run:
+ * into a streamed buffer, sorted by pattern (a stable counting sort) so each draw reads a contiguous run, and the
+ * patches come in the order the caller gives (nearest first, so the depth test rejects hidden ground before it is
+ * shaded):
  * <pre>
  *   location 1  ivec4  origin sample x, origin sample z, samples per grid step, level
  *   location 2  ivec4  side levels  (north, east, south, west)
@@ -47,6 +49,7 @@ final class PatchRenderer implements AutoCloseable {
     private final int[] runStart;
     private final int[] runLength;
     private final int[] cursor;
+    private final int[] drawOrder;
     private int[] slotPattern = new int[0];
 
     /**
@@ -59,6 +62,7 @@ final class PatchRenderer implements AutoCloseable {
         this.runStart = new int[patterns.patternCount()];
         this.runLength = new int[patterns.patternCount()];
         this.cursor = new int[patterns.patternCount()];
+        this.drawOrder = new int[patterns.patternCount()];
         vao = context.own("patches", new VertexArray(gl));
         vao.bind();
         grid = context.own("patches.grid", new GpuBuffer(gl, GL_ARRAY_BUFFER));
@@ -97,43 +101,50 @@ final class PatchRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws every patch of the list with the bound terrain program.
+     * Draws patches {@code order[from]} .. {@code order[to - 1]} of the list with the bound terrain program, front to
+     * back when the order is nearest first ({@link PatchOrder}): the instances of each pattern keep the order, and the
+     * patterns are drawn in the order of their first patch.
      *
+     * @param order       indices into {@code list}
      * @param copyOffsets x, z pairs, metres, indexed by {@link PatchList#copy(int)}
      */
-    void draw(PatchList list, float[] copyOffsets, DrawStats stats) {
-        int slots = list.size() * PATTERNS_PER_PATCH;
-        if (slots == 0) {
+    void draw(PatchList list, int[] order, int from, int to, float[] copyOffsets, DrawStats stats) {
+        int slots = (to - from) * PATTERNS_PER_PATCH;
+        if (slots <= 0) {
             return;
         }
-        // 1. the pattern of every (patch, part) slot, and how many slots each pattern has
+        // 1. the pattern of every (patch, part) slot, how many slots each pattern has, and its first slot
         if (slotPattern.length < slots) {
             slotPattern = new int[slots * 2];
         }
         java.util.Arrays.fill(runLength, 0);
-        for (int i = 0; i < list.size(); i++) {
+        for (int k = 0; k < to - from; k++) {
+            int i = order[from + k];
             int a = list.strideLog2(i);
-            slotPattern[i * PATTERNS_PER_PATCH] = patterns.interior(a);
+            slotPattern[k * PATTERNS_PER_PATCH] = patterns.interior(a);
             for (Side side : SIDES) {
-                slotPattern[i * PATTERNS_PER_PATCH + 1 + side.ordinal()] =
+                slotPattern[k * PATTERNS_PER_PATCH + 1 + side.ordinal()] =
                         patterns.edge(side, a, list.sideStrideLog2(i, side));
             }
         }
+        int used = 0;
         for (int s = 0; s < slots; s++) {
-            runLength[slotPattern[s]]++;
+            if (runLength[slotPattern[s]]++ == 0) {
+                drawOrder[used++] = slotPattern[s]; // patterns in the order of their nearest patch
+            }
         }
         int start = 0;
         for (int p = 0; p < runStart.length; p++) {
             runStart[p] = start;
             start += runLength[p];
         }
-        // 2. instance data sorted by pattern (counting sort), streamed into a fresh buffer store
+        // 2. instance data sorted by pattern (a stable counting sort), streamed into a fresh buffer store
         if (staging.capacity() < slots * STRIDE) {
             staging = MemoryUtil.memRealloc(staging, slots * STRIDE * 2);
         }
         System.arraycopy(runStart, 0, cursor, 0, cursor.length);
         for (int s = 0; s < slots; s++) {
-            writeInstance(list, s / PATTERNS_PER_PATCH, cursor[slotPattern[s]]++, copyOffsets);
+            writeInstance(list, order[from + s / PATTERNS_PER_PATCH], cursor[slotPattern[s]]++, copyOffsets);
         }
         staging.position(0).limit(slots * STRIDE);
         instances.allocate(slots * STRIDE, GL_STREAM_DRAW);
@@ -142,8 +153,9 @@ final class PatchRenderer implements AutoCloseable {
         // 3. one instanced draw per pattern in use
         vao.bind();
         instances.bind();
-        for (int p = 0; p < runStart.length; p++) {
-            if (runLength[p] == 0 || patterns.count(p) == 0) {
+        for (int r = 0; r < used; r++) {
+            int p = drawOrder[r];
+            if (patterns.count(p) == 0) {
                 continue;
             }
             long base = (long) runStart[p] * STRIDE;

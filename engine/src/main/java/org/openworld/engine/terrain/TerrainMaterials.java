@@ -18,7 +18,8 @@ import org.openworld.engine.terrain.TerrainTextures.Material;
  *
  * <p>Use: once per program, {@code Uniforms u = TerrainMaterials.uniforms(program)}; per draw,
  * {@code materials.bind(u, settings, firstUnit)}, which takes texture units {@code firstUnit} to
- * {@code firstUnit + UNITS - 1}.
+ * {@code firstUnit + UNITS - 1}. A program that uses only part of material.glsl resolves only that part: the far
+ * terrain lights a baked material ({@link #lightUniforms}), the bake makes it without light ({@link #layerUniforms}).
  */
 public final class TerrainMaterials implements Labelled {
 
@@ -51,7 +52,17 @@ public final class TerrainMaterials implements Labelled {
 
     /** material.glsl's uniforms in one program, resolved once (the program must include material.glsl and use it). */
     public static Uniforms uniforms(ShaderProgram program) {
-        return new Uniforms(program);
+        return new Uniforms(program, true, true);
+    }
+
+    /** The uniforms of a program that calls {@code lightTerrain} only: the normal and gloss map switches. */
+    public static Uniforms lightUniforms(ShaderProgram program) {
+        return new Uniforms(program, false, true);
+    }
+
+    /** The uniforms of a program that calls {@code terrainMaterial} only: the textures, their scale and the snow. */
+    public static Uniforms layerUniforms(ShaderProgram program) {
+        return new Uniforms(program, true, false);
     }
 
     /**
@@ -60,19 +71,23 @@ public final class TerrainMaterials implements Labelled {
      */
     public void bind(Uniforms u, MaterialSettings settings, int firstUnit) {
         u.program.use();
-        albedo.bind(firstUnit);
-        detail.bind(firstUnit + 1);
-        u.albedo.set(firstUnit);
-        u.detail.set(firstUnit + 1);
-        u.detailScale.set((float) settings.detailScale());
-        u.snowMode.set(switch (settings.snowMode()) { // material.glsl's MAT_SNOW_MAP and MAT_ALTITUDE_BANDS
-            case SNOW_MAP -> 0;
-            case ALTITUDE_BANDS -> 1;
-        });
-        u.snowBand.set((float) (SnowLines.BAND_LINE - SnowLines.BAND_EDGE),
-                (float) (SnowLines.BAND_LINE + SnowLines.BAND_EDGE));
-        u.normalMap.set(settings.normalMap() ? 1 : 0);
-        u.glossMap.set(settings.glossMap() ? 1 : 0);
+        if (u.layers) {
+            albedo.bind(firstUnit);
+            detail.bind(firstUnit + 1);
+            u.albedo.set(firstUnit);
+            u.detail.set(firstUnit + 1);
+            u.detailScale.set((float) settings.detailScale());
+            u.snowMode.set(switch (settings.snowMode()) { // material.glsl's MAT_SNOW_MAP and MAT_ALTITUDE_BANDS
+                case SNOW_MAP -> 0;
+                case ALTITUDE_BANDS -> 1;
+            });
+            u.snowBand.set((float) (SnowLines.BAND_LINE - SnowLines.BAND_EDGE),
+                    (float) (SnowLines.BAND_LINE + SnowLines.BAND_EDGE));
+        }
+        if (u.light) {
+            u.normalMap.set(settings.normalMap() ? 1 : 0);
+            u.glossMap.set(settings.glossMap() ? 1 : 0);
+        }
     }
 
     /** Names the arrays {@code name.albedo} and {@code name.detail}. */
@@ -87,9 +102,14 @@ public final class TerrainMaterials implements Labelled {
         arrays.close();
     }
 
-    /** The resolved uniform handles of material.glsl in one program. */
+    /**
+     * The resolved uniform handles of material.glsl in one program: those of the layers (textures, scale, snow) and
+     * of the light (normal and gloss map switches), or of one of the two; the other part's handles are null.
+     */
     public static final class Uniforms {
         private final ShaderProgram program;
+        private final boolean layers;
+        private final boolean light;
         private final Uniform.Int albedo;
         private final Uniform.Int detail;
         private final Uniform.Float detailScale;
@@ -98,15 +118,17 @@ public final class TerrainMaterials implements Labelled {
         private final Uniform.Int normalMap;
         private final Uniform.Int glossMap;
 
-        private Uniforms(ShaderProgram program) {
+        private Uniforms(ShaderProgram program, boolean layers, boolean light) {
             this.program = program;
-            albedo = program.int1("uMatAlbedo");
-            detail = program.int1("uMatDetail");
-            detailScale = program.float1("uMatDetailScale");
-            snowMode = program.int1("uMatSnowMode");
-            snowBand = program.vec2("uMatSnowBand");
-            normalMap = program.int1("uMatNormalMap");
-            glossMap = program.int1("uMatGlossMap");
+            this.layers = layers;
+            this.light = light;
+            albedo = layers ? program.int1("uMatAlbedo") : null;
+            detail = layers ? program.int1("uMatDetail") : null;
+            detailScale = layers ? program.float1("uMatDetailScale") : null;
+            snowMode = layers ? program.int1("uMatSnowMode") : null;
+            snowBand = layers ? program.vec2("uMatSnowBand") : null;
+            normalMap = light ? program.int1("uMatNormalMap") : null;
+            glossMap = light ? program.int1("uMatGlossMap") : null;
         }
     }
 }

@@ -20,7 +20,6 @@ import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
-import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -47,11 +46,10 @@ public final class TerrainSystem implements EngineSystem {
     static final double COPY_DISTANCE = 12_000;
     /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
     static final int MAX_COPY_RADIUS = 3;
-    /** Texture units: the terrain's maps first, then the materials. */
+    /** Texture units: the terrain's maps first (heights, gradients, snow), then the materials (TerrainShading). */
     private static final int UNIT_HEIGHTS = 0;
     private static final int UNIT_GRADIENTS = 1;
     private static final int UNIT_SNOW = 2;
-    private static final int UNIT_MATERIALS = 3;
 
     private final Consumer<String> progress;
     private TerrainData data;
@@ -59,14 +57,12 @@ public final class TerrainSystem implements EngineSystem {
     private PatchSelection selection;
     private final PatchList patches = new PatchList();
     private PatchPatterns patterns;
+    private final PatchOrder order = new PatchOrder();
     private TerrainMaps maps;
-    private TerrainMaterials materials;
+    private TerrainShading shading;
     private PatchRenderer renderer;
-    private ShaderProgram program;
     /** The same patches for the sun's shadow pass: the vertex stage alone, writing depth. */
     private ShaderProgram depthProgram;
-    private Uniform.Int colouring;
-    private TerrainMaterials.Uniforms materialUniforms;
     private int entity;
     private float[] copyOffsets;
     private long copyCentreX = Long.MIN_VALUE;
@@ -118,26 +114,18 @@ public final class TerrainSystem implements EngineSystem {
         entity = context.world().spawn();
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
-        // 3. the GPU side: maps, materials, the shared patch geometry and the program
+        // 3. the GPU side: maps, the shared patch geometry, the programs and materials
         maps = new TerrainMaps(context, data.pyramid(), data.snow());
-        materials = context.own("materials", new TerrainMaterials(context.gl(), seed));
         renderer = context.own(new PatchRenderer(context, patterns));
         depthProgram = context.own("depth", context.shaders().program("terrain/terrain.vert", "terrain/depth.frag"));
-        setPatchUniforms(depthProgram, base, cells);
-        program = context.own("program", context.shaders().program("terrain/terrain.vert", "terrain/terrain.frag"));
-        setPatchUniforms(program, base, cells);
-        program.sampler("gradients", UNIT_GRADIENTS);
-        program.sampler("snowMap", UNIT_SNOW);
-        program.float1("extent").set((float) base.extent());
-        program.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
-        colouring = program.int1("colouring");
-        materialUniforms = TerrainMaterials.uniforms(program);
+        setPatchUniforms(depthProgram, base, cells, UNIT_HEIGHTS);
+        shading = new TerrainShading(context, maps, base, cells, seed, UNIT_HEIGHTS);
     }
 
     /** The vertex stage's uniforms: where the heights are and how the patch grid maps onto them. */
-    private static void setPatchUniforms(ShaderProgram p, HeightMap base, int cells) {
+    static void setPatchUniforms(ShaderProgram p, HeightMap base, int cells, int unitHeights) {
         p.use();
-        p.sampler("heights", UNIT_HEIGHTS);
+        p.sampler("heights", unitHeights);
         p.int1("mapSize").set(base.size());
         p.float1("spacing").set((float) base.spacing());
         p.int1("cells").set(cells);
@@ -206,31 +194,27 @@ public final class TerrainSystem implements EngineSystem {
         counters.add(prefix + "patches", patches.size());
         counters.add(prefix + "culled", selection.culledPatches());
         counters.add(prefix + "select-ms", selectMs);
-        // 2. the maps, the materials and the view options (in the sun's pass the heights alone)
+        // 2. nearest first, so near ground hides far ground before it is shaded
+        order.sort(patches, tree.bounds(), copyOffsets, eye);
+        // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
+        // materials near and far and the view options
         maps.heights.bind(UNIT_HEIGHTS);
-        if (pass == Pass.SHADOW) {
-            depthProgram.use();
-            drawPatches(context, false);
-            return;
-        }
-        program.use();
-        maps.gradients.bind(UNIT_GRADIENTS);
-        maps.snow.bind(UNIT_SNOW);
-        materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
-        colouring.set(debug.colouring().ordinal());
-        drawPatches(context, debug.wireframe());
-    }
-
-    /** 3. the patches, front faces only. */
-    private void drawPatches(RenderContext context, boolean wireframe) {
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         glEnable(GL_CULL_FACE);
-        if (wireframe) {
-            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        if (pass == Pass.SHADOW) {
+            depthProgram.use();
+            renderer.draw(patches, order.order(), 0, order.size(), copyOffsets, context.stats());
+        } else {
+            maps.gradients.bind(UNIT_GRADIENTS);
+            maps.snow.bind(UNIT_SNOW);
+            if (debug.wireframe()) {
+                glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            }
+            shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class), debug.colouring(),
+                    renderer, context.stats());
+            glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
-        renderer.draw(patches, copyOffsets, context.stats());
-        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         glDisable(GL_CULL_FACE);
     }
 

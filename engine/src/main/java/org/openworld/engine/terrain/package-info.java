@@ -45,6 +45,16 @@
  * All textures are synthesised by {@link org.openworld.engine.terrain.TerrainTextures} (periodic noise, a recipe per
  * material, the packing into RGBA8); two scales are blended to hide the tiling the paper complains of in section 6.
  *
+ * <p><b>Near and far materials.</b> Far away the mip maps average most of a material away, so
+ * {@link org.openworld.engine.terrain.FarMaterial} bakes it once: steps 1–3 of {@code material.glsl} per texel of two
+ * textures over the tile (albedo and gloss, detail slope; 2 m texels by default). Patches are ordered nearest first
+ * ({@link org.openworld.engine.terrain.PatchOrder}: early depth rejection); those whose box lies beyond
+ * D = {@code materials.far-texels} baked texels run a far program of two lookups, the nearer ones the full material, faded into the
+ * baked one between 0.7 D and D so the two meet without a seam
+ * ({@link org.openworld.engine.terrain.TerrainShading}). The choice is made on the CPU: on a software rasteriser a
+ * branch runs both sides. Cost: the far program is about a quarter of the near one per pixel; the bake is one pass at
+ * start. Limit: edges finer than a texel are softer far away.
+ *
  * <p><b>Limits.</b> The whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
  * and again on the GPU); levels switch without geomorphing, so a patch can pop when it changes level; a generated
  * world repeats every tile; the snow map is capped at 2048².

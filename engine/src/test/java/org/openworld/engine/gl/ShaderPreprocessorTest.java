@@ -106,6 +106,21 @@ class ShaderPreprocessorTest {
         }
     }
 
+    @Test
+    void definesFollowTheVersionLineAndLeaveEveryFileLineItsOrigin() {
+        ShaderPreprocessor.Expanded expanded =
+                new ShaderPreprocessor(NESTED).expand("lit.frag", List.of("VARIANT_A", "VARIANT_B"));
+
+        List<String> lines = expanded.source().lines().toList();
+        assertEquals(List.of("#define VARIANT_A", "#define VARIANT_B"), lines.subList(1, 3));
+        assertTrue(expanded.origin(2).isEmpty() && expanded.origin(3).isEmpty(), "the defines are lines of ours");
+        NESTED_MARKERS.forEach((marker, place) -> {
+            ShaderPreprocessor.Origin origin = expanded.origin(lineOf(expanded.source(), marker)).orElseThrow();
+            assertEquals(place, origin.file() + ":" + origin.line(), marker);
+            assertEquals(lineOf(expanded.source(), marker), driverLocation(expanded.source(), marker, false)[1], marker);
+        });
+    }
+
     /**
      * Simulates a driver reading the text: the file number and line it gives a marker, following the #line directives
      * (since GLSL 3.30 the line after {@code #line N} is N; before, N + 1).

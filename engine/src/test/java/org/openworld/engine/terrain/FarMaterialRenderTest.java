@@ -1,0 +1,129 @@
+package org.openworld.engine.terrain;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.colour.DeltaE;
+import org.openworld.engine.colour.Lab;
+import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.Image;
+
+/**
+ * The baked far material against the near one it stands in for: the same ground drawn all near
+ * ({@code materials.far-texels} beyond everything) and all far ({@code 0}) must agree in its mean colour over every
+ * block of the picture, since where the two meet the near program fades into the far one. A far material that lost
+ * a layer, the macro tint, the snow or its place on the map would shift whole blocks. Pictures go to
+ * {@code target/test-images/far-material-*.png}.
+ */
+@GlTest
+class FarMaterialRenderTest {
+
+    static final int WIDTH = 320;
+    static final int HEIGHT = 180;
+    /** Blocks of the picture whose mean colours are compared: 16 × 9 of 20 × 20 pixels. */
+    static final int BLOCK = 20;
+
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
+
+    @Test
+    void theFarMaterialShowsTheNearOnesMeanColourOverEveryBlock() throws IOException {
+        // a 1 km tile with snow on its heights, seen from above its middle: grass, rock and snow at 150 to 700 m
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400"),
+                new TerrainSystem(), new CullingSystem())) {
+            engine.world().setResource(new TimeOfDay(11.0, 0));
+            engine.world().resource(Camera.class).setPose(new CameraPose(0, 450, 350, 0, -35, 60));
+            engine.settings().set("materials.far-texels", "100000");
+            Image near = frame(engine, "near");
+            engine.settings().set("materials.far-texels", "0");
+            Image far = frame(engine, "far");
+
+            double sum = 0;
+            double worst = 0;
+            int blocks = 0;
+            for (int by = 0; by < HEIGHT / BLOCK; by++) {
+                for (int bx = 0; bx < WIDTH / BLOCK; bx++) {
+                    Lab a = blockMean(near, bx, by);
+                    Lab b = blockMean(far, bx, by);
+                    if (a == null || b == null) {
+                        continue; // background in either picture: not ground
+                    }
+                    double d = DeltaE.ciede2000(a, b);
+                    sum += d;
+                    worst = Math.max(worst, d);
+                    blocks++;
+                }
+            }
+            assertTrue(blocks > 100, "the view shows ground in most blocks: " + blocks);
+            assertTrue(sum / blocks < 2.5, "mean ΔE00 of the block means, far against near: " + sum / blocks);
+            assertTrue(worst < 8, "largest ΔE00 of a block mean, far against near: " + worst);
+        }
+    }
+
+    /** The far material is baked again when the snow rule changes while running: the far ground shows the bands. */
+    @Test
+    void changingTheSnowRuleBakesTheFarMaterialAgain() throws IOException {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400", "materials.far-texels=0"),
+                new TerrainSystem(), new CullingSystem())) {
+            engine.world().setResource(new TimeOfDay(11.0, 0));
+            engine.world().resource(Camera.class).setPose(new CameraPose(0, 450, 350, 0, -35, 60));
+            Image map = frame(engine, "snow-map");
+            engine.settings().set("materials.snow-mode", "altitude-bands");
+            Image bands = frame(engine, "altitude-bands");
+
+            double sum = 0;
+            int blocks = 0;
+            for (int by = 0; by < HEIGHT / BLOCK; by++) {
+                for (int bx = 0; bx < WIDTH / BLOCK; bx++) {
+                    Lab a = blockMean(map, bx, by);
+                    Lab b = blockMean(bands, bx, by);
+                    if (a != null && b != null) {
+                        sum += DeltaE.ciede2000(a, b);
+                        blocks++;
+                    }
+                }
+            }
+            assertTrue(sum / blocks > 3, "mean ΔE00 of the block means, bands against the snow map: " + sum / blocks);
+        }
+    }
+
+    /** The mean colour of a block as Lab, or null if any pixel of it is the black background. */
+    private static Lab blockMean(Image image, int bx, int by) {
+        long r = 0, g = 0, b = 0;
+        for (int y = by * BLOCK; y < (by + 1) * BLOCK; y++) {
+            for (int x = bx * BLOCK; x < (bx + 1) * BLOCK; x++) {
+                int pr = image.channel(x, y, 0), pg = image.channel(x, y, 1), pb = image.channel(x, y, 2);
+                if (pr + pg + pb == 0) {
+                    return null;
+                }
+                r += pr;
+                g += pg;
+                b += pb;
+            }
+        }
+        int n = BLOCK * BLOCK;
+        return Lab.fromSrgb((int) Math.round((double) r / n), (int) Math.round((double) g / n),
+                (int) Math.round((double) b / n));
+    }
+
+    private static Image frame(Engine engine, String name) throws IOException {
+        engine.update();
+        engine.render();
+        Image image = engine.readImage();
+        image.writePng(Path.of("target/test-images/far-material-" + name + ".png"));
+        return image;
+    }
+}
