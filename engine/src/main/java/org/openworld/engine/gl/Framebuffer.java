@@ -3,18 +3,21 @@ package org.openworld.engine.gl;
 import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.List;
 import org.lwjgl.opengl.GL30C;
 import org.lwjgl.system.MemoryUtil;
 
 /**
  * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil), which it owns;
- * or one layer of a {@link DepthTextureArray}, which it borrows. The engine's scene target is RGBA8 +
- * depth24/stencil8; the water's reflection is colour + depth; each shadow cascade is a depth layer.
+ * or one layer of a {@link DepthTextureArray}, which it borrows; or several colour targets that one draw fills at
+ * once ({@link #colors}). The engine's scene target is RGBA8 + depth24/stencil8; the water's reflection is colour +
+ * depth; each shadow cascade is a depth layer; the sky's panorama is two colour targets.
  */
 public final class Framebuffer implements Labelled {
 
     private final GlContext gl;
-    private final Texture2D color;
+    private final List<Texture2D> colors = new ArrayList<>();
     private final Texture2D depth;
     private final int width;
     private final int height;
@@ -31,10 +34,12 @@ public final class Framebuffer implements Labelled {
         this.height = height;
         this.id = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
         glBindFramebuffer(GL_FRAMEBUFFER, id);
-        color = colorFormat == null ? null : Texture2D.empty(gl, width, height, colorFormat, sampling);
+        if (colorFormat != null) {
+            colors.add(Texture2D.empty(gl, width, height, colorFormat, sampling));
+        }
         depth = depthFormat == null ? null : Texture2D.empty(gl, width, height, depthFormat, sampling);
-        if (color != null) {
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+        if (colorFormat != null) {
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colors.get(0).id(), 0);
         } else {
             glDrawBuffer(GL_NONE);
             glReadBuffer(GL_NONE);
@@ -51,7 +56,6 @@ public final class Framebuffer implements Labelled {
         this.gl = gl;
         this.width = depth.size();
         this.height = depth.size();
-        this.color = null;
         this.depth = null;
         this.id = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
         glBindFramebuffer(GL_FRAMEBUFFER, id);
@@ -59,6 +63,26 @@ public final class Framebuffer implements Labelled {
         glReadBuffer(GL_NONE);
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, depth.id(), 0, layer);
         checkComplete();
+    }
+
+    /**
+     * {@code count} colour targets of one format and no depth: a fragment shader's output {@code layout(location = i)}
+     * goes to {@link #color(int) color(i)}, all in one draw.
+     */
+    public static Framebuffer colors(GlContext gl, int width, int height, int count, Format format,
+                                     Sampling sampling) {
+        Framebuffer f = new Framebuffer(gl, width, height, format, null, sampling);
+        glBindFramebuffer(GL_FRAMEBUFFER, f.id);
+        int[] buffers = new int[count];
+        buffers[0] = GL_COLOR_ATTACHMENT0;
+        for (int i = 1; i < count; i++) {
+            f.colors.add(Texture2D.empty(gl, width, height, format, sampling));
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, f.colors.get(i).id(), 0);
+            buffers[i] = GL_COLOR_ATTACHMENT0 + i;
+        }
+        glDrawBuffers(buffers);
+        f.checkComplete();
+        return f;
     }
 
     /** A target for one layer of a depth array, e.g. one shadow cascade; closing it leaves the array alone. */
@@ -102,8 +126,14 @@ public final class Framebuffer implements Labelled {
         return height;
     }
 
+    /** The (first) colour attachment; null for a depth-only target. */
     public Texture2D color() {
-        return color;
+        return colors.isEmpty() ? null : colors.get(0);
+    }
+
+    /** Colour attachment {@code i} of a target made by {@link #colors}. */
+    public Texture2D color(int i) {
+        return colors.get(i);
     }
 
     /** The owned depth attachment; null for a depth-only target on a layer of a {@link DepthTextureArray}. */
@@ -140,8 +170,8 @@ public final class Framebuffer implements Labelled {
     @Override
     public void label(String name) {
         gl.debug().label(GL_FRAMEBUFFER, id, name);
-        if (color != null) {
-            color.label(name + ".color");
+        for (int i = 0; i < colors.size(); i++) {
+            colors.get(i).label(name + ".color" + (i == 0 ? "" : String.valueOf(i)));
         }
         if (depth != null) {
             depth.label(name + ".depth");
@@ -150,9 +180,7 @@ public final class Framebuffer implements Labelled {
 
     @Override
     public void close() {
-        if (color != null) {
-            color.close();
-        }
+        colors.forEach(Texture2D::close);
         if (depth != null) {
             depth.close();
         }
