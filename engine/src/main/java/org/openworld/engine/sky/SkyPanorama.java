@@ -84,10 +84,8 @@ final class SkyPanorama {
         groundAlbedo.set((float) albedo);
         cloudParams.set(clouds);
         cloudMotion.set(motion);
-        target.bind();
-        glDisable(GL_DEPTH_TEST);
+        target.bind(); // no depth buffer: the depth test passes whatever its state
         fullScreen.draw(stats);
-        glEnable(GL_DEPTH_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, previous);
         glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     }

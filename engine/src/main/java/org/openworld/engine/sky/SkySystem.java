@@ -48,8 +48,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * cycle (the sky keeps the old ones until they are ready) and at once when it jumped (a new {@code --time}, a
  * scrub), so a picture never shows the tables of another hour. New tables are uploaded in the update, and the
  * {@link SkyPanorama} (the sky with its clouds in every direction) and the environment map are redrawn from them when
- * the tables or the cloud settings changed or the clouds drifted for {@link #PANORAMA_REFRESH} seconds: before any
- * pass, so every system that reads the sky's maps draws with this step's.
+ * the tables or the cloud settings changed, the sun moved {@link #PANORAMA_SUN_STEP} or the clouds drifted for
+ * {@link #PANORAMA_REFRESH} seconds: before any pass, so every system that reads the sky's maps draws with this
+ * step's.
  *
  * <p>Per pass (the water's REFLECTION, without the sun's disc, which the water adds as glitter; and MAIN) the sky is
  * the {@link org.openworld.engine.core.SystemSpec#background() background}: drawn after every opaque system, on the
@@ -229,17 +230,16 @@ public final class SkySystem implements EngineSystem {
         air.bind(SkyPanorama.UNIT_AIR);
         panorama.draw(sun, tables.altitude(), albedo, c.cloudParams(threshold, new Vector4f()),
                 c.cloudMotion(simTime, new Vector4f()), fullScreen, updateDraws);
-        // the environment map: the panorama into the six faces, linear and without the sun's disc
+        // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
+        // has a depth buffer, so the depth test passes whatever its state)
         program.use();
         panorama.sky().bind(0);
         panorama.clouds().bind(1);
         cubeFace.set(1);
-        glDisable(GL_DEPTH_TEST);
         environment.render(face -> {
             faceAxes.set(CubeMapTexture.faceAxes(face));
             fullScreen.draw(updateDraws);
         });
-        glEnable(GL_DEPTH_TEST);
         panoramaTime = simTime;
         panoramaTables = tables;
         panoramaSun.set(sun.direction());
