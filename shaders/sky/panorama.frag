@@ -14,7 +14,7 @@ layout(location = 1) out vec4 cloudTransmittance; // rgb: the cloud's colour; a:
 
 uniform sampler2D skyView;     // radiance per dome direction, display units (SkyView)
 uniform sampler3D airTable;    // in-scattering and transmittance per direction and distance (AerialPerspective)
-uniform float uSize;           // texels along the panorama's side
+uniform vec2 uSize;            // the panorama's size, texels (2N x N)
 uniform vec3 uSunDir;          // unit vector towards the sun
 uniform vec3 uSunColor;        // direct sunlight at the eye, display units
 uniform vec3 uAmbientColor;    // sky light on an upward surface, display units
@@ -32,7 +32,7 @@ vec3 distantGround(vec3 wsDir) {
 }
 
 void main() {
-    vec3 wsDir = panoramaDirection(gl_FragCoord.xy / uSize);
+    vec3 wsDir = panoramaDirection(gl_FragCoord.xy, uSize);
     vec3 sky = texture(skyView, skyViewUv(wsDir, uSunDir)).rgb;
     if (wsDir.y < 0.0) {
         sky += distantGround(wsDir);

@@ -40,7 +40,7 @@ vec3 sunDisc(vec3 wsDir) {
 void main() {
     vec3 wsDir = normalize(wsRay);
     // textureLod: the panorama has no mip levels, and an explicit level spares the rasteriser the derivatives
-    vec2 uv = panoramaUv(wsDir);
+    vec2 uv = panoramaUv(wsDir, vec2(textureSize(skyPanorama, 0)));
     vec4 sky = textureLod(skyPanorama, uv, 0.0);
     vec4 cloud = textureLod(cloudPanorama, uv, 0.0);
     float alpha = cloudOpacity(sky.a, cloud.a);

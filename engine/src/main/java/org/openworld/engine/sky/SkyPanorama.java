@@ -15,9 +15,9 @@ import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 
 /**
- * The sky and its clouds in every direction, drawn into square textures ({@code shaders/sky/panorama.frag}, layout
- * in {@code sky/panorama.glsl}): octahedral, the upper hemisphere the diamond in the middle (the zenith at the
- * centre, the horizon its edge), the lower folded into the corners. Two textures, drawn at once: the sky behind the
+ * The sky and its clouds in every direction, drawn into textures ({@code shaders/sky/panorama.frag}, layout in
+ * {@code sky/panorama.glsl}): two hemi-octahedral squares side by side, the upper hemisphere and the lower, each
+ * with the zenith (nadir) at its centre and the horizon its border. Two textures, drawn at once: the sky behind the
  * clouds with the cloud's density above its threshold, and the cloud's colour with what the horizon fog leaves of
  * it. The sky pass draws the cloud's edge per pixel from the interpolated density ({@code cloudOpacity}), as a
  * smoothstep of the bilinear density is round where a bilinear opacity would show the texel grid, and adds the sun's
@@ -25,14 +25,14 @@ import org.openworld.engine.gl.Uniform;
  *
  * <p>The sky pass and the environment map read it with one lookup per texture instead of evaluating the dome, the
  * distant ground and the cloud layer for every pixel of every frame; it is redrawn only when the sun or the clouds
- * moved ({@link SkySystem#PANORAMA_REFRESH}). {@link #SIZE} was chosen by looking: at 768² a texel is 0.17° along
- * the horizon and 0.23° across it (finer near the zenith's diagonals, coarser at its axes, within a factor of 2),
- * several texels to one of the 128² cloud field's wherever the horizon fog leaves a cloud to see.
+ * moved ({@link SkySystem#PANORAMA_REFRESH}). {@link #SIZE} was chosen by looking: at 576² a hemisphere a texel is
+ * 0.16° along the horizon and 0.31° from the horizon towards the zenith (within a factor of 2 everywhere), several
+ * texels to one of the 128² cloud field's wherever the horizon fog leaves a cloud to see.
  */
 final class SkyPanorama {
 
-    /** Texels along a side of the square. */
-    static final int SIZE = 768;
+    /** Texels along a side of each hemisphere's square; the textures are 2 SIZE × SIZE. */
+    static final int SIZE = 576;
     /** Texture units of the tables the panorama is drawn from. */
     static final int UNIT_VIEW = 0;
     static final int UNIT_CLOUDS = 1;
@@ -54,7 +54,7 @@ final class SkyPanorama {
         program.sampler("cloudField", UNIT_CLOUDS);
         program.sampler("airTable", UNIT_AIR);
         program.use();
-        program.float1("uSize").set(SIZE);
+        program.vec2("uSize").set(2 * SIZE, SIZE);
         sunDir = program.vec3("uSunDir");
         sunColor = program.vec3("uSunColor");
         ambientColor = program.vec3("uAmbientColor");
@@ -62,7 +62,7 @@ final class SkyPanorama {
         groundAlbedo = program.float1("uGroundAlbedo");
         cloudParams = program.vec4("cloudParams");
         cloudMotion = program.vec4("cloudMotion");
-        target = context.own("panorama", Framebuffer.colors(context.gl(), SIZE, SIZE, 2, Format.RGBA16F,
+        target = context.own("panorama", Framebuffer.colors(context.gl(), 2 * SIZE, SIZE, 2, Format.RGBA16F,
                 Sampling.LINEAR_CLAMP));
     }
 

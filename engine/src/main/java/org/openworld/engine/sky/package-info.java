@@ -45,8 +45,9 @@
  * fails the depth test before its fragment shader runs (early depth rejection, which llvmpipe does too while the
  * shader neither writes depth nor discards), and the sky costs in proportion to the sky one sees. What it does shade
  * is one lookup: the dome, the distant ground and the clouds are evaluated not per pixel but per texel of a
- * {@link org.openworld.engine.sky.SkyPanorama} (octahedral, 768²: the upper hemisphere a diamond with the zenith at
- * its centre and the horizon its edge, {@code d / (|x| + |y| + |z|)}, no trigonometry), redrawn in the update when
+ * {@link org.openworld.engine.sky.SkyPanorama} (two hemi-octahedral squares of 576², the direction projected onto
+ * the octahedron {@code d / (|x| + |y| + |z|)} and its half turned by 45° to fill a square with the zenith at the
+ * centre and the horizon on the border: no trigonometry per pixel), redrawn in the update when
  * the tables or the cloud settings changed, the sun moved 0.1° or the clouds drifted for half a second; the
  * environment map is drawn from it then too. Two values cannot be interpolated from a panorama without losing what
  * they look like, so they stay per pixel: the cloud's edge, a smoothstep of the interpolated density (a bilinear
