@@ -40,6 +40,7 @@ final class SkyPanorama {
 
     private final ShaderProgram program;
     private final Framebuffer target;
+    private final Uniform.Vec2 size;
     private final Uniform.Vec3 sunDir;
     private final Uniform.Vec3 sunColor;
     private final Uniform.Vec3 ambientColor;
@@ -53,8 +54,7 @@ final class SkyPanorama {
         program.sampler("skyView", UNIT_VIEW);
         program.sampler("cloudField", UNIT_CLOUDS);
         program.sampler("airTable", UNIT_AIR);
-        program.use();
-        program.vec2("uSize").set(2 * SIZE, SIZE);
+        size = program.vec2("uSize");
         sunDir = program.vec3("uSunDir");
         sunColor = program.vec3("uSunColor");
         ambientColor = program.vec3("uAmbientColor");
@@ -77,6 +77,7 @@ final class SkyPanorama {
         int[] viewport = new int[4];
         glGetIntegerv(GL_VIEWPORT, viewport);
         program.use();
+        size.set(2 * SIZE, SIZE);
         sunDir.set(sun.direction());
         sunColor.set(sun.color());
         ambientColor.set(sun.ambient());
