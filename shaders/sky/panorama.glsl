@@ -5,8 +5,8 @@
 // |x| + |z| <= 1, turned by 45 degrees (s = x + z, t = x - z) to fill a square with the zenith (or the nadir) at its
 // centre and the horizon its border. No trigonometry per pixel (an equirectangular map needs an atan and an asin,
 // which are dear on a software rasteriser), texels of nearly one solid angle (within a factor of about 2), and the
-// horizon on the squares' edges, where clamping keeps the sky above it from being blended with the ground below: a
-// horizon across the texels (a plain octahedral map's diagonal) shows its texel steps as a row of dots.
+// horizon on the squares' edges, where clamping keeps the sky above it from being blended with the ground below (a
+// plain octahedral map has its horizon across the texels, diagonally).
 #include "common/conventions.glsl"
 
 // Texture coordinates of the direction wsDir (any length) in a panorama of size texels (2N x N).
