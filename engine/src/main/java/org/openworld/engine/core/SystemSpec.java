@@ -124,8 +124,8 @@ public final class SystemSpec {
     }
 
     /**
-     * Its update issues GPU work (a transform-feedback step): the engine times each update on the GPU as a span
-     * labelled {@code update.name}, beside the passes' spans.
+     * Its update issues GPU work (the snow's transform-feedback step, the sky's panorama): the engine times each
+     * update on the GPU as a span labelled {@code update.name}, beside the passes' spans.
      */
     public SystemSpec updatesOnGpu() {
         updatesOnGpu = true;
