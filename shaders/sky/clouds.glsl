@@ -1,7 +1,10 @@
 // Clouds on the sky dome (paper 2.3, figure 5 a-d). The density field is a 3D DFT over two axes of space and one
 // of time (engine: org.openworld.engine.sky.CloudField); the uniforms are packed by CloudSettings.cloudParams and
-// CloudSettings.cloudMotion. Include it in a sky shader and call cloudLayer() per view direction, then composite:
-//   sky = sky * (1.0 - clouds.a) + clouds.rgb
+// CloudSettings.cloudMotion. In two steps: cloudAlong() per direction reads the field and lights the cloud (the sky
+// panorama stores what it returns), and cloudOpacity() draws the cloud's edge from the density (per pixel, from the
+// panorama's interpolated density, so the edge is as smooth as the field's and not the panorama's texel grid):
+//   float alpha = cloudOpacity(cloud.excess, cloud.transmittance);
+//   sky = mix(sky, cloud.color, alpha)
 #include "common/conventions.glsl"
 
 uniform sampler3D cloudField; // density, mean 0 and standard deviation 1; s, t: one tile; r: one period. R16F, repeat
@@ -54,19 +57,25 @@ vec2 cloudCoordinates(vec3 wsDir, int mapping) {
     return (wsOnLayer - cloudMotion.xy) / cloudParams.z;
 }
 
-// The cloud layer seen along the unit view direction wsDir (world space, Y up): rgb is the cloud's linear colour
-// premultiplied by alpha, alpha its opacity; both 0 at and below the horizon. sunDir is the unit vector towards
-// the sun, sunColor the direct sunlight, ambientColor the sky light on an upward surface and horizonColor the
-// sky's colour at the horizon, into which the fog mappings fade the far clouds.
+// The cloud layer along the unit view direction wsDir (world space, Y up), all but the edge: excess is the density
+// above the threshold (standard deviations; negative where there is no cloud), color the cloud's linear colour and
+// transmittance what the horizon fog leaves of it (1 without fog; 0 at and below the horizon, where there are no
+// clouds). sunDir is the unit vector towards the sun, sunColor the direct sunlight, ambientColor the sky light on an
+// upward surface and horizonColor the sky's colour at the horizon, into which the fog mappings fade the far clouds.
 //
-// Opacity: smoothstep from the threshold to CLOUD_EDGE above it, so the fraction of the field with any cloud is
-// the cover the threshold was made for. Light: CLOUD_AMBIENT * ambient, plus the sun through the cloud, dimmer in
-// thick cores, plus a silver lining in thin rims towards the sun. Fog (mappings 1 and 3): with T the
-// transmittance exp(-distance along the layer / fog distance), the colour goes to the horizon colour and the
-// opacity to 0 as T does, so the farthest clouds dissolve into whatever sky lies behind them.
-vec4 cloudLayer(vec3 wsDir, vec3 sunDir, vec3 sunColor, vec3 ambientColor, vec3 horizonColor) {
+// Light: CLOUD_AMBIENT * ambient, plus the sun through the cloud, dimmer in thick cores, plus a silver lining in thin
+// rims towards the sun. Fog (mappings 1 and 3): with T the transmittance exp(-distance along the layer / fog
+// distance), the colour goes to the horizon colour and the opacity to 0 as T does, so the farthest clouds dissolve
+// into whatever sky lies behind them.
+struct Cloud {
+    float excess;
+    vec3 color;
+    float transmittance;
+};
+
+Cloud cloudAlong(vec3 wsDir, vec3 sunDir, vec3 sunColor, vec3 ambientColor, vec3 horizonColor) {
     if (wsDir.y <= 0.0) {
-        return vec4(0.0);
+        return Cloud(-1.0, vec3(0.0), 0.0);
     }
     int mapping = int(cloudMotion.w + 0.5);
 
@@ -76,8 +85,7 @@ vec4 cloudLayer(vec3 wsDir, vec3 sunDir, vec3 sunColor, vec3 ambientColor, vec3 
     vec3 str = vec3(cloudCoordinates(wsDir, mapping), cloudMotion.z + 0.5 / frames);
     float excess = texture(cloudField, str).r - cloudParams.x;
 
-    // 2. opacity and thickness from the density above the threshold
-    float alpha = smoothstep(0.0, CLOUD_EDGE, excess);
+    // 2. thickness from the density above the threshold
     float thick = smoothstep(0.0, CLOUD_THICK, excess);
 
     // 3. light
@@ -87,10 +95,16 @@ vec4 cloudLayer(vec3 wsDir, vec3 sunDir, vec3 sunColor, vec3 ambientColor, vec3 
     vec3 color = CLOUD_AMBIENT * ambientColor + sun * sunColor;
 
     // 4. horizon fog for the fog mappings
+    float transmittance = 1.0;
     if (mapping == 1 || mapping == 3) {
-        float transmittance = exp(-cloudLayerDistance(wsDir) / cloudParams.w);
+        transmittance = exp(-cloudLayerDistance(wsDir) / cloudParams.w);
         color = mix(horizonColor, color, transmittance);
-        alpha *= transmittance;
     }
-    return vec4(color * alpha, alpha);
+    return Cloud(excess, color, transmittance);
+}
+
+// The cloud's opacity: a smoothstep from the threshold to CLOUD_EDGE above it, so the fraction of the field with any
+// cloud is the cover the threshold was made for; times what the fog leaves.
+float cloudOpacity(float excess, float transmittance) {
+    return smoothstep(0.0, CLOUD_EDGE, excess) * transmittance;
 }

@@ -1,23 +1,21 @@
 #version 330 core
-// The sky (paper 2.3 and 3.1): the dome's radiance from the SkyView table, the ground far below the horizon seen
-// through the air, the sun's disc with limb darkening, and the cloud layer. Drawn twice: on the camera's far plane
-// (exposed and tone-mapped), and into the six faces of the environment map (linear, no sun disc: glossy surfaces
-// add the sun's highlight themselves, and a disc smaller than a texel would only flicker).
+// The sky (paper 2.3 and 3.1) read from the panorama (sky/panorama.frag) with one lookup per pixel. Drawn twice: on
+// the camera's far plane after the opaque systems, depth-tested, so only the pixels no surface covers are shaded
+// (exposed and tone-mapped, with the sun's disc); and into the six faces of the environment map (linear, no sun
+// disc: glossy surfaces add the sun's highlight themselves, and a disc smaller than a texel would only flicker).
 // Engine: org.openworld.engine.sky.SkySystem.
 #include "common/frame.glsl"
 #include "common/color.glsl"
-#include "sky/atmosphere.glsl"
 #include "sky/clouds.glsl"
+#include "sky/panorama.glsl"
 
-in vec2 ndc;
+in vec3 wsRay;
 out vec4 fragColor;
 
-uniform sampler2D skyView;         // radiance per dome direction, display units (SkyView)
-uniform sampler3D aerialPerspective; // engine-bound: in-scattering and transmittance per direction and distance
-uniform int uCubeFace;             // 0: the camera's view; 1: a face of the environment map, through uFaceAxes
-uniform mat3 uFaceAxes;            // the face's s, t and outward axes (CubeMapTexture.faceAxes)
-uniform float uGroundAlbedo;       // the ground seen below the horizon (AtmosphereSettings.groundAlbedo)
-uniform int uSunDisc;              // 1: draw the sun's disc; 0 in the water's reflection, whose shader adds the sun's
+uniform sampler2D skyPanorama;     // the sky behind the clouds, linear rgb; alpha: the cloud's density excess
+uniform sampler2D cloudPanorama;   // the clouds' colour, linear rgb; alpha: what the horizon fog leaves of them
+uniform int uCubeFace;             // 0: the camera's view; 1: a face of the environment map (sky.vert)
+uniform float uSunDisc;            // 1: draw the sun's disc; 0 in the water's reflection, whose shader adds the sun's
                                    // glitter on the ripples itself (the disc's mirror image would count it twice)
 
 // The sun's angular radius, radians (0.2666 degrees, seen from Earth).
@@ -28,44 +26,30 @@ const float SUN_RADIUS = 0.004654;
 const float LIMB_U = 0.6;
 
 // The disc's radiance in display units: the sunlight at the eye (irradiance, frame.sunColor) spread over the
-// disc's solid angle pi R^2, times pi for display units: sunColor / R^2, shaped by the limb darkening.
+// disc's solid angle pi R^2, times pi for display units: sunColor / R^2, shaped by the limb darkening. Computed per
+// pixel, not read from the panorama, so its edge stays as sharp as the screen. The angle to the sun is the chord
+// |wsDir - sunDir| (2 sin(angle / 2), off by a millionth within the disc), which needs no acos.
 vec3 sunDisc(vec3 wsDir) {
-    float angle = acos(clamp(dot(wsDir, sunDir()), -1.0, 1.0));
-    if (angle >= SUN_RADIUS) {
-        return vec3(0.0);
-    }
-    float r = angle / SUN_RADIUS;
+    float angle = length(wsDir - sunDir());
+    float r = min(angle / SUN_RADIUS, 1.0);
     float mu = sqrt(1.0 - r * r);
     float limb = (1.0 - LIMB_U * (1.0 - mu)) / (1.0 - LIMB_U / 3.0);
-    return frame.sunColor.rgb * limb / (SUN_RADIUS * SUN_RADIUS);
-}
-
-// Below the horizon, beyond all terrain: level ground at sea level lit by the sun and the sky, seen through the air
-// (the SkyView table already holds the light scattered in on the way; this adds the ground's own, transmitted).
-vec3 distantGround(vec3 wsDir) {
-    float altitude = max(cameraPos().y, 1.0);
-    float distance = altitude / max(-wsDir.y, 1e-4);
-    float transmittance = texture(aerialPerspective, aerialPerspectiveUvw(wsDir, sunDir(), distance)).a;
-    vec3 lit = uGroundAlbedo * (frame.sunColor.rgb * max(sunDir().y, 0.0) + frame.ambientColor.rgb);
-    return lit * transmittance;
+    return step(angle, SUN_RADIUS) * frame.sunColor.rgb * limb / (SUN_RADIUS * SUN_RADIUS);
 }
 
 void main() {
-    vec3 wsDir;
+    vec3 wsDir = normalize(wsRay);
+    // textureLod: the panorama has no mip levels, and an explicit level spares the rasteriser the derivatives
+    vec2 uv = panoramaUv(wsDir, vec2(textureSize(skyPanorama, 0)));
+    vec4 sky = textureLod(skyPanorama, uv, 0.0);
+    vec4 cloud = textureLod(cloudPanorama, uv, 0.0);
+    float alpha = cloudOpacity(sky.a, cloud.a);
+    vec3 radiance = mix(sky.rgb, cloud.rgb, alpha);
     if (uCubeFace == 1) {
-        wsDir = normalize(uFaceAxes * vec3(ndc, 1.0));
-    } else {
-        wsDir = normalize(viewRay(ndc));
+        fragColor = vec4(radiance, 1.0);
+        return;
     }
-    vec3 sky = texture(skyView, skyViewUv(wsDir, sunDir())).rgb;
-    if (wsDir.y < 0.0) {
-        sky += distantGround(wsDir);
-    } else if (uCubeFace == 0 && uSunDisc == 1) {
-        sky += sunDisc(wsDir);
-    }
-    vec3 level = normalize(vec3(wsDir.x, 0.0, wsDir.z) + vec3(1e-6, 0.0, 0.0));
-    vec3 horizon = texture(skyView, skyViewUv(level, sunDir())).rgb;
-    vec4 clouds = cloudLayer(wsDir, sunDir(), frame.sunColor.rgb, frame.ambientColor.rgb, horizon);
-    sky = sky * (1.0 - clouds.a) + clouds.rgb;
-    fragColor = vec4(uCubeFace == 1 ? sky : displayColor(sky), 1.0);
+    // the disc behind the clouds, and none below the horizon (the distant ground)
+    radiance += uSunDisc * step(0.0, wsDir.y) * (1.0 - alpha) * sunDisc(wsDir);
+    fragColor = vec4(displayColor(radiance), 1.0);
 }

@@ -25,7 +25,8 @@ void main() {
     vec3 wsDir = normalize(forward + ndc.x * camera.z * camera.w * right + ndc.y * camera.z * up);
 
     vec3 sky = wsDir.y > 0.0 ? mix(horizonColor, zenithColor, sqrt(wsDir.y)) : GROUND;
-    vec4 clouds = cloudsOn * cloudLayer(wsDir, uSunDir, sunColor, ambientColor, horizonColor);
+    Cloud cloud = cloudAlong(wsDir, uSunDir, sunColor, ambientColor, horizonColor);
+    float alpha = cloudsOn * cloudOpacity(cloud.excess, cloud.transmittance);
     // tone curve and sRGB without the engine's exposure: this fixture runs without an engine's frame block
-    fragColor = vec4(linearToSrgb(toneMapAces(sky * (1.0 - clouds.a) + clouds.rgb)), clouds.a);
+    fragColor = vec4(linearToSrgb(toneMapAces(mix(sky, cloud.color, alpha))), alpha);
 }

@@ -23,7 +23,9 @@ import java.util.stream.Collectors;
  *       {@code publishes()}, orders nothing);</li>
  *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one;</li>
  *   <li>{@code overOpaque()}: every opaque system (neither transparent nor over the opaque) that draws in one of its
- *       passes before the one drawn over them (the water, which sees through to them).</li>
+ *       passes before the one drawn over them (the water, which sees through to them);</li>
+ *   <li>{@code background()}: every opaque system (neither transparent, nor over the opaque, nor a background) that
+ *       draws in one of its passes before the background (the sky, shaded only where they left the far plane).</li>
  * </ul>
  * Two systems that write the same type must be ordered by {@code after} (directly or through other
  * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
@@ -75,6 +77,9 @@ public final class SystemOrder {
                 } else if (t.isOverOpaque() && !o.isOverOpaque() && !o.isTransparent()) {
                     graph.edge(o.name(), t.name(), t.name() + " is drawn over the opaque picture, which it reads: "
                             + "over what " + o.name() + " draws in " + shared.iterator().next().label());
+                } else if (t.isBackground() && !o.isBackground() && !o.isOverOpaque() && !o.isTransparent()) {
+                    graph.edge(o.name(), t.name(), t.name() + " is the background, shaded only where nothing opaque "
+                            + "is: behind what " + o.name() + " draws in " + shared.iterator().next().label());
                 }
             }
         }

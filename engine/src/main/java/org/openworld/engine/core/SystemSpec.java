@@ -30,6 +30,7 @@ public final class SystemSpec {
     private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
     private boolean transparent;
     private boolean overOpaque;
+    private boolean background;
     private boolean offByDefault;
     private boolean updatesOnGpu;
 
@@ -101,8 +102,8 @@ public final class SystemSpec {
     /**
      * It draws over the finished opaque picture of its passes and reads it (the water copies the scene's colour and
      * depth to show what lies behind and under it): it follows every system that draws opaque in one of its passes
-     * (neither {@link #transparent()} nor this), without naming them, so a new opaque system is behind the water
-     * whatever it is called. Transparent systems still follow it.
+     * (neither {@link #transparent()} nor this; the {@link #background()} included), without naming them, so a new
+     * opaque system is behind the water whatever it is called. Transparent systems still follow it.
      */
     public SystemSpec overOpaque() {
         overOpaque = true;
@@ -110,8 +111,21 @@ public final class SystemSpec {
     }
 
     /**
-     * Its update issues GPU work (a transform-feedback step): the engine times each update on the GPU as a span
-     * labelled {@code update.name}, beside the passes' spans.
+     * It draws the background of its passes, what lies behind every surface (the sky): it follows every opaque system
+     * that draws in one of its passes (neither transparent, nor over the opaque, nor another background), without
+     * naming them, and draws at the far plane with the depth test on and depth writes off, so the pixels an opaque
+     * surface already covers fail the depth test before they are shaded (early depth rejection) and each pixel is
+     * shaded once. Systems drawn over the opaque picture, and transparent ones, still follow it. Work the opaque
+     * systems need from it (tables, maps) it does before the passes, in its update.
+     */
+    public SystemSpec background() {
+        background = true;
+        return this;
+    }
+
+    /**
+     * Its update issues GPU work (the snow's transform-feedback step, the sky's panorama): the engine times each
+     * update on the GPU as a span labelled {@code update.name}, beside the passes' spans.
      */
     public SystemSpec updatesOnGpu() {
         updatesOnGpu = true;
@@ -159,6 +173,10 @@ public final class SystemSpec {
 
     public boolean isOverOpaque() {
         return overOpaque;
+    }
+
+    public boolean isBackground() {
+        return background;
     }
 
     public boolean isOffByDefault() {

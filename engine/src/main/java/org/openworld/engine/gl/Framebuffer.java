@@ -8,9 +8,10 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil), which it owns;
- * or one layer of a {@link DepthTextureArray}, or level 0 of colour textures (e.g. baked once, then mipmapped), which
- * it borrows. The engine's scene target is RGBA8 +
- * depth24/stencil8; the water's reflection is colour + depth; each shadow cascade is a depth layer.
+ * or one layer of a {@link DepthTextureArray}, or level 0 of one or more colour textures that one draw fills at once
+ * (e.g. baked once, then mipmapped), which it borrows. The engine's scene target is RGBA8 + depth24/stencil8; the
+ * water's reflection is colour + depth; each shadow cascade is a depth layer; the sky's panorama is two colour
+ * textures.
  */
 public final class Framebuffer implements Labelled {
 

@@ -26,6 +26,7 @@ import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.environment.Wind;
 import org.openworld.engine.gl.CubeMapTexture;
+import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
@@ -45,20 +46,34 @@ import org.openworld.engine.settings.SettingsGroup;
  * <p>Per update: the sun's direction from the clock ({@link SolarPosition}); when it or the eye's altitude moved
  * enough to matter ({@link SunTables#staleFor}) new tables, on a worker thread while the sun drifts with the day
  * cycle (the sky keeps the old ones until they are ready) and at once when it jumped (a new {@code --time}, a
- * scrub), so a picture never shows the tables of another hour. Per frame, in the first pass it draws: new tables are
- * uploaded; in MAIN the environment map is redrawn when they changed or the clouds drifted for
- * {@link #ENVIRONMENT_REFRESH} seconds; in both the water's REFLECTION (without the sun's disc, which the water adds as
- * glitter) and MAIN the sky is drawn on the far plane.
+ * scrub), so a picture never shows the tables of another hour. New tables are uploaded in the update, and the
+ * {@link SkyPanorama} (the sky with its clouds in every direction) and the environment map are redrawn from them when
+ * the tables or the cloud settings changed, the sun moved {@link #PANORAMA_SUN_STEP} or the clouds drifted for
+ * {@link #PANORAMA_REFRESH} seconds: before any pass, so every system that reads the sky's maps draws with this
+ * step's.
  *
- * <p>Counters: {@code sky.tables-ms} (CPU time of tables that arrived this frame), {@code sky.environment} (1 when
- * the environment map was redrawn).
+ * <p>Per pass (the water's REFLECTION, without the sun's disc, which the water adds as glitter; and MAIN) the sky is
+ * the {@link org.openworld.engine.core.SystemSpec#background() background}: drawn after every opaque system, on the
+ * far plane with the depth test on and depth writes off, so a pixel some surface covers is rejected before it is
+ * shaded, and each sky pixel is one panorama lookup plus the sun's disc.
+ *
+ * <p>Counters: {@code sky.tables-ms} (CPU time of tables that arrived this frame), {@code sky.panorama} (1 when the
+ * panorama and the environment map were redrawn).
  */
 public final class SkySystem implements EngineSystem {
 
     /** Texels along a side of the environment map's faces: the sky's gradients are smooth, so few suffice. */
     public static final int ENVIRONMENT_SIZE = 64;
-    /** Simulation seconds after which drifting clouds are redrawn into the environment map. */
-    static final double ENVIRONMENT_REFRESH = 1.0;
+    /**
+     * Simulation seconds after which drifting clouds are redrawn into the panorama: at the default wind (8 m/s on a
+     * layer 2500 m up) the clouds overhead move 0.09° meanwhile, about a pixel of a 1280 × 720 picture.
+     */
+    static final double PANORAMA_REFRESH = 0.5;
+    /**
+     * Radians the sun may move before the panorama is redrawn: it is laid out in world azimuth, while the tables
+     * follow the sun's elevation only. A third of the disc's radius.
+     */
+    static final double PANORAMA_SUN_STEP = Math.toRadians(0.1);
     /**
      * Tables this many steps of {@link SunTables#staleFor} away are rebuilt at once rather than in the background: the
      * sun jumped (a new time was set) instead of drifting with the day cycle.
@@ -85,17 +100,21 @@ public final class SkySystem implements EngineSystem {
     private double simTime;
     /** Whether a simulation step has run: init's update, of 0 s, sees the camera before anyone placed it. */
     private boolean stepped;
-    private double environmentTime = Double.NEGATIVE_INFINITY;
-    private boolean environmentDirty = true;
+    /** The simulation time, tables and settings the panorama was last drawn for. */
+    private double panoramaTime;
+    private SunTables panoramaTables;
+    private final Vector3f panoramaSun = new Vector3f();
+    private CloudSettings panoramaClouds;
+    private double panoramaAlbedo = Double.NaN;
+    /** The panorama's draws, made in the update, outside any frame's counts. */
+    private final DrawStats updateDraws = new DrawStats();
 
     private ShaderProgram program;
     private Uniform.Int cubeFace;
     private Uniform.Mat3 faceAxes;
-    private Uniform.Float groundAlbedo;
-    private Uniform.Int sunDisc;
-    private Uniform.Vec4 cloudParams;
-    private Uniform.Vec4 cloudMotion;
+    private Uniform.Float sunDisc;
     private Mesh fullScreen;
+    private SkyPanorama panorama;
     private Texture2D skyView;
     private Texture3D air;
     private Texture3D clouds;
@@ -108,7 +127,8 @@ public final class SkySystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("sky").reads(TimeOfDay.class, Settings.class, Camera.class)
-                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).draws(Pass.REFLECTION, Pass.MAIN);
+                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).updatesOnGpu().background()
+                .draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -124,14 +144,12 @@ public final class SkySystem implements EngineSystem {
         int seed = settings.get(EngineSettings.class).seed();
         cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), seed);
         program = context.own("program", context.shaders().program("sky/sky.vert", "sky/sky.frag"));
-        program.sampler("skyView", 0);
-        program.sampler("cloudField", 1);
+        program.sampler("skyPanorama", 0);
+        program.sampler("cloudPanorama", 1);
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
-        groundAlbedo = program.float1("uGroundAlbedo");
-        sunDisc = program.int1("uSunDisc");
-        cloudParams = program.vec4("cloudParams");
-        cloudMotion = program.vec4("cloudMotion");
+        sunDisc = program.float1("uSunDisc");
+        panorama = new SkyPanorama(context);
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
         skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB16F,
                 Sampling.LINEAR_CLAMP));
@@ -184,6 +202,50 @@ public final class SkySystem implements EngineSystem {
         world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient())));
         world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
         world.setResource(new Wind(settings.get(CloudSettings.class).windVelocity(new Vector3f())));
+        refresh(settings, world.resource(Sun.class), counters);
+    }
+
+    /**
+     * Uploads tables that arrived and redraws the panorama and the environment map when the tables, the cloud
+     * settings or the ground changed, the sun moved {@link #PANORAMA_SUN_STEP}, or the clouds drifted for
+     * {@link #PANORAMA_REFRESH} seconds.
+     */
+    private void refresh(Settings settings, Sun sun, Counters counters) {
+        if (uploaded != tables) {
+            uploadTables(tables);
+            uploaded = tables;
+        }
+        CloudSettings c = settings.get(CloudSettings.class);
+        double albedo = settings.get(AtmosphereSettings.class).groundAlbedo();
+        if (panoramaTables == tables && c.equals(panoramaClouds) && albedo == panoramaAlbedo
+                && sun.direction().angle(panoramaSun) < PANORAMA_SUN_STEP && simTime - panoramaTime < PANORAMA_REFRESH) {
+            return;
+        }
+        if (c.cover() != thresholdCover) {
+            threshold = CloudField.coverageThreshold(cloudField, c.cover());
+            thresholdCover = c.cover();
+        }
+        skyView.bind(SkyPanorama.UNIT_VIEW);
+        clouds.bind(SkyPanorama.UNIT_CLOUDS);
+        air.bind(SkyPanorama.UNIT_AIR);
+        panorama.draw(sun, tables.altitude(), albedo, c.cloudParams(threshold, new Vector4f()),
+                c.cloudMotion(simTime, new Vector4f()), fullScreen, updateDraws);
+        // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
+        // has a depth buffer, so the depth test passes whatever its state)
+        program.use();
+        panorama.sky().bind(0);
+        panorama.clouds().bind(1);
+        cubeFace.set(1);
+        environment.render(face -> {
+            faceAxes.set(CubeMapTexture.faceAxes(face));
+            fullScreen.draw(updateDraws);
+        });
+        panoramaTime = simTime;
+        panoramaTables = tables;
+        panoramaSun.set(sun.direction());
+        panoramaClouds = c;
+        panoramaAlbedo = albedo;
+        counters.put("sky.panorama", 1);
     }
 
     /** New tables for a sun and an eye, reusing those of {@code current} (may be null) that the air shares. */
@@ -224,51 +286,20 @@ public final class SkySystem implements EngineSystem {
         return new Vector3f((float) v.x, (float) v.y, (float) v.z);
     }
 
+    /** The sky behind everything opaque: the far plane, depth-tested, one panorama lookup and the sun's disc. */
     @Override
     public void render(Pass pass, RenderContext context) {
-        Settings settings = context.world().resource(Settings.class);
-        if (uploaded != tables) {
-            uploadTables(tables);
-            uploaded = tables;
-            environmentDirty = true;
-        }
-        CloudSettings c = settings.get(CloudSettings.class);
         program.use();
-        skyView.bind(0);
-        clouds.bind(1);
-        groundAlbedo.set((float) settings.get(AtmosphereSettings.class).groundAlbedo());
-        if (c.cover() != thresholdCover) {
-            threshold = CloudField.coverageThreshold(cloudField, c.cover());
-            thresholdCover = c.cover();
-        }
-        cloudParams.set(c.cloudParams(threshold, new Vector4f()));
-        cloudMotion.set(c.cloudMotion(simTime, new Vector4f()));
-        // the environment is seen from the viewer, so it is drawn in MAIN (the reflection's eye is under the water)
-        if (pass == Pass.MAIN && (environmentDirty || simTime - environmentTime >= ENVIRONMENT_REFRESH)) {
-            drawEnvironment(context);
-            context.world().resource(Counters.class).put("sky.environment", 1);
-        }
+        panorama.sky().bind(0);
+        panorama.clouds().bind(1);
+        cubeFace.set(0);
+        sunDisc.set(pass == Pass.MAIN ? 1 : 0);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(false);
-        cubeFace.set(0);
-        sunDisc.set(pass == Pass.MAIN ? 1 : 0);
         fullScreen.draw(context.stats());
         glDepthMask(true);
         glDepthFunc(GL_LESS);
-    }
-
-    /** The sky without the sun's disc into the six faces of the environment map, linear. */
-    private void drawEnvironment(RenderContext context) {
-        glDisable(GL_DEPTH_TEST);
-        cubeFace.set(1);
-        environment.render(face -> {
-            faceAxes.set(CubeMapTexture.faceAxes(face));
-            fullScreen.draw(context.stats());
-        });
-        glEnable(GL_DEPTH_TEST);
-        environmentTime = simTime;
-        environmentDirty = false;
     }
 
     private void uploadTables(SunTables t) {

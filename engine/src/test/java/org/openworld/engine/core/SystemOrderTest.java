@@ -91,6 +91,26 @@ class SystemOrderTest {
     }
 
     @Test
+    void theBackgroundFollowsTheOpaqueSystemsOfItsPassesAndPrecedesWhatIsDrawnOverThem() {
+        // Alphabetically "sky" would go first of the drawers and "terrain" after it; the sky writes the sun the
+        // shadow reads, and its update still runs before that reader's.
+        List<Fake> systems = List.of(
+                system(SystemSpec.named("terrain").draws(Pass.MAIN, Pass.REFLECTION)),
+                system(SystemSpec.named("rocks").draws(Pass.REFLECTION)),
+                system(SystemSpec.named("sky").writes(String.class).background().draws(Pass.MAIN, Pass.REFLECTION)),
+                system(SystemSpec.named("shadow").reads(String.class).draws(Pass.OVERLAY)),
+                system(SystemSpec.named("water").overOpaque().draws(Pass.MAIN)),
+                system(SystemSpec.named("flakes").transparent().draws(Pass.MAIN)),
+                system(SystemSpec.named("a-hud").draws(Pass.OVERLAY)));
+
+        SystemOrder order = SystemOrder.resolve(systems);
+
+        assertEquals(List.of("a-hud", "rocks", "terrain", "sky", "shadow", "water", "flakes"), names(order));
+        assertTrue(order.describe().contains("sky is the background, shaded only where nothing opaque is: behind what "
+                + "rocks draws in reflection"), order.describe());
+    }
+
+    @Test
     void aSystemOverTheOpaquePictureFollowsEveryOpaqueOneOfItsPassesAndPrecedesTheTransparentOnes() {
         // Alphabetically "trees" and "zz-rocks" would be split around "water": both are opaque and must go before it.
         List<Fake> systems = List.of(

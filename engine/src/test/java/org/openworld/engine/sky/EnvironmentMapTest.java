@@ -47,7 +47,7 @@ class EnvironmentMapTest {
 
         @Override
         public SystemSpec spec() {
-            return SystemSpec.named("probe").after("sky").draws(Pass.MAIN);
+            return SystemSpec.named("probe").overOpaque().draws(Pass.MAIN);
         }
 
         @Override
