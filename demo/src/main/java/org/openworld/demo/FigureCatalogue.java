@@ -119,8 +119,8 @@ final class FigureCatalogue {
         for (int i = 0; i < bases.length; i++) {
             list.add(shot("6" + (char) ('a' + i), 6, levels,
                     "B = " + bases[i] + " m: each colour one level L = floor(log2(D/B)) of the paper's flat grid "
-                            + "(lod.mode=flat-grid); doubling B moves every ring one level out.",
-                    "16:30", RINGS_POSE, "lod.mode=flat-grid", "terrain-debug.colouring=levels",
+                            + "(lod.mode=flat-grid, lod.rule=paper); doubling B moves every ring one level out.",
+                    "16:30", RINGS_POSE, "lod.mode=flat-grid", "lod.rule=paper", "terrain-debug.colouring=levels",
                     "lod.base-resolution=" + bases[i]));
         }
 

@@ -110,9 +110,9 @@ public final class TerrainSystem implements EngineSystem {
         HeightMap base = data.pyramid().base();
         context.world().setResource(HeightField.class, base::heightAt);
         publishSnowLine(context.world(), settings);
-        // 2. the quadtree and its boxes, handed to the culling system
+        // 2. the quadtree, its boxes (handed to the culling system) and its nodes' errors
         int cells = settings.get(LodSettings.class).patchVertices() - 1;
-        tree = new TerrainQuadtree(data.pyramid(), cells);
+        tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         selection = new PatchSelection(tree);
         patterns = new PatchPatterns(cells);
         entity = context.world().spawn();
@@ -186,12 +186,15 @@ public final class TerrainSystem implements EngineSystem {
         Settings settings = world.resource(Settings.class);
         LodSettings lod = settings.get(LodSettings.class);
         TerrainDebugSettings debug = settings.get(TerrainDebugSettings.class);
-        // 1. the cut: the paper's level rule over the quadtree (or its flat grid), visible patches only
+        // 1. the cut: the level rule over the quadtree (or its flat grid), visible patches only
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
-        // levels follow the eye of the pass's camera; in the sun's pass that is the viewer's (a light box has none),
-        // so the shadows are cast by the ground the viewer sees, only coarser where that cannot be seen
-        Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
+        // levels follow the pass's camera: its projection and pixels bound the screen error (in the sun's pass the
+        // cascade's texels); the paper's rule has only distances, and in the sun's pass takes them from the viewer's
+        // eye (a light box has none), so the shadows are cast by the ground the viewer sees, coarser where unseen
+        DetailLimit limit = lod.limit(pass, context.camera(), context.target().width(), context.target().height());
+        Vector3fc eye = pass == Pass.SHADOW && lod.rule() == LodRule.PAPER ? viewerEye(world)
+                : context.camera().position();
         if (debug.freezeLod()) {
             frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
             eye = frozenEye;
@@ -199,7 +202,7 @@ public final class TerrainSystem implements EngineSystem {
             frozenEye = null;
         }
         long t0 = System.nanoTime();
-        selection.select(eye, copyOffsets, lod.baseResolution(pass), lod.mode(), visibility, patches);
+        selection.select(eye, copyOffsets, limit, lod.mode(), visibility, patches);
         double selectMs = (System.nanoTime() - t0) / 1e6;
         Counters counters = world.resource(Counters.class);
         String prefix = "terrain." + pass.label() + ".";
@@ -207,18 +210,20 @@ public final class TerrainSystem implements EngineSystem {
         counters.add(prefix + "culled", selection.culledPatches());
         counters.add(prefix + "select-ms", selectMs);
         // 2. the maps, the materials and the view options (in the sun's pass the heights alone)
+        long triangles = context.stats().triangles();
         maps.heights.bind(UNIT_HEIGHTS);
         if (pass == Pass.SHADOW) {
             depthProgram.use();
             drawPatches(context, false);
-            return;
+        } else {
+            program.use();
+            maps.gradients.bind(UNIT_GRADIENTS);
+            maps.snow.bind(UNIT_SNOW);
+            materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
+            colouring.set(debug.colouring().ordinal());
+            drawPatches(context, debug.wireframe());
         }
-        program.use();
-        maps.gradients.bind(UNIT_GRADIENTS);
-        maps.snow.bind(UNIT_SNOW);
-        materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
-        colouring.set(debug.colouring().ordinal());
-        drawPatches(context, debug.wireframe());
+        counters.add(prefix + "triangles", context.stats().triangles() - triangles);
     }
 
     /** 3. the patches, front faces only. */

@@ -20,8 +20,9 @@
  * <ul>
  *   <li>Reflection: the viewer mirrored in the plane, {@code V' = V · M}, {@code M} the reflection in
  *       {@code y = level}, with Lengyel's oblique near plane in the water ({@link org.openworld.engine.water.MirrorCamera}),
- *       so nothing under the water is drawn or even sent (the culling uses the same frustum). The terrain is drawn a
- *       level coarser ({@code lod.reflection-coarsening}), at half resolution ({@code water.reflection}).</li>
+ *       so nothing under the water is drawn or even sent (the culling uses the same frustum). The terrain's
+ *       screen-error rule counts the reflection's own pixels, half resolution by default ({@code water.reflection}),
+ *       so it is drawn coarser by itself (under {@code lod.rule=paper}: {@code lod.reflection-coarsening} levels).</li>
  *   <li>Refraction: the scene's colour and depth, copied just before the water is drawn: what lies behind the water
  *       is already in the picture, so no second pass is needed to see it.</li>
  *   <li>Mix: {@code F · reflection + (1 − F) · (T · behind + (1 − T) · body) + glitter}, {@code F} the Fresnel
