@@ -43,6 +43,22 @@ public sealed interface DetailLimit {
         return new Projected(focal, projection.m23() != 0, pixels);
     }
 
+    /**
+     * Fine enough by either limit: the coarser of the two cuts. The sun's pass uses it to draw a caster no finer than
+     * its cascade's texels need, nor finer than the viewer's own cut, which is what receives the shadow.
+     */
+    static DetailLimit either(DetailLimit first, DetailLimit second) {
+        return new Either(first, second);
+    }
+
+    /** Fine enough when the first or the second limit says so. */
+    record Either(DetailLimit first, DetailLimit second) implements DetailLimit {
+        @Override
+        public boolean fineEnough(int level, double error, double distance) {
+            return first.fineEnough(level, error, distance) || second.fineEnough(level, error, distance);
+        }
+    }
+
     /** The paper's distance rule with base resolution B, metres. */
     record Paper(double baseResolution) implements DetailLimit {
         @Override

@@ -24,7 +24,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param shadowTexelError the screen-error rule's bound in the sun's shadow pass, in texels of each cascade's map:
  *                       e / t ≤ shadowTexelError with t the cascade's metres per texel, whatever the distance (the
  *                       light's view is orthographic), so a far cascade with big texels draws coarse casters; a
- *                       caster's error moves its shadow's edge by about that much, within the PCF filter's blur
+ *                       caster's error moves its shadow's edge by about that much. A caster is never drawn finer
+ *                       than the viewer's own cut either: finer than the ground it shadows, it shadows that ground
  * @param baseResolution the paper rule's B in L = ⌊log2(D / B)⌋: the distance at which the terrain drops its first
  *                       level of detail. A patch of level L is drawn from B·2^L to B·2^(L+1) away with vertices
  *                       2^L samples apart, so a triangle edge subtends between Δ/(2B) and Δ/B radians at every level

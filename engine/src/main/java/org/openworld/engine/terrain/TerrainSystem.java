@@ -73,6 +73,11 @@ public final class TerrainSystem implements EngineSystem {
     private long copyCentreZ = Long.MIN_VALUE;
     /** Where levels are chosen from while {@code terrain-debug.freeze-lod} is on; null while it is off. */
     private Vector3f frozenEye;
+    /**
+     * The viewer's limit from the last main pass, for the sun's pass, which runs before it and has no view of the
+     * viewer's target; null until the first main pass.
+     */
+    private DetailLimit viewerLimit;
 
     /** A terrain that reports nothing while it generates. */
     public TerrainSystem() {
@@ -189,12 +194,17 @@ public final class TerrainSystem implements EngineSystem {
         // 1. the cut: the level rule over the quadtree (or its flat grid), visible patches only
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
-        // levels follow the pass's camera: its projection and pixels bound the screen error (in the sun's pass the
-        // cascade's texels); the paper's rule has only distances, and in the sun's pass takes them from the viewer's
-        // eye (a light box has none), so the shadows are cast by the ground the viewer sees, coarser where unseen
+        // levels follow the pass's camera: its projection and pixels bound the screen error; the paper's rule has
+        // only distances, and in the sun's pass takes them from the viewer's eye (a light box has none)
         DetailLimit limit = lod.limit(pass, context.camera(), context.target().width(), context.target().height());
-        Vector3fc eye = pass == Pass.SHADOW && lod.rule() == LodRule.PAPER ? viewerEye(world)
-                : context.camera().position();
+        Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
+        if (pass == Pass.MAIN) {
+            viewerLimit = limit;
+        } else if (pass == Pass.SHADOW && lod.rule() == LodRule.SCREEN_ERROR && viewerLimit != null) {
+            // a caster need be no finer than its cascade's texels, nor than the ground the viewer sees it fall on:
+            // finer casters than receivers shadow the receivers themselves wherever those lie below them
+            limit = DetailLimit.either(limit, viewerLimit);
+        }
         if (debug.freezeLod()) {
             frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
             eye = frozenEye;
