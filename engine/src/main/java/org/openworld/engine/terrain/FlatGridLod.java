@@ -10,8 +10,9 @@ import org.openworld.engine.culling.Visibility.Containment;
  * that is L = clamp(⌊log2(D / B)⌋, 0, log2 N) from the distance D between the camera and the patch's centroid (taken
  * as the centre of its bounding box); by the screen-error rule the coarsest L ≤ log2 N whose error
  * ({@link TerrainQuadtree#leafError}) the {@link DetailLimit} accepts from the distance to the patch's box. A
- * level-L patch draws every 2^L-th vertex of its N-cell grid and samples pyramid level L; a side next to a coarser patch draws that patch's vertex stride and samples its level, a corner the
- * coarsest of the four patches touching it. Levels never differ by more than log2 N, which the patterns stitch.
+ * level-L patch draws every 2^L-th vertex of its N-cell grid and samples pyramid level L; a side next to a coarser
+ * patch draws that patch's vertex stride and samples its level, a corner the coarsest of the four patches touching
+ * it. Levels never differ by more than log2 N, which the patterns stitch.
  *
  * <p>Every patch of every copy is in the cut, so the cost grows with the world's area; it is kept to reproduce the
  * paper, {@link QuadtreeLod} is the scalable scheme. Culled subtrees are skipped; neighbour levels are computed

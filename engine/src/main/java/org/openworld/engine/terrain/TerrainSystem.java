@@ -194,8 +194,8 @@ public final class TerrainSystem implements EngineSystem {
         // 1. the cut: the level rule over the quadtree (or its flat grid), visible patches only
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
-        // levels follow the pass's camera: its projection and pixels bound the screen error; the paper's rule has
-        // only distances, and in the sun's pass takes them from the viewer's eye (a light box has none)
+        // levels follow the pass's camera: its projection and pixels bound the screen error; distances are from its
+        // eye, in the sun's pass from the viewer's (a light box has none; its texels need no distance)
         DetailLimit limit = lod.limit(pass, context.camera(), context.target().width(), context.target().height());
         Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
         if (pass == Pass.MAIN) {
@@ -220,24 +220,23 @@ public final class TerrainSystem implements EngineSystem {
         counters.add(prefix + "culled", selection.culledPatches());
         counters.add(prefix + "select-ms", selectMs);
         // 2. the maps, the materials and the view options (in the sun's pass the heights alone)
-        long triangles = context.stats().triangles();
         maps.heights.bind(UNIT_HEIGHTS);
         if (pass == Pass.SHADOW) {
             depthProgram.use();
-            drawPatches(context, false);
-        } else {
-            program.use();
-            maps.gradients.bind(UNIT_GRADIENTS);
-            maps.snow.bind(UNIT_SNOW);
-            materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
-            colouring.set(debug.colouring().ordinal());
-            drawPatches(context, debug.wireframe());
+            drawPatches(context, false, prefix);
+            return;
         }
-        counters.add(prefix + "triangles", context.stats().triangles() - triangles);
+        program.use();
+        maps.gradients.bind(UNIT_GRADIENTS);
+        maps.snow.bind(UNIT_SNOW);
+        materials.bind(materialUniforms, settings.get(MaterialSettings.class), UNIT_MATERIALS);
+        colouring.set(debug.colouring().ordinal());
+        drawPatches(context, debug.wireframe(), prefix);
     }
 
-    /** 3. the patches, front faces only. */
-    private void drawPatches(RenderContext context, boolean wireframe) {
+    /** 3. the patches, front faces only; how many triangles they were into the pass's counter. */
+    private void drawPatches(RenderContext context, boolean wireframe, String prefix) {
+        long triangles = context.stats().triangles();
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         glEnable(GL_CULL_FACE);
@@ -247,6 +246,7 @@ public final class TerrainSystem implements EngineSystem {
         renderer.draw(patches, copyOffsets, context.stats());
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         glDisable(GL_CULL_FACE);
+        context.world().resource(Counters.class).add(prefix + "triangles", context.stats().triangles() - triangles);
     }
 
     private static Vector3f viewerEye(World world) {
