@@ -14,6 +14,7 @@ import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
@@ -35,7 +36,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *
  * <p>Order: the {@link Cullable} and the {@link HeightField} are attached at init and the copy offsets are refreshed in
  * update, which always precedes every pass's render, so neither needs an order edge; the terrain declares that it
- * reads the {@link Visibility} the culling writes in each pass and the {@link Camera} it follows, and that it writes
+ * reads the {@link Visibility} the culling writes in each pass, the {@link Camera} it follows and the viewer's
+ * {@link PassView} the engine publishes each frame (the shadow casters follow it), and that it writes
  * the {@link SnowLine}: at init and again each update, as {@code materials.snow-mode} may change while it runs.
  */
 public final class TerrainSystem implements EngineSystem {
@@ -73,11 +75,6 @@ public final class TerrainSystem implements EngineSystem {
     private long copyCentreZ = Long.MIN_VALUE;
     /** Where levels are chosen from while {@code terrain-debug.freeze-lod} is on; null while it is off. */
     private Vector3f frozenEye;
-    /**
-     * The viewer's limit from the last main pass, for the sun's pass, which runs before it and has no view of the
-     * viewer's target; null until the first main pass.
-     */
-    private DetailLimit viewerLimit;
 
     /** A terrain that reports nothing while it generates. */
     public TerrainSystem() {
@@ -91,7 +88,7 @@ public final class TerrainSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class)
+        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, PassView.class, Visibility.class)
                 .writes(SnowLine.class).draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
     }
 
@@ -198,12 +195,12 @@ public final class TerrainSystem implements EngineSystem {
         // eye, in the sun's pass from the viewer's (a light box has none; its texels need no distance)
         DetailLimit limit = lod.limit(pass, context.camera(), context.target().width(), context.target().height());
         Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
-        if (pass == Pass.MAIN) {
-            viewerLimit = limit;
-        } else if (pass == Pass.SHADOW && lod.rule() == LodRule.SCREEN_ERROR && viewerLimit != null) {
+        if (pass == Pass.SHADOW && lod.rule() == LodRule.SCREEN_ERROR) {
             // a caster need be no finer than its cascade's texels, nor than the ground the viewer sees it fall on:
             // finer casters than receivers shadow the receivers themselves wherever those lie below them
-            limit = DetailLimit.either(limit, viewerLimit);
+            PassView viewer = world.resource(PassView.class);
+            limit = DetailLimit.either(limit, lod.limit(Pass.MAIN, viewer.camera(), viewer.target().width(),
+                    viewer.target().height()));
         }
         if (debug.freezeLod()) {
             frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
