@@ -119,9 +119,9 @@ final class FigureCatalogue {
         for (int i = 0; i < bases.length; i++) {
             list.add(shot("6" + (char) ('a' + i), 6, levels,
                     "B = " + bases[i] + " m: each colour one level L = floor(log2(D/B)) of the paper's flat grid "
-                            + "(lod.mode=flat-grid); doubling B moves every ring one level out.",
-                    "16:30", RINGS_POSE, "lod.mode=flat-grid", "terrain-debug.colouring=levels",
-                    "lod.base-resolution=" + bases[i]));
+                            + "(lod.mode=flat-grid, lod.rule=paper); doubling B moves every ring one level out.",
+                    "16:30", RINGS_POSE, "lod.mode=flat-grid", "lod.rule=paper", "lod.patch-vertices=65",
+                    "terrain-debug.colouring=levels", "lod.base-resolution=" + bases[i]));
         }
 
         // Figure 8: the two kinds of scattering (paper 3.1)

@@ -245,6 +245,9 @@ public final class Engine implements AutoCloseable {
         timing.beginFrame();
         stats.reset();
         PassView viewer = new PassView(world.resource(Camera.class).view((float) scene.width() / scene.height()), scene);
+        // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
+        // terrain's shadow casters are no finer than the ground the viewer sees)
+        world.setResource(viewer);
         boolean shadowDrawn = false;
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);

@@ -13,7 +13,8 @@
  * <p><b>Passes.</b> SHADOW → REFLECTION → MAIN → OVERLAY, each with its own {@link org.openworld.engine.core.ViewCamera}
  * and target ({@link org.openworld.engine.core.PassView}): MAIN and OVERLAY the viewer's camera and the scene, SHADOW
  * and REFLECTION what their {@link org.openworld.engine.core.PassOwner} (the shadow system, the water system) gives
- * each frame.
+ * each frame. The viewer's {@code PassView} is also a world resource, set before the passes, for a system that draws
+ * another pass with the viewer in mind (the terrain's shadow casters are no finer than the ground the viewer sees).
  *
  * <p><b>Shared vocabulary.</b> Types that several systems write or read, and that no one system owns, live here
  * rather than in a system's package: {@link org.openworld.engine.core.HeightField} (the ground, published by the

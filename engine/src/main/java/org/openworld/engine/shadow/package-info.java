@@ -41,8 +41,10 @@
  * </ul>
  * Every box reaches towards the sun beyond its slice as far as a caster can stand: the height span of everything the
  * culling system knows of, over the sine of the sun's elevation. Each box is a pass camera like any other, so the
- * culling system culls the casters against it, and the terrain draws them with levels chosen from the viewer's eye,
- * {@code lod.shadow-coarsening} levels coarser.
+ * culling system culls the casters against it, and the terrain picks their levels by its texel size: a caster's
+ * height error may cover at most {@code lod.shadow-texel-error} texels, or it is as coarse as the viewer's own cut,
+ * whichever is coarser (under {@code lod.rule=paper}: levels from the viewer's eye, {@code lod.shadow-coarsening}
+ * levels coarser).
  *
  * <h2>Cost and limits</h2>
  * Per frame: one depth-only pass per cascade (the terrain's vertex work again, at a coarser level), and per lit pixel

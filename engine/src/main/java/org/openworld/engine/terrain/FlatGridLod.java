@@ -6,17 +6,19 @@ import org.openworld.engine.culling.Visibility.Containment;
 
 /**
  * The paper's geomipmapping as written (2.5, figure 6): the tile is a fixed grid of equal patches (the quadtree's
- * leaves, so the culling results apply as they are), and each visible patch gets level
- * L = clamp(⌊log2(D / B)⌋, 0, log2 N) from the distance D between the camera and the patch's centroid (taken as
- * the centre of its bounding box). A level-L patch draws every 2^L-th vertex of its N-cell grid and samples pyramid
- * level L; a side next to a coarser patch draws that patch's vertex stride and samples its level, a corner the
- * coarsest of the four patches touching it. Levels never differ by more than log2 N, which the patterns stitch.
+ * leaves, so the culling results apply as they are), and each visible patch gets its own level. By the paper's rule
+ * that is L = clamp(⌊log2(D / B)⌋, 0, log2 N) from the distance D between the camera and the patch's centroid (taken
+ * as the centre of its bounding box); by the screen-error rule the coarsest L ≤ log2 N whose error
+ * ({@link TerrainQuadtree#leafError}) the {@link DetailLimit} accepts from the distance to the patch's box. A
+ * level-L patch draws every 2^L-th vertex of its N-cell grid and samples pyramid level L; a side next to a coarser
+ * patch draws that patch's vertex stride and samples its level, a corner the coarsest of the four patches touching
+ * it. Levels never differ by more than log2 N, which the patterns stitch.
  *
  * <p>Every patch of every copy is in the cut, so the cost grows with the world's area; it is kept to reproduce the
- * paper, {@link QuadtreeLod} is the scalable rule. Culled subtrees are skipped; neighbour levels are computed
- * directly from the neighbours' centroids, visible or not, so no per-patch state is kept.
+ * paper, {@link QuadtreeLod} is the scalable scheme. Culled subtrees are skipped; neighbour levels are computed
+ * directly from the neighbours' distances, visible or not, so no per-patch state is kept.
  */
-final class FlatGridLod implements LodRule {
+final class FlatGridLod implements LodScheme {
 
     private static final Side[] SIDES = Side.values();
     private static final Corner[] CORNERS = Corner.values();
@@ -26,7 +28,7 @@ final class FlatGridLod implements LodRule {
     private final CopyLattice lattice = new CopyLattice();
     private final int[] sideLevel = new int[4];
     private Vector3fc camera;
-    private double baseResolution;
+    private DetailLimit limit;
     private Visibility visibility;
 
     private int cut;
@@ -39,11 +41,10 @@ final class FlatGridLod implements LodRule {
     }
 
     @Override
-    public void select(Vector3fc camera, float[] offsets, double baseResolution, Visibility visibility,
-            PatchList out) {
+    public void select(Vector3fc camera, float[] offsets, DetailLimit limit, Visibility visibility, PatchList out) {
         lattice.update(offsets, tree.pyramid().base().extent());
         this.camera = camera;
-        this.baseResolution = baseResolution;
+        this.limit = limit;
         this.visibility = visibility;
         int leaves = tree.nodesPerSide(0) * tree.nodesPerSide(0);
         cut = lattice.copies() * leaves;
@@ -54,6 +55,7 @@ final class FlatGridLod implements LodRule {
             descend(copy, 0, visibility == null ? null : visibility.root(copy), out);
         }
         this.camera = null;
+        this.limit = null;
         this.visibility = null;
     }
 
@@ -120,10 +122,36 @@ final class FlatGridLod implements LodRule {
         if (c < 0) {
             return -1;
         }
-        int b = 6 * tree.node(0, column - dx * perSide, row - dz * perSide);
-        double x = (boxes[b] + boxes[b + 3]) * 0.5 + lattice.offsetX(c) - camera.x();
+        int leaf = tree.node(0, column - dx * perSide, row - dz * perSide);
+        if (limit instanceof DetailLimit.Paper paper) {
+            return Math.min(tree.cellsLog2(), LodRule.level(centroidDistance(c, leaf), paper.baseResolution()));
+        }
+        double distance = boxDistance(c, leaf);
+        for (int level = tree.cellsLog2(); level > 0; level--) {
+            if (limit.fineEnough(level, tree.leafError(leaf, level), distance)) {
+                return level;
+            }
+        }
+        return 0;
+    }
+
+    /** The paper's D: from the camera to the centre of the leaf's box in a copy, metres. */
+    private double centroidDistance(int copy, int leaf) {
+        int b = 6 * leaf;
+        double x = (boxes[b] + boxes[b + 3]) * 0.5 + lattice.offsetX(copy) - camera.x();
         double y = (boxes[b + 1] + boxes[b + 4]) * 0.5 - camera.y();
-        double z = (boxes[b + 2] + boxes[b + 5]) * 0.5 + lattice.offsetZ(c) - camera.z();
-        return Math.min(tree.cellsLog2(), LodRule.level(Math.sqrt(x * x + y * y + z * z), baseResolution));
+        double z = (boxes[b + 2] + boxes[b + 5]) * 0.5 + lattice.offsetZ(copy) - camera.z();
+        return Math.sqrt(x * x + y * y + z * z);
+    }
+
+    /** From the camera to the nearest point of the leaf's box in a copy, metres: the bound the error rule needs. */
+    private double boxDistance(int copy, int leaf) {
+        int b = 6 * leaf;
+        float ox = lattice.offsetX(copy);
+        float oz = lattice.offsetZ(copy);
+        double dx = Math.max(0, Math.max(boxes[b] + ox - camera.x(), camera.x() - boxes[b + 3] - ox));
+        double dy = Math.max(0, Math.max(boxes[b + 1] - camera.y(), camera.y() - boxes[b + 4]));
+        double dz = Math.max(0, Math.max(boxes[b + 2] + oz - camera.z(), camera.z() - boxes[b + 5] - oz));
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 }

@@ -1,6 +1,9 @@
 package org.openworld.engine.terrain;
 
-/** Which level-of-detail scheme picks the terrain's patches; see {@link LodRule}. */
+/**
+ * Which level-of-detail scheme picks the terrain's patches ({@link LodScheme}); how fine each patch must be is the
+ * {@link LodRule}'s.
+ */
 public enum LodMode {
     /**
      * A quadtree cut: far away, big nodes drawn with the same vertex grid at coarser sample spacing, so the patch

@@ -4,8 +4,9 @@ import org.joml.Vector3fc;
 import org.openworld.engine.culling.Visibility;
 
 /**
- * Picks the terrain patches to draw each frame with the {@link LodRule} of the chosen {@link LodMode}: the
- * {@link QuadtreeLod quadtree cut} or the paper's {@link FlatGridLod flat grid}. GL-free; the renderer reads the
+ * Picks the terrain patches to draw each frame with the {@link LodScheme} of the chosen {@link LodMode} (the
+ * {@link QuadtreeLod quadtree cut} or the paper's {@link FlatGridLod flat grid}), each as fine as the pass's
+ * {@link DetailLimit} asks. GL-free; the renderer reads the
  * result from a {@link PatchList} and draws each patch with the shared {@link PatchPatterns}.
  */
 public final class PatchSelection {
@@ -13,7 +14,7 @@ public final class PatchSelection {
     private final TerrainQuadtree tree;
     private final QuadtreeLod quadtree;
     private final FlatGridLod flatGrid;
-    private LodRule last;
+    private LodScheme last;
     private int visible;
 
     public PatchSelection(TerrainQuadtree tree) {
@@ -32,15 +33,12 @@ public final class PatchSelection {
      * @param offsets        x, z pairs, metres: copy c is drawn at (offsets[2c], offsets[2c + 1]); copies lie on a
      *                       lattice of the tile extent, e.g. the 3 × 3 around the camera, or one copy for a
      *                       non-periodic map
-     * @param baseResolution B, metres
+     * @param limit          how fine a patch must be in this pass: the paper's distance rule or a projected error
      * @param visibility     the culling result for the quadtree's {@link TerrainQuadtree#bounds()} with these
      *                       copies, read top-down; null draws everything
      */
-    public void select(Vector3fc camera, float[] offsets, double baseResolution, LodMode mode, Visibility visibility,
+    public void select(Vector3fc camera, float[] offsets, DetailLimit limit, LodMode mode, Visibility visibility,
             PatchList out) {
-        if (!(baseResolution > 0)) {
-            throw new IllegalArgumentException("base resolution must be positive, got " + baseResolution);
-        }
         if (visibility != null
                 && (visibility.copies() != offsets.length / 2 || visibility.nodeCount() != tree.nodeCount())) {
             throw new IllegalArgumentException("visibility is for " + visibility.copies() + " copies of "
@@ -50,7 +48,7 @@ public final class PatchSelection {
             case QUADTREE -> quadtree;
             case FLAT_GRID -> flatGrid;
         };
-        last.select(camera, offsets, baseResolution, visibility, out);
+        last.select(camera, offsets, limit, visibility, out);
         visible = out.size();
     }
 

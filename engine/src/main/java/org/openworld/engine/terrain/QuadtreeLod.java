@@ -7,23 +7,27 @@ import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.culling.Visibility.Containment;
 
 /**
- * The paper's rule L_B(D) = ⌊log2(D / B)⌋ ({@link LodRule#level}) applied to a {@link TerrainQuadtree}: starting at
- * the root, a node of level L is split while L > L_B(D), i.e. while D < B · 2^L; the nodes not split form the cut,
- * a partition of the tile into patches whose size grows with distance. Over a world of side S the cut holds a
- * constant number of patches per distance octave, so it grows like log S: equation 1 with R(D) ∝ 1/D².
+ * A {@link TerrainQuadtree} cut: starting at the root, a node is split while the {@link DetailLimit} finds it not
+ * fine enough; the nodes not split form the cut, a partition of the tile into patches whose size grows with
+ * distance. With the paper's rule (L_B(D) = ⌊log2(D / B)⌋, {@link LodRule#level}) a node of level L is split while
+ * D < B · 2^L, and over a world of side S the cut holds a constant number of patches per distance octave, so it grows
+ * like log S: equation 1 with R(D) ∝ 1/D². With the screen-error rule a node is split while its geometric error
+ * ({@link TerrainQuadtree#error}) covers more than the allowed pixels from D: flat ground stays coarse near the eye,
+ * a ridge stays fine far away.
  *
  * <p>D is the distance from the camera to the nearest point of the node's 3D bounding box, not to its centroid as in
- * the flat grid. A big node's centroid can be far from the camera while the camera stands on the node itself: by
- * centroid distance the root of a large world would be drawn at its coarsest level under the camera's feet. The box
+ * the paper's flat grid. A big node's centroid can be far from the camera while the camera stands on the node itself:
+ * by centroid distance the root of a large world would be drawn at its coarsest level under the camera's feet. The box
  * distance is zero for a node that contains the camera, so every node around the camera is split down to full
  * resolution, and a node's level is never coarser than the rule asks for at any of its points.
  *
- * <p>Stitching. A side can zip to a neighbour at most log2 N levels coarser ({@link PatchPatterns}). The rule keeps
- * neighbour differences small when B is large against a leaf patch, but with a tiny B a coarse node can border a much
- * finer one; the cut is then repaired by splitting the coarse node ({@link #forcedSplits()}) until no side sees a
- * difference above log2 N. Then each patch looks up its neighbour across each side and the one across each corner:
- * a side samples the coarser level of the two patches sharing it, a corner the coarsest of the up to four patches
- * touching it, so both patches of a shared vertex fetch the very same height.
+ * <p>Stitching. A side can zip to a neighbour at most log2 N levels coarser ({@link PatchPatterns}). The paper's rule
+ * keeps neighbour differences small when B is large against a leaf patch, but with a tiny B a coarse node can border
+ * a much finer one, and the screen-error rule puts a rough node next to a flat one; the cut is then repaired by
+ * splitting the coarse node ({@link #forcedSplits()}) until no side sees a difference above log2 N. Then each patch
+ * looks up its neighbour across each side and the one across each corner: a side samples the coarser level of the
+ * two patches sharing it, a corner the coarsest of the up to four patches touching it, so both patches of a shared
+ * vertex fetch the very same height.
  *
  * <p>Cost. The cut is found top-down, touching only the nodes above it. Selected nodes are marked with a per-frame
  * stamp; a neighbour lookup walks from the root towards the same-level node across the side (the node above a
@@ -31,7 +35,7 @@ import org.openworld.engine.culling.Visibility.Containment;
  * node: a coarser or equal neighbour, or none above that level, meaning the neighbours there are finer. Nothing is
  * allocated once the arrays have grown to the cut's size.
  */
-final class QuadtreeLod implements LodRule {
+final class QuadtreeLod implements LodScheme {
 
     private static final Side[] SIDES = Side.values();
     private static final Corner[] CORNERS = Corner.values();
@@ -56,7 +60,7 @@ final class QuadtreeLod implements LodRule {
 
     private final int[] sideLevel = new int[4];
     private Vector3fc camera;
-    private double baseResolution;
+    private DetailLimit limit;
     private Visibility visibility;
     /** Copy of the node the last {@link #selectedAt} found. */
     private int foundCopy;
@@ -73,8 +77,7 @@ final class QuadtreeLod implements LodRule {
     }
 
     @Override
-    public void select(Vector3fc camera, float[] offsets, double baseResolution, Visibility visibility,
-            PatchList out) {
+    public void select(Vector3fc camera, float[] offsets, DetailLimit limit, Visibility visibility, PatchList out) {
         HeightMap base = tree.pyramid().base();
         lattice.update(offsets, base.extent());
         int copies = lattice.copies();
@@ -87,7 +90,7 @@ final class QuadtreeLod implements LodRule {
             frame = 1;
         }
         this.camera = camera;
-        this.baseResolution = baseResolution;
+        this.limit = limit;
         this.visibility = visibility;
         cutLength = 0;
         liveCut = 0;
@@ -95,7 +98,7 @@ final class QuadtreeLod implements LodRule {
         visited = 0;
         forcedSplits = 0;
 
-        // 1. The cut of every copy, by the paper's rule on the box distance.
+        // 1. The cut of every copy, by the limit on the box distance.
         for (int copy = 0; copy < copies; copy++) {
             descend(copy, 0, visibility == null ? null : visibility.root(copy));
         }
@@ -120,6 +123,7 @@ final class QuadtreeLod implements LodRule {
             }
         }
         this.camera = null;
+        this.limit = null;
         this.visibility = null;
     }
 
@@ -146,7 +150,7 @@ final class QuadtreeLod implements LodRule {
     private void descend(int copy, int node, Containment containment) {
         visited++;
         int level = tree.level(node);
-        if (level > LodRule.level(boxDistance(copy, node), baseResolution)) {
+        if (level > 0 && !limit.fineEnough(level, tree.error(node), boxDistance(copy, node))) {
             int first = tree.bounds().firstChild(node);
             for (int child = first; child < first + 4; child++) {
                 descend(copy, child, containment == null ? null : visibility.of(copy, child, containment));

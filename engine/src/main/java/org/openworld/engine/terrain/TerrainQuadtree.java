@@ -16,6 +16,9 @@ import org.openworld.engine.core.BoundsTree;
  * on a side stitched to a coarser neighbour, up to level L + log2 N, so a node's height range spans pyramid levels
  * L .. L + log2 N (those that exist) over the node, widened by one sample of each level on every side; a parent's
  * box is the union of its children's and its own coarsest level's.
+ *
+ * <p>Each node also knows its {@linkplain #error geometric error}: how far, in metres, the surface of its level lies
+ * from the finest heights anywhere over its area ({@link GeometricError}), what the screen-error rule projects.
  */
 public final class TerrainQuadtree {
 
@@ -27,6 +30,9 @@ public final class TerrainQuadtree {
     private final int[] sampleX;
     private final int[] sampleZ;
     private final BoundsTree bounds;
+    /** Per level 0 .. max(root level, log2 N), per leaf (row-major): the leaf's error at that level, metres. */
+    private final float[][] leafError;
+    private final float[] error;
 
     /**
      * @param pyramid the heights; needs levels 0 .. max(root level, log2 N), the coarsest levels any patch samples
@@ -68,6 +74,21 @@ public final class TerrainQuadtree {
             }
         }
         this.bounds = new BoundsTree(boxes(firstChild), firstChild, childCount);
+        this.leafError = GeometricError.ofLeaves(pyramid, cells, needed);
+        this.error = new float[nodes];
+        int leaves = nodesPerSide(0);
+        for (int node = 0; node < nodes; node++) {
+            int span = 1 << level[node];
+            int column = sampleX[node] / cells;
+            int row = sampleZ[node] / cells;
+            float worst = 0;
+            for (int z = row; z < row + span; z++) {
+                for (int x = column; x < column + span; x++) {
+                    worst = Math.max(worst, leafError[level[node]][z * leaves + x]);
+                }
+            }
+            error[node] = worst;
+        }
     }
 
     public HeightPyramid pyramid() {
@@ -91,6 +112,23 @@ public final class TerrainQuadtree {
 
     public int nodeCount() {
         return level.length;
+    }
+
+    /**
+     * The node's geometric error: the largest |surface of its level − finest height| over its level-0 samples,
+     * borders included, metres; 0 for a leaf.
+     */
+    public float error(int node) {
+        return error[node];
+    }
+
+    /**
+     * The error of a leaf drawn at a level, as the flat grid draws it (every 2^level-th vertex), metres.
+     *
+     * @param level 0 .. max(root level, log2 N)
+     */
+    public float leafError(int leaf, int level) {
+        return leafError[level][row(leaf) * nodesPerSide(0) + column(leaf)];
     }
 
     /** Height samples per tile side (the pyramid's level 0). */

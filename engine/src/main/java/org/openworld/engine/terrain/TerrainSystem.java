@@ -14,6 +14,7 @@ import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
@@ -34,7 +35,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *
  * <p>Order: the {@link Cullable} and the {@link HeightField} are attached at init and the copy offsets are refreshed in
  * update, which always precedes every pass's render, so neither needs an order edge; the terrain declares that it
- * reads the {@link Visibility} the culling writes in each pass and the {@link Camera} it follows, and that it writes
+ * reads the {@link Visibility} the culling writes in each pass, the {@link Camera} it follows and the viewer's
+ * {@link PassView} the engine publishes each frame (the shadow casters follow it), and that it writes
  * the {@link SnowLine}: at init and again each update, as {@code materials.snow-mode} may change while it runs.
  */
 public final class TerrainSystem implements EngineSystem {
@@ -82,7 +84,7 @@ public final class TerrainSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, Visibility.class)
+        return SystemSpec.named("terrain").reads(Settings.class, Camera.class, PassView.class, Visibility.class)
                 .writes(SnowLine.class).draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
     }
 
@@ -106,9 +108,9 @@ public final class TerrainSystem implements EngineSystem {
         HeightMap base = data.pyramid().base();
         context.world().setResource(HeightField.class, base::heightAt);
         publishSnowLine(context.world(), settings);
-        // 2. the quadtree and its boxes, handed to the culling system
+        // 2. the quadtree, its boxes (handed to the culling system) and its nodes' errors
         int cells = settings.get(LodSettings.class).patchVertices() - 1;
-        tree = new TerrainQuadtree(data.pyramid(), cells);
+        tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         selection = new PatchSelection(tree);
         patterns = new PatchPatterns(cells);
         entity = context.world().spawn();
@@ -174,12 +176,20 @@ public final class TerrainSystem implements EngineSystem {
         Settings settings = world.resource(Settings.class);
         LodSettings lod = settings.get(LodSettings.class);
         TerrainDebugSettings debug = settings.get(TerrainDebugSettings.class);
-        // 1. the cut: the paper's level rule over the quadtree (or its flat grid), visible patches only
+        // 1. the cut: the level rule over the quadtree (or its flat grid), visible patches only
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
-        // levels follow the eye of the pass's camera; in the sun's pass that is the viewer's (a light box has none),
-        // so the shadows are cast by the ground the viewer sees, only coarser where that cannot be seen
+        // levels follow the pass's camera: its projection and pixels bound the screen error; distances are from its
+        // eye, in the sun's pass from the viewer's (a light box has none; its texels need no distance)
+        DetailLimit limit = lod.limit(pass, context.camera(), context.target().width(), context.target().height());
         Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
+        if (pass == Pass.SHADOW && lod.rule() == LodRule.SCREEN_ERROR) {
+            // a caster need be no finer than its cascade's texels, nor than the ground the viewer sees it fall on:
+            // finer casters than receivers shadow the receivers themselves wherever those lie below them
+            PassView viewer = world.resource(PassView.class);
+            limit = DetailLimit.either(limit, lod.limit(Pass.MAIN, viewer.camera(), viewer.target().width(),
+                    viewer.target().height()));
+        }
         if (debug.freezeLod()) {
             frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
             eye = frozenEye;
@@ -187,7 +197,7 @@ public final class TerrainSystem implements EngineSystem {
             frozenEye = null;
         }
         long t0 = System.nanoTime();
-        selection.select(eye, copyOffsets, lod.baseResolution(pass), lod.mode(), visibility, patches);
+        selection.select(eye, copyOffsets, limit, lod.mode(), visibility, patches);
         double selectMs = (System.nanoTime() - t0) / 1e6;
         Counters counters = world.resource(Counters.class);
         String prefix = "terrain." + pass.label() + ".";
@@ -199,6 +209,7 @@ public final class TerrainSystem implements EngineSystem {
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
         // materials near and far and the view options
         maps.heights.bind(UNIT_HEIGHTS);
+        long triangles = context.stats().triangles();
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         glEnable(GL_CULL_FACE);
@@ -216,6 +227,7 @@ public final class TerrainSystem implements EngineSystem {
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
         glDisable(GL_CULL_FACE);
+        context.world().resource(Counters.class).add(prefix + "triangles", context.stats().triangles() - triangles);
     }
 
     private static Vector3f viewerEye(World world) {

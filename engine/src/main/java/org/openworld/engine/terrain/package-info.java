@@ -20,13 +20,28 @@
  * the coarse level shows the smoothed ridge and the switch between levels pops less.
  *
  * <p><b>Level of detail (2.5).</b> Every patch is the same grid of N × N cells (N = 32 or 64). A quadtree node of
- * level L covers 2^L leaf patches and reads pyramid level L. The paper's rule {@code L_B(D) = ⌊log2(D/B)⌋}
- * ({@link org.openworld.engine.terrain.LodRule#level}) cuts the tree: a node is split while its level exceeds
- * {@code L_B(D)}, with D the distance from the camera to the node's box (not its centroid: a big node around the camera
- * would otherwise be drawn coarse). The drawn ring of each level then has a fixed number of patches, so the count
- * grows with the logarithm of the world's size (the paper's equation 1): measured 22, 34, 46, 58 patches for worlds
- * of 256² to 2048². The paper's own flat grid of patches, each with its own level by centroid distance, stays as
- * {@code lod.mode=flat-grid} for figure 6; its cost grows with the area.
+ * level L covers 2^L leaf patches and reads pyramid level L; the cut splits a node while it is not fine enough
+ * ({@link org.openworld.engine.terrain.QuadtreeLod}), with D the distance from the camera to the node's box (not its
+ * centroid: a big node around the camera would otherwise be drawn coarse). Two rules say when a node is fine enough
+ * ({@link org.openworld.engine.terrain.LodRule}, made per pass into a {@link org.openworld.engine.terrain.DetailLimit}):
+ * <ul>
+ *   <li>the screen error, the default: each node's geometric error e, the largest |surface of its level − finest
+ *       height| over its samples ({@link org.openworld.engine.terrain.GeometricError}, computed once from the
+ *       pyramid), may cover at most {@code lod.pixel-error} pixels: {@code e · (H/2) / (tan(fov/2) · D) ≤ p} for a
+ *       target H pixels high. Triangles go where the relief shows: flat ground stays coarse near the eye, ridges stay
+ *       fine far off. The sun's orthographic pass counts texels instead, {@code e / t ≤ lod.shadow-texel-error} for
+ *       t metres per texel, so a far cascade casts with coarse patches, and draws no caster finer than the viewer's
+ *       own cut (a caster finer than the ground it shadows shadows that ground itself). Cost: one pass over the samples per level when
+ *       the world is built (about 0.2 s for 2048², with the boxes), one comparison per visited node per frame;</li>
+ *   <li>the paper's {@code L_B(D) = ⌊log2(D/B)⌋} ({@link org.openworld.engine.terrain.LodRule#level}): a node is split
+ *       while its level exceeds {@code L_B(D)}, whatever the relief. The drawn ring of each level then has a fixed
+ *       number of patches, so the count grows with the logarithm of the world's size (the paper's equation 1):
+ *       measured 22, 34, 46, 58 patches for worlds of 256² to 2048².</li>
+ * </ul>
+ * The paper's own flat grid of patches, each with its own level (by centroid distance under its rule), stays as
+ * {@code lod.mode=flat-grid} with {@code lod.rule=paper} for figure 6; its cost grows with the area. Limits of the
+ * bound: it holds at the samples, for a patch's own level; a side stitched to a coarser neighbour reads that
+ * neighbour's level, whose own bound covers the side, and the strip between blends the two.
  *
  * <p><b>Stitching.</b> Where a patch meets a coarser neighbour, its edge strip uses only every 2^k-th vertex
  * (a fan from each outer vertex, {@link org.openworld.engine.terrain.PatchPatterns}), so no vertex lies in the middle

@@ -29,10 +29,11 @@
  * <ul>
  *   <li>Reflection: the viewer mirrored in the plane, {@code V' = V · M}, {@code M} the reflection in
  *       {@code y = level}, with Lengyel's oblique near plane in the water ({@link org.openworld.engine.water.MirrorCamera}),
- *       so nothing under the water is drawn or even sent (the culling uses the same frustum). The terrain is drawn a
- *       level coarser ({@code lod.reflection-coarsening}), at half resolution ({@code water.reflection}), and only
- *       in the bounding rectangle of the screen below the horizon (a scissor set in {@code beginPass}; the pass is
- *       skipped with no water in sight): a mirrored ray points below the horizontal, so the water reads the
+ *       so nothing under the water is drawn or even sent (the culling uses the same frustum). The terrain's
+ *       screen-error rule counts the reflection's own pixels, half resolution by default ({@code water.reflection}),
+ *       so it is drawn coarser by itself (under {@code lod.rule=paper}: {@code lod.reflection-coarsening} levels),
+ *       and only in the bounding rectangle of the screen below the horizon (a scissor set in {@code beginPass}; the
+ *       pass is skipped with no water in sight): a mirrored ray points below the horizontal, so the water reads the
  *       reflection below the horizon line only.</li>
  *   <li>Refraction: the scene's colour and depth, copied just before the water is drawn: what lies behind the water
  *       is already in the picture, so no second pass is needed to see it.</li>

@@ -1,12 +1,17 @@
 package org.openworld.engine.terrain;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.settings.SettingsGroup;
 
 class LodSettingsTest {
@@ -14,26 +19,54 @@ class LodSettingsTest {
     @Test
     void keysAndDefaults() {
         List<String> keys = LodSettings.SETTINGS.keys().stream().map(SettingsGroup.Key::key).toList();
-        assertEquals(List.of("lod.patch-vertices", "lod.base-resolution", "lod.mode", "lod.reflection-coarsening",
-                "lod.shadow-coarsening"), keys);
-        assertEquals(64, LodSettings.DEFAULTS.cells());
+        assertEquals(List.of("lod.patch-vertices", "lod.rule", "lod.pixel-error", "lod.shadow-texel-error",
+                "lod.base-resolution", "lod.mode", "lod.reflection-coarsening", "lod.shadow-coarsening"), keys);
+        assertEquals(32, LodSettings.DEFAULTS.cells());
         assertEquals(LodMode.QUADTREE, LodSettings.DEFAULTS.mode());
+        assertEquals(LodRule.SCREEN_ERROR, LodSettings.DEFAULTS.rule());
     }
 
     @Test
     void theReflectionAndShadowPassesAreCoarserByTheirLevels() {
-        LodSettings coarser = new LodSettings(65, 128, LodMode.QUADTREE, 2, 3);
+        LodSettings coarser = new LodSettings(65, LodRule.PAPER, 2, 2, 128, LodMode.QUADTREE, 2, 3);
         assertEquals(128, coarser.baseResolution(Pass.MAIN));
         assertEquals(32, coarser.baseResolution(Pass.REFLECTION));
         assertEquals(16, coarser.baseResolution(Pass.SHADOW));
-        assertEquals(128, new LodSettings(65, 128, LodMode.QUADTREE, 0, 0).baseResolution(Pass.REFLECTION));
-        assertEquals(128, new LodSettings(65, 128, LodMode.QUADTREE, 0, 0).baseResolution(Pass.SHADOW));
+        LodSettings none = new LodSettings(65, LodRule.PAPER, 2, 2, 128, LodMode.QUADTREE, 0, 0);
+        assertEquals(128, none.baseResolution(Pass.REFLECTION));
+        assertEquals(128, none.baseResolution(Pass.SHADOW));
+    }
+
+    /**
+     * The paper's rule is B in every pass; the screen-error rule is the pixel bound in the viewer's and the
+     * reflection's pass and the texel bound in the sun's: through an orthographic box 2048 m wide on a 2048² map
+     * (1 m texels), an error of exactly the texel bound is fine enough at any distance, one a little larger nowhere.
+     */
+    @Test
+    void eachPassGetsItsOwnLimit() {
+        LodSettings paper = new LodSettings(65, LodRule.PAPER, 2, 3, 128, LodMode.QUADTREE, 1, 2);
+        ViewCamera box = new ViewCamera(new Matrix4f(), new Matrix4f().ortho(-1024, 1024, -1024, 1024, 0, 500),
+                new Vector3f(), 0, 500);
+        assertEquals(DetailLimit.paper(32), paper.limit(Pass.SHADOW, box, 2048, 2048));
+        assertEquals(DetailLimit.paper(64), paper.limit(Pass.REFLECTION, box, 2048, 2048));
+        LodSettings screen = new LodSettings(65, LodRule.SCREEN_ERROR, 2, 3, 128, LodMode.QUADTREE, 1, 2);
+        DetailLimit shadow = screen.limit(Pass.SHADOW, box, 2048, 2048);
+        assertTrue(shadow.fineEnough(3, 3, 1));
+        assertTrue(shadow.fineEnough(3, 3, 1e5));
+        assertFalse(shadow.fineEnough(3, 3.01, 1e5));
+        DetailLimit main = screen.limit(Pass.MAIN, box, 2048, 2048);
+        assertTrue(main.fineEnough(3, 2, 1));
+        assertFalse(main.fineEnough(3, 2.01, 1));
     }
 
     @Test
     void onlyThePatchSizesWithPatternsAreAccepted() {
-        assertEquals(32, new LodSettings(33, 100, LodMode.FLAT_GRID, 1, 1).cells());
-        assertThrows(IllegalArgumentException.class, () -> new LodSettings(48, 100, LodMode.QUADTREE, 1, 1));
-        assertThrows(IllegalArgumentException.class, () -> new LodSettings(65, 0, LodMode.QUADTREE, 1, 1));
+        assertEquals(32, new LodSettings(33, LodRule.PAPER, 2, 2, 100, LodMode.FLAT_GRID, 1, 1).cells());
+        assertThrows(IllegalArgumentException.class,
+                () -> new LodSettings(48, LodRule.PAPER, 2, 2, 100, LodMode.QUADTREE, 1, 1));
+        assertThrows(IllegalArgumentException.class,
+                () -> new LodSettings(65, LodRule.PAPER, 2, 2, 0, LodMode.QUADTREE, 1, 1));
+        assertThrows(IllegalArgumentException.class,
+                () -> new LodSettings(65, LodRule.SCREEN_ERROR, 0, 2, 100, LodMode.QUADTREE, 1, 1));
     }
 }

@@ -12,6 +12,7 @@ import java.util.Random;
 import java.util.Set;
 import java.util.TreeSet;
 
+import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -66,6 +67,19 @@ class PatchSelectionTest {
     }
 
     /**
+     * Either rule, half the time each: the paper's with a random B, or the screen error of a 1280 × 720 view with a
+     * random field of view and a bound of a tenth of a pixel to 8 pixels.
+     */
+    private static DetailLimit limit(Random random) {
+        if (random.nextBoolean()) {
+            return DetailLimit.paper(baseResolution(random));
+        }
+        Matrix4f projection = new Matrix4f().perspective((float) Math.toRadians(random.nextDouble(30, 90)),
+                1280f / 720, 0.5f, 40_000);
+        return DetailLimit.projected(projection, 1280, 720, Math.pow(2, random.nextDouble(-3, 3)));
+    }
+
+    /**
      * The leaf cells of the copies' lattice, each holding the index of the patch covering it; fails unless the
      * patches of every copy cover its tile exactly once.
      */
@@ -109,7 +123,7 @@ class PatchSelectionTest {
         PatchList patches = new PatchList();
         Random random = new Random(11);
         for (int trial = 0; trial < 20; trial++) {
-            selection.select(world.camera(random), world.offsets, baseResolution(random), mode, null, patches);
+            selection.select(world.camera(random), world.offsets, limit(random), mode, null, patches);
             owners(world, patches);
             assertEquals(selection.cutSize(), patches.size(), "without culling the whole cut is drawn");
             assertEquals(0, selection.culledPatches());
@@ -130,7 +144,8 @@ class PatchSelectionTest {
         int forced = 0;
         for (int trial = 0; trial < 40; trial++) {
             double base = trial % 2 == 0 ? Math.pow(2, random.nextDouble(-5, 0)) : baseResolution(random);
-            selection.select(world.camera(random), world.offsets, base, LodMode.QUADTREE, null, patches);
+            selection.select(world.camera(random), world.offsets, DetailLimit.paper(base), LodMode.QUADTREE, null,
+                    patches);
             forced += selection.forcedSplits();
             int[] owner = owners(world, patches);
             int side = 3 * world.tree.nodesPerSide(0);
@@ -169,9 +184,9 @@ class PatchSelectionTest {
         Random random = new Random(seed);
         int size = world.tree.size();
         int n = world.tree.cells();
-        for (int trial = 0; trial < 5; trial++) {
-            double base = baseResolution(random);
-            selection.select(world.camera(random), world.offsets, base, mode, null, patches);
+        for (int trial = 0; trial < 8; trial++) {
+            DetailLimit rule = limit(random);
+            selection.select(world.camera(random), world.offsets, rule, mode, null, patches);
             Map<Long, Integer> levelAt = new HashMap<>();
             Map<Long, Integer> patchAt = new HashMap<>();
             // Every border vertex of every patch, keyed by its level-0 sample position on the copies' lattice.
@@ -190,7 +205,7 @@ class PatchSelectionTest {
                     if (before != null && before != level) {
                         fail("vertex " + gx + ", " + gz + " sampled at level " + before + " by patch "
                                 + patchAt.get(key(gx, gz)) + " and " + level + " by patch " + i + " (" + mode
-                                + ", B = " + base + ")");
+                                + ", " + rule + ")");
                     }
                     patchAt.putIfAbsent(key(gx, gz), i);
                 }
@@ -230,7 +245,7 @@ class PatchSelectionTest {
                         };
                         if (levelAt.containsKey(key(gx, gz))) {
                             fail("T-junction: patch " + patchAt.get(key(gx, gz)) + " has a vertex inside a "
-                                    + side + " edge of patch " + i + " (" + mode + ", B = " + base + ")");
+                                    + side + " edge of patch " + i + " (" + mode + ", " + rule + ")");
                         }
                     }
                 }
@@ -277,6 +292,63 @@ class PatchSelectionTest {
     }
 
     /**
+     * Figure 6 stays the paper's: under the paper's rule the flat grid gives every leaf, of every copy, the level
+     * min(log2 N, max(0, ⌊log2(D / B)⌋)) of its box centre's distance D, computed here with logarithms, and every side
+     * and corner the coarsest level of the leaves that meet there.
+     */
+    @Test
+    void theFlatGridUnderThePaperRuleIsFigureSix() {
+        World world = hills(256, 1, 8, true);
+        int perSide = world.tree.nodesPerSide(0);
+        float[] boxes = world.tree.bounds().boxes();
+        PatchSelection selection = new PatchSelection(world.tree);
+        PatchList patches = new PatchList();
+        Random random = new Random(6);
+        for (int trial = 0; trial < 10; trial++) {
+            Vector3f camera = world.camera(random);
+            double base = baseResolution(random);
+            selection.select(camera, world.offsets, DetailLimit.paper(base), LodMode.FLAT_GRID, null, patches);
+            assertEquals(world.copies() * perSide * perSide, patches.size(), "every leaf of every copy");
+            // levels on the copies' lattice of leaves, −1 outside it
+            int side = 3 * perSide;
+            int[] level = new int[side * side];
+            for (int c = 0; c < world.copies(); c++) {
+                for (int row = 0; row < perSide; row++) {
+                    for (int column = 0; column < perSide; column++) {
+                        int b = 6 * world.tree.node(0, column, row);
+                        double dx = (boxes[b] + boxes[b + 3]) / 2 + world.offsets[2 * c] - camera.x;
+                        double dy = (boxes[b + 1] + boxes[b + 4]) / 2 - camera.y;
+                        double dz = (boxes[b + 2] + boxes[b + 5]) / 2 + world.offsets[2 * c + 1] - camera.z;
+                        double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+                        int l = d < 2 * base ? 0 : (int) Math.floor(Math.log(d / base) / Math.log(2));
+                        level[(world.cellZ(c) * perSide + row) * side + world.cellX(c) * perSide + column] =
+                                Math.min(world.tree.cellsLog2(), l);
+                    }
+                }
+            }
+            for (int i = 0; i < patches.size(); i++) {
+                int x = world.cellX(patches.copy(i)) * perSide + patches.originSampleX(i) / world.tree.cells();
+                int z = world.cellZ(patches.copy(i)) * perSide + patches.originSampleZ(i) / world.tree.cells();
+                int own = level[z * side + x];
+                assertEquals(own, patches.level(i), "leaf level, B = " + base);
+                assertEquals(own, patches.strideLog2(i), "every 2^L-th vertex");
+                for (Side s : Side.values()) {
+                    assertEquals(Math.max(own, at(level, side, x + s.dx(), z + s.dz())), patches.sideLevel(i, s));
+                }
+                for (Corner k : Corner.values()) {
+                    int coarsest = Math.max(Math.max(own, at(level, side, x + k.dx(), z + k.dz())),
+                            Math.max(at(level, side, x + k.dx(), z), at(level, side, x, z + k.dz())));
+                    assertEquals(coarsest, patches.cornerLevel(i, k), k + " corner");
+                }
+            }
+        }
+    }
+
+    private static int at(int[] level, int side, int x, int z) {
+        return x < 0 || z < 0 || x >= side || z >= side ? -1 : level[z * side + x];
+    }
+
+    /**
      * Paper equation 1: with the quadtree, R(D) ∝ 1/D², so each doubling of the world's side adds the same number
      * of patches (one more ring of distance octaves): the count grows with the logarithm of the world size. The
      * flat grid's count grows with the area, four times per doubling.
@@ -293,9 +365,9 @@ class PatchSelectionTest {
             TerrainQuadtree tree = new TerrainQuadtree(TestPyramids.flat(sizes[k], 1), 32);
             PatchSelection selection = new PatchSelection(tree);
             PatchList patches = new PatchList();
-            selection.select(camera, oneCopy, base, LodMode.QUADTREE, null, patches);
+            selection.select(camera, oneCopy, DetailLimit.paper(base), LodMode.QUADTREE, null, patches);
             quadtree[k] = patches.size();
-            selection.select(camera, oneCopy, base, LodMode.FLAT_GRID, null, patches);
+            selection.select(camera, oneCopy, DetailLimit.paper(base), LodMode.FLAT_GRID, null, patches);
             flat[k] = patches.size();
         }
         String counts = java.util.Arrays.toString(quadtree);
@@ -326,7 +398,7 @@ class PatchSelectionTest {
         int outside = 0;
         for (int trial = 0; trial < 10; trial++) {
             Vector3f camera = world.camera(random);
-            double base = baseResolution(random);
+            DetailLimit rule = limit(random);
             Visibility visibility = new Visibility(world.copies(), nodes);
             Containment[] resolved = new Containment[world.copies() * nodes];
             for (int c = 0; c < world.copies(); c++) {
@@ -345,9 +417,9 @@ class PatchSelectionTest {
                     }
                 }
             }
-            selection.select(camera, world.offsets, base, mode, null, all);
+            selection.select(camera, world.offsets, rule, mode, null, all);
             int cut = selection.cutSize();
-            selection.select(camera, world.offsets, base, mode, visibility, drawn);
+            selection.select(camera, world.offsets, rule, mode, visibility, drawn);
             assertEquals(cut, selection.cutSize(), "culling does not change the cut");
             assertEquals(drawn.size(), selection.visiblePatches());
             assertEquals(cut, drawn.size() + selection.culledPatches());
@@ -397,18 +469,22 @@ class PatchSelectionTest {
             }
         }
         Vector3f camera = new Vector3f(100, 40, -200);
+        DetailLimit paper = DetailLimit.paper(8);
+        DetailLimit screen = DetailLimit.projected(new Matrix4f().perspective(1, 16f / 9, 0.5f, 40_000), 1280, 720, 1);
         com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         for (LodMode mode : LodMode.values()) {
-            for (int warm = 0; warm < 3; warm++) {
-                selection.select(camera, world.offsets, 8, mode, visibility, patches);
+            for (DetailLimit limit : new DetailLimit[] {paper, screen}) {
+                for (int warm = 0; warm < 3; warm++) {
+                    selection.select(camera, world.offsets, limit, mode, visibility, patches);
+                }
+                long before = threads.getCurrentThreadAllocatedBytes();
+                for (int frame = 0; frame < 10; frame++) {
+                    camera.x += 3;
+                    selection.select(camera, world.offsets, limit, mode, visibility, patches);
+                }
+                long allocated = threads.getCurrentThreadAllocatedBytes() - before;
+                assertEquals(0, allocated, mode + " " + limit + " allocated " + allocated + " bytes in 10 frames");
             }
-            long before = threads.getCurrentThreadAllocatedBytes();
-            for (int frame = 0; frame < 10; frame++) {
-                camera.x += 3;
-                selection.select(camera, world.offsets, 8, mode, visibility, patches);
-            }
-            long allocated = threads.getCurrentThreadAllocatedBytes() - before;
-            assertEquals(0, allocated, mode + " selection allocated " + allocated + " bytes in 10 frames");
         }
     }
 }

@@ -36,15 +36,18 @@ class TerrainRenderTest {
     static final HeadlessGl GL = new HeadlessGl();
 
     /**
-     * Levels are chosen from a point on the ground in the middle of the tile, then frozen; the camera climbs and looks
-     * down at the cut from outside. Coloured by level with no sky behind, any gap between patches (in x/z from a
-     * T-junction, or vertical from two levels disagreeing on a shared vertex's height) shows the black clear colour.
+     * Under either rule, levels are chosen from a point on the ground in the middle of the tile, then frozen; the
+     * camera climbs and looks down at the cut from outside. Coloured by level with no sky behind, any gap between
+     * patches (in x/z from a T-junction, or vertical from two levels disagreeing on a shared vertex's height) shows
+     * the black clear colour.
      */
     @Test
     void everyLevelPresentAndNoCrackLetsTheBackgroundThrough() throws IOException {
-        for (String mode : List.of("quadtree", "flat-grid")) {
+        for (String mode : List.of("quadtree", "flat-grid", "quadtree/screen-error", "flat-grid/screen-error")) {
+            String rule = mode.endsWith("screen-error") ? "screen-error" : "paper";
             try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                    List.of("terrain.size=256", "lod.patch-vertices=33", "lod.base-resolution=16", "lod.mode=" + mode,
+                    List.of("terrain.size=256", "terrain.relief=100", "lod.patch-vertices=33", "lod.base-resolution=16",
+                            "lod.pixel-error=4", "lod.mode=" + mode.replace("/screen-error", ""), "lod.rule=" + rule,
                             "terrain-debug.colouring=levels", "terrain-debug.freeze-lod=on"),
                     new TerrainSystem(), new CullingSystem())) {
                 TerrainSystem terrain = terrain(engine);
@@ -55,7 +58,7 @@ class TerrainRenderTest {
                 // from outside: high above the south edge, looking north and steeply down over the tile
                 camera.setPose(new CameraPose(0, map.max() + 300, map.extent() * 0.6, 0, -60, 50));
                 Image image = frame(engine);
-                image.writePng(Path.of("target/test-images/terrain-cut-" + mode + ".png"));
+                image.writePng(Path.of("target/test-images/terrain-cut-" + mode.replace('/', '-') + ".png"));
 
                 int background = 0;
                 Set<Integer> colours = new HashSet<>();

@@ -1,0 +1,84 @@
+package org.openworld.engine.terrain;
+
+import org.joml.Matrix4fc;
+
+/**
+ * How fine the terrain must be in one pass: whether a patch drawn at a level is fine enough, or must be split into
+ * finer ones. Made per pass from the {@link LodRule} ({@link LodSettings#limit}). GL-free.
+ */
+public sealed interface DetailLimit {
+
+    /**
+     * @param level    the patch's level L: its vertices 2^L samples apart
+     * @param error    its geometric error, metres: the largest |height at level L − finest height| over its area
+     *                 ({@link TerrainQuadtree#error})
+     * @param distance from the eye to the nearest point of its box, metres
+     */
+    boolean fineEnough(int level, double error, double distance);
+
+    /** The paper's rule: level L is fine enough from distance D on when L ≤ L_B(D) ({@link LodRule#level}). */
+    static DetailLimit paper(double baseResolution) {
+        if (!(baseResolution > 0)) {
+            throw new IllegalArgumentException("base resolution must be positive, got " + baseResolution);
+        }
+        return new Paper(baseResolution);
+    }
+
+    /**
+     * A bound on the projected error for a camera's projection and the pixels of its target. Seen through a
+     * perspective projection, a height error e at distance D covers e · f / D pixels, where f = (H/2) / tan(fov/2)
+     * = (H/2) · P₁₁ is the focal length in pixels (the smaller of the two axes' for a non-square view); through an
+     * orthographic one (the sun's shadow maps) it covers e / t pixels (texels), t = 2 / (P₁₁ · H) metres per texel,
+     * whatever the distance. The projection's bottom row tells the two apart: −1 in its third column for a
+     * perspective, 0 for an orthographic one. An oblique near plane (the water's reflection) changes only the third
+     * row, so f stays the viewer's.
+     *
+     * @param pixels the most pixels an error may cover, positive
+     */
+    static DetailLimit projected(Matrix4fc projection, int width, int height, double pixels) {
+        if (!(pixels > 0)) {
+            throw new IllegalArgumentException("pixel error must be positive, got " + pixels);
+        }
+        double focal = Math.min(Math.abs(projection.m00()) * width, Math.abs(projection.m11()) * height) / 2;
+        return new Projected(focal, projection.m23() != 0, pixels);
+    }
+
+    /**
+     * Fine enough by either limit: the coarser of the two cuts. The sun's pass uses it to draw a caster no finer than
+     * its cascade's texels need, nor finer than the viewer's own cut, which is what receives the shadow.
+     */
+    static DetailLimit either(DetailLimit first, DetailLimit second) {
+        return new Either(first, second);
+    }
+
+    /** Fine enough when the first or the second limit says so. */
+    record Either(DetailLimit first, DetailLimit second) implements DetailLimit {
+        @Override
+        public boolean fineEnough(int level, double error, double distance) {
+            return first.fineEnough(level, error, distance) || second.fineEnough(level, error, distance);
+        }
+    }
+
+    /** The paper's distance rule with base resolution B, metres. */
+    record Paper(double baseResolution) implements DetailLimit {
+        @Override
+        public boolean fineEnough(int level, double error, double distance) {
+            return level <= LodRule.level(distance, baseResolution);
+        }
+    }
+
+    /**
+     * error · focal / D ≤ pixels (perspective) or error · focal ≤ pixels (orthographic), written without a division
+     * so that D = 0, a node around the eye, is never fine enough unless it has no error.
+     *
+     * @param focal       pixels per metre at unit distance (perspective) or pixels per metre (orthographic)
+     * @param perspective whether the error shrinks with distance
+     * @param pixels      the most pixels an error may cover
+     */
+    record Projected(double focal, boolean perspective, double pixels) implements DetailLimit {
+        @Override
+        public boolean fineEnough(int level, double error, double distance) {
+            return error * focal <= pixels * (perspective ? distance : 1);
+        }
+    }
+}
