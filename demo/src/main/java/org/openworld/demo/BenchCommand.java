@@ -9,10 +9,12 @@ import org.openworld.engine.EngineSettings;
 import org.openworld.engine.bench.BenchComparison;
 import org.openworld.engine.bench.BenchReport;
 import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.bench.MemoryMeter;
 import org.openworld.engine.bench.RunInfo;
 import org.openworld.engine.bench.Summary;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathParser;
+import org.openworld.engine.gl.GpuMemoryInfo;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -99,6 +101,7 @@ final class BenchCommand implements Callable<Integer> {
                     engine.width(), engine.height(), launch.gl.renderer());
             // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
             Poses.direct(engine.world(), CameraDirection.hold(cameraPath, cameraPath.startTime()));
+            MemoryMeter memory = new MemoryMeter(GpuMemoryInfo.of());
             int rendered = 0; // frames rendered: total, unless a signal stopped the run
             for (; rendered < total && !stop.requested(); rendered++) {
                 if (rendered == warmup) {
@@ -106,6 +109,9 @@ final class BenchCommand implements Callable<Integer> {
                 }
                 engine.update();
                 engine.render();
+                if (rendered >= warmup) {
+                    memory.sample();
+                }
                 engine.collectFrames(false, r -> keep(r, records));
                 if ((rendered + 1) % reportEvery == 0) {
                     System.err.printf("bench: %d/%d frames%n", rendered + 1, total);
@@ -114,7 +120,7 @@ final class BenchCommand implements Callable<Integer> {
             engine.collectFrames(true, r -> keep(r, records));
             RunInfo info = new RunInfo(launch.gl.renderer(), launch.gl.version(), launch.gl.mode().toString(),
                     engine.width(), engine.height(), engine.settings().get(EngineSettings.class).seed(),
-                    engine.settings().asText(), path.toString(), warmup);
+                    engine.settings().asText(), path.toString(), warmup, profile);
             boolean complete = rendered == total;
             if (!complete && (discardPartial || records.isEmpty())) {
                 System.err.printf("bench: stopped by a signal after %d of %d frames; nothing written, %s left as it "
@@ -125,7 +131,7 @@ final class BenchCommand implements Callable<Integer> {
                 System.err.printf("bench: stopped by a signal after %d of %d frames; writing them as a partial run%n",
                         records.size(), recorded);
             }
-            Summary summary = BenchReport.write(info, records, out, complete);
+            Summary summary = BenchReport.write(info, records, memory.result(), out, complete);
             System.out.println(summary.describe());
             System.out.println("wrote " + out.resolve(BenchReport.FRAMES_CSV) + ", " + out.resolve(BenchReport.SUMMARY_JSON)
                     + ", " + out.resolve(BenchReport.FRAMETIME_PNG));

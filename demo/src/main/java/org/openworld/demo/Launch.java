@@ -35,11 +35,14 @@ final class Launch implements AutoCloseable {
     }
 
     /**
-     * Settings of the demo's systems: the defaults, then the {@code --config} file, then {@code --seed}, then every
-     * {@code --set} (all checked before any window opens).
+     * Settings of the demo's systems: the defaults, then the {@code --preset}, then the {@code --config} file, then
+     * {@code --seed}, then every {@code --set} (all checked before any window opens).
      */
     static Settings settings(RenderOptions options) {
         Settings settings = Engine.settingsFor(DemoScene.systems());
+        if (options.preset != null) {
+            Presets.apply(options.preset, settings);
+        }
         if (options.config != null) {
             SettingsFile.read(options.config, settings);
         }

@@ -33,6 +33,11 @@ final class RenderOptions {
         }
     }
 
+    @Option(names = "--preset", paramLabel = "NAME",
+            description = "Quality preset: low, default or ultra (assets/presets/NAME.settings); --config, --seed "
+                    + "and --set given too win over it.")
+    String preset;
+
     @Option(names = "--config", paramLabel = "FILE",
             description = "Read settings from a file of key=value lines (the settings panel saves one); "
                     + "--seed and --set given too win over it.")

@@ -16,6 +16,12 @@ final class SettingsCommand implements Callable<Integer> {
         var settings = Launch.settings(render);
         System.out.printf("%-28s %-10s %-6s %-22s %s%n", "KEY", "DEFAULT", "UNIT", "VALID", "MEANING");
         System.out.print(settings.describe());
+        if (render.preset != null) {
+            System.out.println();
+            System.out.println("With the preset " + render.preset + " (" + Presets.resource(render.preset) + "):");
+            Presets.values(render.preset, settings).forEach((key, value) -> System.out.println("  " + key + " = "
+                    + value));
+        }
         if (!render.set.isEmpty()) {
             System.out.println();
             System.out.println("With your --set values:");

@@ -28,6 +28,7 @@ import org.openworld.engine.settings.SettingsFile;
  * {@link PanelEntry}, filed under its group, every change applied at once through {@link Settings#set}. Settings read
  * only when the world is built are marked {@code *}; once one differs from what the world was built with, the panel
  * offers "Rebuild world". "Save" writes every setting to a file that {@code --config} reads; "Load" reads one.
+ * "quality preset" chooses one of {@link Presets}, rebuilding the world if it changed a setting read at start.
  */
 final class SettingsPanel {
 
@@ -55,6 +56,8 @@ final class SettingsPanel {
     private final Settings settings;
     private final Host host;
     private final List<PanelEntry> entries;
+    /** Each preset's values of the preset keys (read once: the files do not change while the window runs). */
+    private final Map<String, Map<String, String>> presets;
     /** The values of the at-start keys the world was built with. */
     private Map<String, String> builtWith;
     private final ImString file = new ImString(DEFAULT_FILE, FIELD_CHARS);
@@ -72,6 +75,7 @@ final class SettingsPanel {
         this.settings = settings;
         this.host = host;
         this.entries = PanelEntry.all(settings);
+        this.presets = Presets.all(settings);
         worldBuilt();
     }
 
@@ -104,6 +108,7 @@ final class SettingsPanel {
             ImGui.pushItemWidth(-LABEL_PX);
             drawClock();
             drawFileButtons();
+            drawPresets();
             if (needsRebuild()) {
                 ImGui.separator();
                 if (ImGui.button("Rebuild world (applies the * settings)")) {
@@ -148,6 +153,33 @@ final class SettingsPanel {
         ImGui.sameLine();
         ImGui.inputText("file", file);
         tooltip(() -> "a file of key=value lines: 'openworld --config FILE' starts with it");
+    }
+
+    /** The preset the settings match now, or "custom"; choosing one applies it. */
+    private void drawPresets() {
+        String current = Presets.matching(presets, settings).orElse("custom");
+        if (ImGui.beginCombo("quality preset", current)) {
+            for (String name : presets.keySet()) {
+                if (ImGui.selectable(name, name.equals(current))) {
+                    choosePreset(name);
+                }
+            }
+            ImGui.endCombo();
+        }
+        tooltip(() -> "low, default or ultra (assets/presets/NAME.settings); 'openworld --preset NAME' starts with it");
+    }
+
+    /**
+     * Applies a preset's values ({@link Presets#apply}: its keys only, the world's own settings kept) and rebuilds the
+     * world if that changed a setting read at start.
+     */
+    void choosePreset(String name) {
+        Presets.apply(name, settings);
+        boolean rebuild = needsRebuild();
+        if (rebuild) {
+            askRebuild();
+        }
+        say("preset " + name + (rebuild ? "; the world is rebuilt with it" : ""), false);
     }
 
     /** What "Rebuild world" does: asks the window to rebuild before its next frame. */

@@ -45,6 +45,11 @@ class ErrorMessagesTest {
     }
 
     @Test
+    void anUnknownPresetNamesTheValidOnes() {
+        userMistake("unknown preset 'fast': expected one of low, default, ultra", "settings", "--preset", "fast");
+    }
+
+    @Test
     @Tag("gl")
     void atNotANumberIsRefusedWithThePathsTimes() {
         userMistake("--at NaN: expected a time in seconds, e.g. within the path's keys 0.0 .. ",

@@ -133,4 +133,21 @@ class SettingsPanelTest {
         assertEquals(1, rebuilds);
         assertFalse(panel.needsRebuild(), "the world now has the new relief");
     }
+
+    @Test
+    void choosingAPresetAppliesItAndRebuildsOnlyIfASettingReadAtStartChanged() {
+        Settings settings = demoSettings();
+        SettingsPanel panel = new SettingsPanel(settings, host);
+        panel.choosePreset("ultra");
+        assertEquals("full", settings.text("water.reflection"));
+        panel.rebuildIfAsked();
+        assertEquals(0, rebuilds, "ultra changes no setting read at start");
+
+        panel.choosePreset("low");
+        assertEquals("33", settings.text("lod.patch-vertices"));
+        assertEquals("half", settings.text("water.reflection"), "ultra's keys back to their defaults");
+        panel.rebuildIfAsked();
+        assertEquals(1, rebuilds, "low's 33-vertex patches are read at start");
+        assertFalse(panel.needsRebuild());
+    }
 }

@@ -17,8 +17,8 @@ import java.util.function.ToDoubleFunction;
  * for fps above 1 does. Backs {@code openworld bench --compare A/summary.json B/summary.json}.
  *
  * <p>A ratio only means something if both runs rendered the same thing on the same machine, so {@link #table()} warns
- * when the renderer, size, camera path, seed or settings differ ({@link #mismatches()}), and says when a run is partial
- * ({@link Summary#complete()}).
+ * when the renderer, size, camera path, seed, settings or profiling differ ({@link #mismatches()}), and says when a
+ * run is partial ({@link Summary#complete()}) or profiled ({@link Summary#profiled()}).
  */
 public final class BenchComparison {
 
@@ -65,7 +65,8 @@ public final class BenchComparison {
 
     /**
      * Every metric of either run: frame time, fps, CPU time, then per pass, per system and per counter (the union
-     * of both runs, A's order first), then triangles and draw calls.
+     * of both runs, A's order first), then triangles and draw calls, then memory (a value a run lacks: its file
+     * predates it, or the machine does not report it).
      */
     public List<Row> rows() {
         List<Row> rows = new ArrayList<>();
@@ -81,6 +82,10 @@ public final class BenchComparison {
         addNamed(rows, "counter median, ", Summary::countersMedian);
         rows.add(both("triangles median", Summary::trianglesMedian));
         rows.add(both("draw calls median", Summary::drawCallsMedian));
+        rows.add(memory("heap peak MiB", MemoryUse::heapPeakMib));
+        rows.add(memory("RSS peak MiB", MemoryUse::rssPeakMib));
+        rows.add(memory("GPU memory used peak MiB", MemoryUse::gpuUsedPeakMib));
+        rows.add(memory("GPU memory free low MiB", MemoryUse::gpuFreeLowMib));
         return rows;
     }
 
@@ -92,6 +97,7 @@ public final class BenchComparison {
         if (!Objects.equals(a.path(), b.path())) differ.add("path");
         if (a.seed() != b.seed()) differ.add("seed");
         if (!a.settings().equals(b.settings())) differ.add("settings");
+        if (!a.profiled().equals(b.profiled())) differ.add("profiled");
         return differ;
     }
 
@@ -101,6 +107,10 @@ public final class BenchComparison {
         s.append(describeRun("A", a)).append(describeRun("B", b));
         if (!a.complete() || !b.complete()) {
             s.append("note: a partial run (stopped early) covers only the start of its camera path\n");
+        }
+        if (!a.profiled().equals(b.profiled())) {
+            s.append("note: only ").append(a.profiled() ? "A" : "B").append(" is profiled: its frames are slower (the "
+                    + "GPU finished around every span) and its GPU times are wall times, not timer queries\n");
         }
         List<String> differ = mismatches();
         if (!differ.isEmpty()) {
@@ -128,6 +138,16 @@ public final class BenchComparison {
                 OptionalDouble.of(value.applyAsDouble(b)));
     }
 
+    /** A memory metric, empty on a side whose file has no memory or whose machine did not report this value. */
+    private Row memory(String metric, Function<MemoryUse, Double> value) {
+        return new Row(metric, memoryOf(a, value), memoryOf(b, value));
+    }
+
+    private static OptionalDouble memoryOf(Summary s, Function<MemoryUse, Double> value) {
+        Double v = s.memory() == null ? null : value.apply(s.memory());
+        return v == null ? OptionalDouble.empty() : OptionalDouble.of(v);
+    }
+
     private void addNamed(List<Row> rows, String prefix, Function<Summary, Map<String, Double>> map) {
         Set<String> names = new LinkedHashSet<>(map.apply(a).keySet());
         names.addAll(map.apply(b).keySet());
@@ -142,8 +162,9 @@ public final class BenchComparison {
     }
 
     private static String describeRun(String label, Summary s) {
-        return String.format(Locale.ROOT, "%s: %s, %s, %s, %d frames after %d warm-up%s%n", label, s.renderer(),
-                s.size(), s.path(), s.frames(), s.warmup(), s.complete() ? "" : ", partial");
+        return String.format(Locale.ROOT, "%s: %s, %s, %s, %d frames after %d warm-up%s%s%n", label, s.renderer(),
+                s.size(), s.path(), s.frames(), s.warmup(), s.complete() ? "" : ", partial",
+                s.profiled() ? ", profiled" : "");
     }
 
     private static String format(OptionalDouble value) {

@@ -30,12 +30,14 @@ public final class BenchReport {
      * Writes all three files as a new {@code outDir}, which replaces the old one and everything in it.
      *
      * @param frames   the recorded frames, at least one
+     * @param memory   what the run held in memory ({@link MemoryMeter})
      * @param complete whether the run recorded every frame it meant to ({@link Summary#complete()})
      * @return the summary, whose {@link Summary#describe()} the command line prints
      */
-    public static Summary write(RunInfo run, List<FrameRecord> frames, Path outDir, boolean complete)
+    public static Summary write(RunInfo run, List<FrameRecord> frames, MemoryUse memory, Path outDir,
+                                boolean complete)
             throws IOException {
-        Summary summary = Summary.of(run, frames).withComplete(complete);
+        Summary summary = Summary.of(run, frames, memory).withComplete(complete);
         AtomicFiles.replaceFolder(outDir, dir -> {
             FramesCsv.write(frames, dir.resolve(FRAMES_CSV));
             SummaryJson.write(summary, dir.resolve(SUMMARY_JSON));

@@ -14,7 +14,9 @@ import java.util.Map;
  * @param settings  every setting key with its value as text
  * @param path      the camera path file replayed
  * @param warmup    frames rendered before recording
+ * @param profiled  whether the GPU was finished around every span ({@code bench --profile})
  */
 public record RunInfo(String renderer, String glVersion, String contextMode, int width, int height, long seed,
-                      Map<String, String> settings, String path, int warmup) {
+                      Map<String, String> settings, String path, int warmup,
+                      boolean profiled) {
 }

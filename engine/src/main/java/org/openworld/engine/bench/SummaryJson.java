@@ -20,10 +20,11 @@ public final class SummaryJson {
 
     /**
      * Pretty for people; special floating-point values allowed so that a degenerate run (e.g. every frame 0 ms, mean
-     * fps infinite) still leaves a file to look at instead of failing the whole report.
+     * fps infinite) still leaves a file to look at instead of failing the whole report; nulls written, so that a
+     * value the machine does not report (GPU memory on llvmpipe) reads as {@code null} rather than as a missing field.
      */
     private static final Gson GSON = new GsonBuilder().setPrettyPrinting().serializeSpecialFloatingPointValues()
-            .create();
+            .serializeNulls().create();
 
     private SummaryJson() {
     }

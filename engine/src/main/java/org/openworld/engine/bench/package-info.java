@@ -5,6 +5,9 @@
  * with their ratio ({@link org.openworld.engine.bench.BenchComparison}). See {@code docs/benchmarks.md}.
  *
  * <p>A frame's time is its wall-clock interval with at most two frames in flight; CPU time per system and GPU time
- * per system in each pass explain it.
+ * per system in each pass explain it. A profiled run ({@code bench --profile}) finishes the GPU around each span, so
+ * its GPU times are exact wall times that add up to the frame, at the price of a serialised frame. Each run also
+ * records its memory ({@link org.openworld.engine.bench.MemoryMeter}): the heap's peak, the process's peak resident
+ * set, and GPU memory where the driver reports it.
  */
 package org.openworld.engine.bench;

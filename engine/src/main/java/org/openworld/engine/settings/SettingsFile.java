@@ -1,6 +1,7 @@
 package org.openworld.engine.settings;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -41,9 +42,9 @@ public final class SettingsFile {
      *                           or saying the file cannot be read
      */
     public static void read(Path file, Settings settings) {
-        List<String> lines;
+        String text;
         try {
-            lines = TextFile.read(file).lines().toList();
+            text = TextFile.read(file);
         } catch (NoSuchFileException e) {
             throw new SettingsException("settings file " + file + " does not exist");
         } catch (TextFile.NotTextException e) {
@@ -51,6 +52,33 @@ public final class SettingsFile {
         } catch (IOException e) {
             throw new SettingsException("cannot read settings file " + file + ": " + e.getMessage());
         }
+        apply(file.toString(), text, settings);
+    }
+
+    /**
+     * Applies every line of a settings file on the classpath (e.g. {@code assets/presets/low.settings}), as
+     * {@link #read(Path, Settings)} does.
+     *
+     * @return false if there is no such resource (nothing applied)
+     * @throws SettingsException naming the resource and line of the first bad line
+     */
+    public static boolean readResource(String name, Settings settings) {
+        try (InputStream in = SettingsFile.class.getClassLoader().getResourceAsStream(name)) {
+            if (in == null) {
+                return false;
+            }
+            apply(name, TextFile.decode(in.readAllBytes()), settings);
+            return true;
+        } catch (TextFile.NotTextException e) {
+            throw new SettingsException("settings file " + name + " is " + e.getMessage());
+        } catch (IOException e) {
+            throw new SettingsException("cannot read settings file " + name + ": " + e.getMessage());
+        }
+    }
+
+    /** Applies each {@code key=value} line of {@code text}; {@code source} names the file in an error. */
+    private static void apply(String source, String text, Settings settings) {
+        List<String> lines = text.lines().toList();
         for (int i = 0; i < lines.size(); i++) {
             String line = lines.get(i).strip();
             if (line.isEmpty() || line.startsWith("#")) {
@@ -59,7 +87,7 @@ public final class SettingsFile {
             try {
                 settings.apply(line);
             } catch (SettingsException e) {
-                throw new SettingsException(file + ":" + (i + 1) + ": " + e.getMessage());
+                throw new SettingsException(source + ":" + (i + 1) + ": " + e.getMessage());
             }
         }
     }

@@ -27,7 +27,7 @@ class BenchChartTest {
 
     @Test
     void reportWritesAPngOfTheChartSizeThatIsNotBlank() throws IOException {
-        BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), dir, true);
+        BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY, dir, true);
         Path png = dir.resolve(BenchReport.FRAMETIME_PNG);
         assertTrue(Files.isRegularFile(png));
 

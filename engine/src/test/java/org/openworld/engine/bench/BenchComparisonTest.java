@@ -21,17 +21,19 @@ class BenchComparisonTest {
 
     /** Run A: water on, grass counter at 0. */
     private static final Summary A = new Summary("test renderer", "3.3", "headless-egl", "640x360", 42L,
-            Map.of("water.method", "fft"), "valley.path", 10, 100, true,
+            Map.of("water.method", "fft"), "valley.path", 10, 100, true, false,
             new Summary.FrameTimes(10, 12, 15, 20, 10.5), 1000 / 10.5, new Summary.CpuTimes(4, 5),
             BenchFrames.ordered("terrain", 6.0, "water", 2.0), BenchFrames.ordered("terrain", 3.0),
-            BenchFrames.ordered("terrain.visible", 100.0, "grass.blades", 0.0), 1_000_000, 100);
+            BenchFrames.ordered("terrain.visible", 100.0, "grass.blades", 0.0), 1_000_000, 100,
+            new MemoryUse(400.0, 1000.0, 8192.0, 2048.0, 6144.0));
 
     /** Run B: water off, a sky pass added, faster terrain. */
     private static final Summary B = new Summary("test renderer", "3.3", "headless-egl", "640x360", 42L,
-            Map.of("water.method", "off"), "valley.path", 10, 100, true,
+            Map.of("water.method", "off"), "valley.path", 10, 100, true, false,
             new Summary.FrameTimes(8, 9, 12, 30, 8.4), 1000 / 8.4, new Summary.CpuTimes(5, 6),
             BenchFrames.ordered("terrain", 3.0, "sky", 1.0), BenchFrames.ordered("terrain", 1.5),
-            BenchFrames.ordered("terrain.visible", 80.0, "grass.blades", 5.0), 500_000, 150);
+            BenchFrames.ordered("terrain.visible", 80.0, "grass.blades", 5.0), 500_000, 150,
+            new MemoryUse(300.0, 1500.0, null, null, null));
 
     @TempDir
     Path dir;
@@ -50,6 +52,41 @@ class BenchComparisonTest {
         assertRatio(0.8, rows.get("counter median, terrain.visible"));
         assertRatio(0.5, rows.get("triangles median"));
         assertRatio(1.5, rows.get("draw calls median"));
+        assertRatio(0.75, rows.get("heap peak MiB"));
+        assertRatio(1.5, rows.get("RSS peak MiB"));
+    }
+
+    @Test
+    void gpuMemoryOneDriverDoesNotReportHasNoRatio() {
+        Map<String, BenchComparison.Row> rows = byMetric(new BenchComparison(A, B).rows());
+        assertEquals(OptionalDouble.of(2048.0), rows.get("GPU memory used peak MiB").a());
+        assertEquals(OptionalDouble.empty(), rows.get("GPU memory used peak MiB").b());
+        assertEquals(OptionalDouble.empty(), rows.get("GPU memory used peak MiB").ratio());
+    }
+
+    @Test
+    void aSummaryWithoutMemoryComparesWithDashes() {
+        Summary old = new Summary("test renderer", "3.3", "headless-egl", "640x360", 42L, Map.of("water.method", "fft"),
+                "valley.path", 10, 100, true, false, A.frameMs(), A.meanFps(), A.cpuMs(), A.passGpuMsMedian(),
+                A.systemCpuMsMedian(), A.countersMedian(), A.trianglesMedian(), A.drawCallsMedian(), null);
+        BenchComparison.Row heap = byMetric(new BenchComparison(old, A).rows()).get("heap peak MiB");
+        assertEquals(OptionalDouble.empty(), heap.a());
+        assertEquals(OptionalDouble.of(400.0), heap.b());
+        assertTrue(lineOf(new BenchComparison(old, A).table(), "heap peak MiB").matches(".*—\\s+400\\.000\\s+—"));
+    }
+
+    @Test
+    void comparingAProfiledWithAPlainRunWarns() {
+        Summary profiled = new Summary(B.renderer(), B.glVersion(), B.contextMode(), B.size(), B.seed(), A.settings(),
+                B.path(), B.warmup(), B.frames(), true, true, B.frameMs(), B.meanFps(), B.cpuMs(), B.passGpuMsMedian(),
+                B.systemCpuMsMedian(), B.countersMedian(), B.trianglesMedian(), B.drawCallsMedian(), B.memory());
+        BenchComparison comparison = new BenchComparison(A, profiled);
+        assertEquals(List.of("profiled"), comparison.mismatches());
+        String table = comparison.table();
+        assertTrue(table.contains("B: test renderer, 640x360, valley.path, 100 frames after 10 warm-up, profiled\n"),
+                table);
+        assertTrue(table.contains("note: only B is profiled"), table);
+        assertFalse(new BenchComparison(A, B).table().contains("profiled"));
     }
 
     @Test

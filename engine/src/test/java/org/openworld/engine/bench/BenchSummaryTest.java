@@ -23,7 +23,7 @@ class BenchSummaryTest {
 
     @Test
     void statisticsOfTheHandcraftedRun() {
-        Summary s = Summary.of(BenchFrames.RUN, BenchFrames.threeFrames());
+        Summary s = Summary.of(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY);
 
         // frame ms per frame: max(5, 3) = 5, max(4, 6) = 6, max(6, 8) = 8
         assertEquals(3, s.frames());
@@ -46,7 +46,7 @@ class BenchSummaryTest {
 
     @Test
     void writtenAndReadBackUnchangedInOrder() throws IOException {
-        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), dir.resolve("run"), true);
+        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY, dir.resolve("run"), true);
         Path json = dir.resolve("run").resolve(BenchReport.SUMMARY_JSON);
 
         Summary read = SummaryJson.read(json);
@@ -58,14 +58,15 @@ class BenchSummaryTest {
         for (String field : List.of("\"renderer\"", "\"glVersion\"", "\"contextMode\"", "\"size\": \"640x360\"",
                 "\"seed\": 42", "\"settings\"", "\"path\"", "\"warmup\": 10", "\"frames\": 3", "\"complete\": true", "\"frameMs\"",
                 "\"p99\"", "\"meanFps\"", "\"cpuMs\"", "\"passGpuMsMedian\"", "\"systemCpuMsMedian\"",
-                "\"countersMedian\"", "\"trianglesMedian\"", "\"drawCallsMedian\"")) {
+                "\"countersMedian\"", "\"trianglesMedian\"", "\"drawCallsMedian\"", "\"profiled\": false",
+                "\"heapPeakMib\": 412.5", "\"rssPeakMib\": 1210.0", "\"gpuUsedPeakMib\": null")) {
             assertTrue(text.contains(field), () -> field + " missing in\n" + text);
         }
     }
 
     @Test
     void aPartialRunSaysSoInTheFileAndTheDescription() throws IOException {
-        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), dir.resolve("run"), false);
+        Summary written = BenchReport.write(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY, dir.resolve("run"), false);
         Path json = dir.resolve("run").resolve(BenchReport.SUMMARY_JSON);
         assertTrue(Files.readString(json).contains("\"complete\": false"), Files.readString(json));
         Summary read = SummaryJson.read(json);
@@ -78,23 +79,56 @@ class BenchSummaryTest {
     @Test
     void aSummaryWrittenBeforeCompleteExistedReadsAsComplete() throws IOException {
         Path json = dir.resolve(BenchReport.SUMMARY_JSON);
-        SummaryJson.write(Summary.of(BenchFrames.RUN, BenchFrames.threeFrames()), json);
+        SummaryJson.write(Summary.of(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY), json);
         Files.writeString(json, Files.readString(json).replaceAll("\\s*\"complete\": true,", ""));
         assertFalse(Files.readString(json).contains("complete"));
         assertTrue(SummaryJson.read(json).complete());
     }
 
     @Test
+    void aSummaryWrittenBeforeProfilingAndMemoryExistedReadsAsPlainWithoutMemory() throws IOException {
+        Path json = dir.resolve(BenchReport.SUMMARY_JSON);
+        SummaryJson.write(Summary.of(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY), json);
+        String old = Files.readString(json).replaceAll("\\s*\"profiled\": false,", "")
+                .replaceAll(",\\s*\"memory\": \\{[^}]*\\}", "");
+        Files.writeString(json, old);
+        assertFalse(old.contains("profiled") || old.contains("memory") || old.contains("Mib"), old);
+        Summary read = SummaryJson.read(json);
+        assertFalse(read.profiled());
+        assertEquals(null, read.memory());
+        assertFalse(read.describe().contains("Memory"), read.describe());
+    }
+
+    @Test
+    void aProfiledRunWithGpuMemoryIsReadBackAndDescribed() throws IOException {
+        RunInfo profiled = new RunInfo("NVIDIA H100", "4.6", "headless-egl", 640, 360, 42L, Map.of(), "valley.path", 10,
+                true);
+        MemoryUse memory = new MemoryUse(300.0, 900.0, 81920.0, 2048.0, 79872.0);
+        Path run = dir.resolve("run");
+        Summary written = BenchReport.write(profiled, BenchFrames.threeFrames(), memory, run, true);
+        Summary read = SummaryJson.read(run.resolve(BenchReport.SUMMARY_JSON));
+        assertEquals(written, read);
+        assertTrue(read.profiled());
+        assertEquals(memory, read.memory());
+        assertTrue(read.describe().contains("Memory: heap peak 300 MiB, RSS peak 900 MiB, GPU used peak 2048 MiB of "
+                + "81920 MiB."), read.describe());
+        assertTrue(read.describe().contains("Profiled:"), read.describe());
+    }
+
+    @Test
     void describeNamesTheNumbersTheCommandLinePrints() {
-        String text = Summary.of(BenchFrames.RUN, BenchFrames.threeFrames()).describe();
+        String text = Summary.of(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY).describe();
         assertTrue(text.startsWith("test renderer at 640x360, 3 frames after 10 warm-up"), text);
         assertTrue(text.contains("median 6.00 ms, p95 7.80 ms, p99 7.96 ms"), text);
         assertTrue(text.contains("157.9 fps"), text);
         assertTrue(text.contains("slowest GPU pass: terrain 4.00 ms median"), text);
+        assertTrue(text.contains("Memory: heap peak 413 MiB, RSS peak 1210 MiB, GPU memory not reported by the driver."),
+                text);
+        assertFalse(text.contains("Profiled"), text);
     }
 
     @Test
     void noFramesIsAnError() {
-        assertThrows(IllegalArgumentException.class, () -> Summary.of(BenchFrames.RUN, List.of()));
+        assertThrows(IllegalArgumentException.class, () -> Summary.of(BenchFrames.RUN, List.of(), BenchFrames.MEMORY));
     }
 }

@@ -1,0 +1,40 @@
+package org.openworld.engine.bench;
+
+import java.util.Locale;
+
+/**
+ * What a benchmark run held in memory ({@link MemoryMeter}), as stored in {@code summary.json}'s {@code memory}.
+ * A value the machine does not report is null.
+ *
+ * @param heapPeakMib    the most Java heap in use (live objects and garbage not yet collected) at the end of a
+ *                       recorded frame, MiB
+ * @param rssPeakMib     the process's peak resident set size over its whole life, world building included
+ *                       ({@code VmHWM} of {@code /proc/self/status}), MiB; null off Linux
+ * @param gpuTotalMib    the GPU's dedicated memory ({@code GL_NVX_gpu_memory_info}), MiB; null where not reported
+ * @param gpuUsedPeakMib the most of it in use at the end of a recorded frame, total - available, MiB; null where the
+ *                       total is not reported
+ * @param gpuFreeLowMib  the least GPU memory free at the end of a recorded frame (NVX's available memory, or
+ *                       {@code GL_ATI_meminfo}'s free texture memory), MiB; null where the driver reports neither
+ *                       (Mesa's llvmpipe)
+ */
+public record MemoryUse(Double heapPeakMib, Double rssPeakMib, Double gpuTotalMib, Double gpuUsedPeakMib,
+                        Double gpuFreeLowMib) {
+
+    /** One sentence for {@link Summary#describe()}, e.g. "Memory: heap peak 412 MiB, RSS peak 1210 MiB, GPU ...". */
+    public String describe() {
+        StringBuilder s = new StringBuilder("Memory: heap peak ").append(mib(heapPeakMib))
+                .append(", RSS peak ").append(rssPeakMib == null ? "not reported by the system" : mib(rssPeakMib));
+        if (gpuUsedPeakMib != null) {
+            s.append(", GPU used peak ").append(mib(gpuUsedPeakMib)).append(" of ").append(mib(gpuTotalMib));
+        } else if (gpuFreeLowMib != null) {
+            s.append(", GPU free at least ").append(mib(gpuFreeLowMib));
+        } else {
+            s.append(", GPU memory not reported by the driver");
+        }
+        return s.append('.').toString();
+    }
+
+    private static String mib(Double value) {
+        return value == null ? "?" : String.format(Locale.ROOT, "%.0f MiB", value);
+    }
+}

@@ -1,0 +1,36 @@
+package org.openworld.engine.bench;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+
+class MemoryMeterTest {
+
+    @Test
+    void thePeakResidentSetIsReadFromVmHwmInKibibytes() {
+        String status = "Name:\tjava\nVmPeak:\t 9000000 kB\nVmHWM:\t  1048576 kB\nVmRSS:\t  524288 kB\n";
+        assertEquals(1024.0, MemoryMeter.vmHwmMib(status));
+        assertNull(MemoryMeter.vmHwmMib("Name:\tjava\nVmRSS:\t  524288 kB\n"));
+    }
+
+    @Test
+    void theHeapPeakCoversAnArrayHeldAtASampleAndNoGpuMeansNulls() {
+        MemoryMeter meter = new MemoryMeter(Optional.empty());
+        meter.sample();
+        long[] held = new long[32 * 1024 * 1024 / 8]; // 32 MiB alive at the next sample
+        meter.sample();
+        MemoryUse use = meter.result();
+        assertTrue(use.heapPeakMib() >= 32, () -> "heap peak " + use.heapPeakMib() + " MiB with 32 MiB held");
+        assertEquals(held.length, 4 * 1024 * 1024);
+        assertNull(use.gpuTotalMib());
+        assertNull(use.gpuUsedPeakMib());
+        assertNull(use.gpuFreeLowMib());
+        if (System.getProperty("os.name").equals("Linux")) {
+            // the array was written (zeroed) when made, so its pages were resident
+            assertTrue(use.rssPeakMib() >= 32, () -> "RSS peak " + use.rssPeakMib() + " MiB with 32 MiB held");
+        }
+    }
+}
