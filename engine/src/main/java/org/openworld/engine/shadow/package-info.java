@@ -55,6 +55,12 @@
  * bits, so no two far cascades share a frame), read meanwhile through its old box, which matches its depths; one whose
  * old box no longer holds every corner of its slice is redrawn at once. The flicker measure does not see the skips.
  *
+ * <h2>The lookup</h2>
+ * {@code sunVisibility} walks the cascades from the finest and filters in the first that holds the point; inside its
+ * blend band it keeps that result for the loop's next trip, which filters the next cascade and blends the two. Not an
+ * {@code if}: a CPU rasteriser runs a group of pixels together and both sides of every branch under masks, but ends a
+ * loop once every pixel of the group is done, so the second filter costs only where some pixel lies in a band.
+ *
  * <h2>Cost and limits</h2>
  * Per frame: one depth-only pass per cascade that moved (the terrain's vertex work again, at a coarser level), and
  * per lit pixel N² depth tests, 2N² in a blend band. Measured on llvmpipe in {@code docs/benchmarks.md} and
