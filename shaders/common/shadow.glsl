@@ -13,7 +13,8 @@
 //   normal offset the point moved along its normal by a fraction of a texel times sin(angle): off the surface, so
 //                the lookup lands where the surface's own depth is behind it
 // The paper's PCF filter averages N x N such tests a texel apart: a soft edge N texels wide. Near the border of a
-// cascade the next one is blended in, and at the shadow distance shadows fade out.
+// cascade the next one is blended in (its filter only where some pixel needs it, see sunVisibility), and at the
+// shadow distance shadows fade out.
 #include "common/frame.glsl"
 
 layout(std140) uniform ShadowBlock {
@@ -70,17 +71,25 @@ float sunVisibility(vec3 wsPos, vec3 wsNormal) {
         return 1.0;
     }
     float cosSun = clamp(dot(wsNormal, sunDir()), 0.0, 1.0);
+    float band = shadow.shadowParams.w;
+    // In a border band the finer cascade's result waits for the next trip, which filters the next cascade and blends
+    // the two: a second filter in the loop's next trip rather than under an if, because a CPU rasteriser (llvmpipe)
+    // runs both sides of an if for a whole group of pixels, but ends a loop once every pixel of the group is done.
+    float finer = -1.0;    // the finer cascade's result while blending, else -1
+    float weight = 0.0;    // its weight in the blend
     for (int i = 0; i < count; i++) {
         vec3 coords = shadowCoords(i, wsPos, wsNormal, cosSun);
         float inside = insideness(coords);
-        if (inside < 0.0) {
+        if (finer < 0.0 && inside < 0.0) {
             continue;
         }
         float lit = percentageCloser(i, coords);
-        float band = shadow.shadowParams.w;
-        if (inside < band && i + 1 < count) {
-            vec3 next = shadowCoords(i + 1, wsPos, wsNormal, cosSun);
-            lit = mix(percentageCloser(i + 1, next), lit, inside / band);
+        if (finer >= 0.0) {
+            lit = mix(lit, finer, weight);
+        } else if (inside < band && i + 1 < count) {
+            finer = lit;
+            weight = inside / band;
+            continue;
         }
         return far > 0.0 ? mix(lit, 1.0, smoothstep(shadow.biasParams.z, far, distance)) : lit;
     }

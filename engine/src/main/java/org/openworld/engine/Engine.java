@@ -248,7 +248,7 @@ public final class Engine implements AutoCloseable {
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
         world.setResource(viewer);
-        boolean shadowDrawn = false;
+        boolean shadowReady = false;
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
             if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
@@ -258,9 +258,9 @@ public final class Engine implements AutoCloseable {
             for (int v = 0; v < views.size(); v++) {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
-                shared.bind(world, view, viewer, clock.simTime(), frame, shadowDrawn);
+                shared.bind(world, view, viewer, clock.simTime(), frame, shadowReady);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
-                String label = pass.label() + (views.size() > 1 ? String.valueOf(v) : "") + ".";
+                String label = pass.label() + (view.number() >= 0 ? String.valueOf(view.number()) : "") + ".";
                 timing.timeEngine(label + "engine", () -> {
                     view.target().bind();
                     glDisable(GL_SCISSOR_TEST); // the whole target; a pass's owner may scissor it in beginPass
@@ -277,7 +277,7 @@ public final class Engine implements AutoCloseable {
                     }
                 }
                 // 4. the systems draw, each timed on the GPU as one span labelled pass.system, or passN.system
-                //    for the N-th of several views (shadow0.terrain, shadow1.terrain, ... one per cascade)
+                //    for the view numbered N by its owner (shadow0.terrain, shadow1.terrain, ... one per cascade)
                 for (EngineSystem system : drawing) {
                     if (!isEnabled(system.spec().name())) {
                         continue;
@@ -286,7 +286,8 @@ public final class Engine implements AutoCloseable {
                             () -> system.render(pass, context));
                 }
             }
-            shadowDrawn |= pass == Pass.SHADOW && !views.isEmpty();
+            // the maps are ready once their owner has had its turn, even with no view: it may keep the last frame's
+            shadowReady |= pass == Pass.SHADOW && hasEnabledOwner(pass);
         }
         // a neutral state for whatever draws next (the window's panel): front faces wind CCW, no stencil nor scissor
         glFrontFace(GL_CCW);
@@ -304,11 +305,12 @@ public final class Engine implements AutoCloseable {
         if (pass == Pass.MAIN || pass == Pass.OVERLAY) {
             return List.of(viewer);
         }
+        return hasEnabledOwner(pass) ? ((PassOwner) owners.get(pass)).passViews(world, viewer) : List.of();
+    }
+
+    private boolean hasEnabledOwner(Pass pass) {
         EngineSystem owner = owners.get(pass);
-        if (owner == null || !isEnabled(owner.spec().name())) {
-            return List.of();
-        }
-        return ((PassOwner) owner).passViews(world, viewer);
+        return owner != null && isEnabled(owner.spec().name());
     }
 
     /**

@@ -44,16 +44,16 @@ final class SharedBindings {
 
     /**
      * Writes the frame block for one view of a pass (its camera, and the viewer's eye as {@code viewerPos}) and binds
-     * the shared textures and blocks: the sky's, or the stand-ins; the sun's shadow once this frame's maps are drawn,
-     * else none (no system casts shadows, it is switched off or the sun is down; and a map being drawn must not be
-     * bound for reading).
+     * the shared textures and blocks: the sky's, or the stand-ins; the sun's shadow once its owner has had this
+     * frame's turn (drawn its maps, or kept the last frame's; its block says none while the sun is down), else none
+     * (no system casts shadows or it is switched off; and a map being drawn must not be bound for reading).
      */
-    void bind(World world, PassView view, PassView viewer, double simTime, long frame, boolean shadowDrawn) {
+    void bind(World world, PassView view, PassView viewer, double simTime, long frame, boolean shadowReady) {
         frameUniforms.write(frameValues(world, view, viewer, simTime, frame));
         SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
         maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
         maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
-        SunShadow shadow = shadowDrawn ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
+        SunShadow shadow = shadowReady ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
         shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
         shadow.block().bindBase(SharedBlock.SHADOW.binding());
     }

@@ -172,7 +172,7 @@ class EngineTest {
             for (int i = 0; i < views; i++) {
                 ViewCamera c = camera.apply(viewer.camera());
                 list.add(new PassView(i == 0 ? c : new ViewCamera(c.view(), c.projection(),
-                        new Vector3f(c.position()).add(0, i, 0), c.near(), c.far()), target));
+                        new Vector3f(c.position()).add(0, i, 0), c.near(), c.far()), target, views > 1 ? i : -1));
             }
             return list;
         }

@@ -8,7 +8,9 @@ import java.util.List;
  * texture). Once per frame, before the pass, the engine asks the owner for the pass's {@link PassView}s and runs the
  * pass once for each, in order: every system that draws in the pass then draws with that view's camera into its
  * target, without knowing who owns it. A pass with no enabled owner, or whose owner answers with no view (the camera
- * is under the water, so there is nothing to mirror), is skipped.
+ * is under the water, so there is nothing to mirror), is skipped. A view's target is cleared before it is drawn and
+ * left alone when no view names it, so an owner can keep what a target holds by leaving its view out (the shadow
+ * system keeps the cascades that nothing moved): the engine still binds the sun's shadow maps for the later passes.
  */
 public interface PassOwner {
 

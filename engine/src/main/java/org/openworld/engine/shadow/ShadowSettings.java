@@ -24,6 +24,11 @@ import org.openworld.engine.settings.SettingsGroup;
  *                     times the sine of the sun's angle to the normal
  * @param slopeBias    CASCADES: the depth compared is pulled towards the sun by this many texels times the tangent of
  *                     the sun's angle to the normal (and the filter's reach)
+ * @param refresh      when a map is redrawn: ALWAYS (every map every frame), MOVED (only when its box moved by a
+ *                     texel or the sun turned by more than {@code refreshAngle}) or STAGGERED (the default: MOVED, and
+ *                     cascade i at most every 2^i frames, unless its kept box no longer holds its slice of the view)
+ * @param refreshAngle degrees the sun may turn before a map drawn for the old direction is redrawn (MOVED and
+ *                     STAGGERED); until then the map and its box keep the old direction
  * @param measure      measure flicker and acne each frame into the counters {@code shadow.flicker} and
  *                     {@code shadow.acne} (costs a read-back of the picture: for quality runs, not for timings)
  */
@@ -39,6 +44,9 @@ public record ShadowSettings(
         @Setting(doc = "CASCADES: normal offset of the looked-up point", unit = "texels", min = 0, max = 10)
         double normalOffset,
         @Setting(doc = "CASCADES: slope-scaled depth bias", unit = "texels", min = 0, max = 10) double slopeBias,
+        @Setting(doc = "maps redrawn ALWAYS, when MOVED, or STAGGERED (far cascades less often)") Refresh refresh,
+        @Setting(doc = "the sun's turn before its maps are redrawn (MOVED, STAGGERED)", unit = "deg", min = 0,
+                max = 5) double refreshAngle,
         @Setting(doc = "measure flicker and acne into the counters (reads the picture back)") boolean measure) {
 
     /** How the sun's depth is mapped. */
@@ -49,15 +57,28 @@ public record ShadowSettings(
         PAPER
     }
 
+    /** When a map is redrawn; a map not redrawn keeps its depths and its box from the frame that drew it. */
+    public enum Refresh {
+        /** Every map, every frame. */
+        ALWAYS,
+        /** A map whose box moved (by whole texels, or the sun turned by more than the refresh angle). */
+        MOVED,
+        /**
+         * As MOVED, but cascade i at most every 2^i frames, at most one of the far cascades a frame, unless its kept
+         * box no longer holds its slice of the view.
+         */
+        STAGGERED
+    }
+
     public static final ShadowSettings DEFAULTS = new ShadowSettings(Method.CASCADES, 2048, 0, 3, 4, 0.75, 8000,
-            1.0, 1.0, false);
+            1.0, 1.0, Refresh.STAGGERED, 0.05, false);
 
     public static final SettingsGroup<ShadowSettings> SETTINGS =
             SettingsGroup.of("shadow", ShadowSettings.class, DEFAULTS);
 
     public ShadowSettings {
-        if (method == null) {
-            throw new IllegalArgumentException("shadow method must be given");
+        if (method == null || refresh == null) {
+            throw new IllegalArgumentException("shadow method and refresh must be given");
         }
         if (kernel % 2 == 0) {
             throw new IllegalArgumentException("the filter kernel must be odd (centred on the point), got " + kernel);

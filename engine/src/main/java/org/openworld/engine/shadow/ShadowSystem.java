@@ -7,9 +7,11 @@ import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import org.joml.Matrix4f;
+import org.joml.Vector3d;
 import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -40,8 +42,9 @@ import org.openworld.engine.shadow.ShadowSettings.Method;
  * <p>Each frame, before the pass ({@link #passViews}): the view is cut into slices ({@link CascadeSplits}), each
  * slice gets its light box ({@link LightFit#stable}, or the paper's {@link LightFit#covering}), the box reaches
  * towards the sun as far as a caster can stand (the height span of everything culling knows of, over the sine of the
- * sun's elevation), and the block is rewritten. The casters (the terrain, drawing depth only) are culled against each
- * box by the culling system, like any pass camera.
+ * sun's elevation), and the block is rewritten. Only the maps whose box moved are redrawn ({@link CascadeRefresh},
+ * {@code shadow.refresh}): the others keep their depths and the box they were drawn with. The casters (the terrain
+ * and the trees, drawing depth only) are culled against each box by the culling system, like any pass camera.
  *
  * <p>No views, and so no shadows, while the sun is below the horizon: its light is then nil anyway.
  */
@@ -67,6 +70,9 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
     private GpuBuffer block;
     private final ByteBuffer blockData = MemoryUtil.memCalloc(SunShadow.BLOCK_SIZE);
     private List<LightBox> boxes = List.of();
+    private final CascadeRefresh refresh = new CascadeRefresh();
+    /** The settings the maps were drawn under ({@link #everySetting}); null before the first frame. */
+    private List<Object> drawnUnder;
     private ShadowProbe probe;
 
     @Override
@@ -109,34 +115,60 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         world.setResource(new SunShadow(maps, block));
     }
 
+    /**
+     * Fits each map's box and returns the views of the maps to redraw ({@link CascadeRefresh}); the others keep their
+     * depths and their boxes, and the block describes the boxes the maps hold.
+     */
     @Override
     public List<PassView> passViews(World world, PassView viewer) {
-        ShadowSettings s = world.resource(Settings.class).get(ShadowSettings.class);
+        Settings settings = world.resource(Settings.class);
+        ShadowSettings s = settings.get(ShadowSettings.class);
         fitMaps(s, world);
+        List<Object> now = everySetting(settings);
+        if (!now.equals(drawnUnder)) {
+            refresh.forget(s.maps());                       // the casters, the maps or their layout may have changed
+            drawnUnder = now;
+        }
+        refresh.nextFrame();
+        ViewCamera eye = viewer.camera();
         Vector3fc toSun = world.findResource(Sun.class).orElse(Sun.NOON).direction();
         if (toSun.y() <= 0) {
+            refresh.forget(s.maps());
             boxes = List.of();
+            writeBlock(s, eye.position());                  // no cascades: everything lit
             return List.of();
         }
-        ViewCamera eye = viewer.camera();
         double reach = CasterHeights.of(world).span() / Math.max(toSun.y(), MIN_SUN_SINE);
         double[] splits = s.method() == Method.PAPER ? new double[] {eye.near(), s.distance()}
                 : CascadeSplits.distances(eye.near(), s.distance(), s.cascades(), s.splitBlend());
-        List<LightBox> fitted = new ArrayList<>();
+        List<LightBox> held = new ArrayList<>();
         List<PassView> views = new ArrayList<>();
         for (int i = 0; i + 1 < splits.length; i++) {
+            Vector3fc sun = refresh.sunFor(i, toSun, s.refreshAngle(), s.refresh());
             LightBox box = s.method() == Method.PAPER
-                    ? LightFit.covering(eye.view(), eye.projection(), splits[i], splits[i + 1], toSun, reach,
+                    ? LightFit.covering(eye.view(), eye.projection(), splits[i], splits[i + 1], sun, reach,
                             s.resolution())
-                    : LightFit.stable(eye.view(), eye.projection(), splits[i], splits[i + 1], toSun, reach,
+                    : LightFit.stable(eye.view(), eye.projection(), splits[i], splits[i + 1], sun, reach,
                             s.resolution());
-            fitted.add(box);
-            views.add(new PassView(new ViewCamera(box.view(), box.projection(), box.sunwardCentre(), 0,
-                    box.depthRange()), layers.get(i)));
+            Vector3d[] corners = LightFit.sliceCorners(eye.view(), eye.projection(), splits[i], splits[i + 1]);
+            if (refresh.redraw(i, box, sun, corners, s.refresh())) {
+                views.add(new PassView(new ViewCamera(box.view(), box.projection(), box.sunwardCentre(), 0,
+                        box.depthRange()), layers.get(i), splits.length > 2 ? i : -1));
+            }
+            held.add(refresh.box(i));
         }
-        boxes = List.copyOf(fitted);
+        boxes = List.copyOf(held);
         writeBlock(s, eye.position());
+        world.resource(Counters.class).put("shadow.redrawn", views.size());
         return views;
+    }
+
+    /** Every group's settings and every system switch: what the maps were drawn under, compared each frame. */
+    private static List<Object> everySetting(Settings settings) {
+        List<Object> all = new ArrayList<>();
+        settings.groups().forEach(group -> all.add(settings.get(group.type())));
+        settings.systemKeys().forEach(key -> all.add(settings.text(key)));
+        return all;
     }
 
     /**
@@ -168,7 +200,10 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         return offset + 16;
     }
 
-    /** This frame's light boxes, one per map (for tests and tools); empty while the sun is down. */
+    /**
+     * The light boxes the maps hold this frame, one per map (for tests and tools): this frame's fit for a map redrawn,
+     * the one it was drawn with for a map kept; empty while the sun is down.
+     */
     public List<LightBox> boxes() {
         return boxes;
     }

@@ -46,10 +46,28 @@
  * whichever is coarser (under {@code lod.rule=paper}: levels from the viewer's eye, {@code lod.shadow-coarsening}
  * levels coarser).
  *
+ * <h2>Redrawing only what moved</h2>
+ * A map holds depths seen through its box, and the stable fit moves a box by whole texels only: while the newly fitted
+ * box is the very one the map was drawn with, and the casters are unchanged (no setting changed), a redraw would write
+ * the same depths. {@link org.openworld.engine.shadow.CascadeRefresh} keeps such a map ({@code shadow.refresh}): the
+ * system gives the engine no view for it, so its layer is neither cleared nor drawn, and the block goes on describing
+ * the box it was drawn with. The sun turning turns every box a little every frame; a map keeps the old direction until
+ * the sun has turned by more than {@code shadow.refresh-angle}. Staggered (the default), a far cascade whose box moved
+ * also waits for its turn, cascade i at most every 2^i frames (the frames whose number has exactly i − 1 trailing zero
+ * bits, so no two far cascades share a frame), read meanwhile through its old box, which matches its depths; one whose
+ * old box no longer holds every corner of its slice is redrawn at once. The flicker measure does not see the skips.
+ *
+ * <h2>The lookup</h2>
+ * {@code sunVisibility} walks the cascades from the finest and filters in the first that holds the point; inside its
+ * blend band it keeps that result for the loop's next trip, which filters the next cascade and blends the two. Not an
+ * {@code if}: a CPU rasteriser runs a group of pixels together and both sides of every branch under masks, but ends a
+ * loop once every pixel of the group is done, so the second filter costs only where some pixel lies in a band.
+ *
  * <h2>Cost and limits</h2>
- * Per frame: one depth-only pass per cascade (the terrain's vertex work again, at a coarser level), and per lit pixel
- * N² depth tests, 2N² in a blend band. Measured on llvmpipe in {@code docs/benchmarks.md}. Limits: the clouds cast no
- * shadows; shadows are hard-edged at the sun's scale (no penumbra widening with distance from the caster); the sphere
+ * Per frame: one depth-only pass per cascade that moved (the terrain's vertex work again, at a coarser level), and
+ * per lit pixel N² depth tests, 2N² in a blend band. Measured on llvmpipe in {@code docs/benchmarks.md} and
+ * {@code docs/shadows.md}. Limits: a kept map lags the casters that change with the viewer (the terrain's levels, the
+ * trees' fade) by the frames it waits; the clouds cast no shadows; shadows are hard-edged at the sun's scale (no penumbra widening with distance from the caster); the sphere
  * fit wastes texels on a wide view; a sun within 8° of the zenith turns the maps' "up" to north, so the texel grid
  * turns once when the sun crosses that line; the margin, in depth units, means different metres for different boxes,
  * as it did in the paper.
