@@ -27,7 +27,7 @@ final class InfoCommand implements Callable<Integer> {
             }
             System.out.println();
         }
-        System.out.println("Frame order (update, then each pass in this order):");
+        System.out.println("Frame order (the updates in this order; each pass draws in the order listed after):");
         System.out.print(SystemOrder.resolve(DemoScene.systems()).describe());
         return 0;
     }

@@ -144,10 +144,10 @@ class SettingsPanelTest {
         assertEquals(0, rebuilds, "ultra changes no setting read at start");
 
         panel.choosePreset("low");
-        assertEquals("33", settings.text("lod.patch-vertices"));
+        assertEquals("64", settings.text("clouds.resolution"));
         assertEquals("half", settings.text("water.reflection"), "ultra's keys back to their defaults");
         panel.rebuildIfAsked();
-        assertEquals(1, rebuilds, "low's 33-vertex patches are read at start");
+        assertEquals(1, rebuilds, "low's cloud field (clouds.resolution, clouds.frames) is made at start");
         assertFalse(panel.needsRebuild());
     }
 }

@@ -96,8 +96,7 @@ public final class Engine implements AutoCloseable {
             }
         }
         for (Pass pass : Pass.values()) {
-            drawingIn.put(pass, order.systems().stream()
-                    .filter(s -> s.spec().passes().contains(pass) || s.spec().prepared().contains(pass)).toList());
+            drawingIn.put(pass, order.drawOrder(pass));
         }
         for (EngineSystem system : order.systems()) {
             if (system instanceof PassOwner owner) {

@@ -24,9 +24,10 @@ import java.util.stream.Collectors;
  *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one;</li>
  *   <li>{@code overOpaque()}: every opaque system (neither transparent nor over the opaque) that draws in one of its
  *       passes before the one drawn over them (the water, which sees through to them);</li>
- *   <li>{@code background()}: every opaque system (neither transparent, nor over the opaque, nor a background) that
- *       draws in one of its passes before the background (the sky, shaded only where they left the far plane).</li>
  * </ul>
+ * A {@code background()} (the sky) has no edge of its own: its update keeps its place in the frame order, so an opaque
+ * system may read what it writes (the sun), while in each pass it draws after every opaque system of that pass
+ * ({@link #drawOrder}), shaded only where they left the far plane.
  * Two systems that write the same type must be ordered by {@code after} (directly or through other
  * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
  * systems free to go in any order, the alphabetically first goes first, so the order is stable and printable.
@@ -77,9 +78,6 @@ public final class SystemOrder {
                 } else if (t.isOverOpaque() && !o.isOverOpaque() && !o.isTransparent()) {
                     graph.edge(o.name(), t.name(), t.name() + " is drawn over the opaque picture, which it reads: "
                             + "over what " + o.name() + " draws in " + shared.iterator().next().label());
-                } else if (t.isBackground() && !o.isBackground() && !o.isOverOpaque() && !o.isTransparent()) {
-                    graph.edge(o.name(), t.name(), t.name() + " is the background, shaded only where nothing opaque "
-                            + "is: behind what " + o.name() + " draws in " + shared.iterator().next().label());
                 }
             }
         }
@@ -119,6 +117,33 @@ public final class SystemOrder {
         return ordered;
     }
 
+    /**
+     * The systems that draw in or prepare {@code pass}, in the order they draw: the frame order, except that the
+     * backgrounds draw right after the last opaque system of the pass, so before whatever is drawn over the opaque
+     * picture or blended over it (those follow every opaque system in the frame order).
+     */
+    public List<EngineSystem> drawOrder(Pass pass) {
+        List<EngineSystem> draw = new ArrayList<>();
+        List<EngineSystem> backgrounds = new ArrayList<>();
+        int behindOpaque = 0;
+        for (EngineSystem system : ordered) {
+            SystemSpec spec = system.spec();
+            if (!spec.passes().contains(pass) && !spec.prepared().contains(pass)) {
+                continue;
+            }
+            if (spec.isBackground()) {
+                backgrounds.add(system);
+                continue;
+            }
+            draw.add(system);
+            if (spec.passes().contains(pass) && !spec.isOverOpaque() && !spec.isTransparent()) {
+                behindOpaque = draw.size();
+            }
+        }
+        draw.addAll(behindOpaque, backgrounds);
+        return draw;
+    }
+
     /** The order as text, one system a line with what it declares and why it stands where it does. */
     public String describe() {
         StringBuilder s = new StringBuilder();
@@ -139,6 +164,13 @@ public final class SystemOrder {
             s.append('\n');
             for (String reason : reasons.getOrDefault(spec.name(), List.of())) {
                 s.append("      after: ").append(reason).append('\n');
+            }
+        }
+        for (Pass pass : Pass.values()) {
+            List<EngineSystem> draw = drawOrder(pass);
+            if (!draw.isEmpty()) {
+                s.append(String.format("Drawing in %s: ", pass.label())).append(draw.stream()
+                        .map(d -> d.spec().name()).collect(Collectors.joining(", "))).append('\n');
             }
         }
         return s.toString();

@@ -111,12 +111,13 @@ public final class SystemSpec {
     }
 
     /**
-     * It draws the background of its passes, what lies behind every surface (the sky): it follows every opaque system
-     * that draws in one of its passes (neither transparent, nor over the opaque, nor another background), without
-     * naming them, and draws at the far plane with the depth test on and depth writes off, so the pixels an opaque
-     * surface already covers fail the depth test before they are shaded (early depth rejection) and each pixel is
-     * shaded once. Systems drawn over the opaque picture, and transparent ones, still follow it. Work the opaque
-     * systems need from it (tables, maps) it does before the passes, in its update.
+     * It draws the background of its passes, what lies behind every surface (the sky): in each pass it draws after
+     * every opaque system of that pass (neither transparent, nor over the opaque, nor another background), without
+     * naming them ({@link SystemOrder#drawOrder}), while its update keeps its place in the frame order, so an opaque
+     * system may read what it writes (the sun). It draws at the far plane with the depth test on and depth writes
+     * off, so the pixels an opaque surface already covers fail the depth test before they are shaded (early depth
+     * rejection) and each pixel is shaded once. Systems drawn over the opaque picture, and transparent ones, still
+     * follow it. Work the opaque systems need from it (tables, maps) it does before the passes, in its update.
      */
     public SystemSpec background() {
         background = true;

@@ -91,12 +91,13 @@ class SystemOrderTest {
     }
 
     @Test
-    void theBackgroundFollowsTheOpaqueSystemsOfItsPassesAndPrecedesWhatIsDrawnOverThem() {
-        // Alphabetically "sky" would go first of the drawers and "terrain" after it; the sky writes the sun the
-        // shadow reads, and its update still runs before that reader's.
+    void theBackgroundDrawsAfterTheOpaqueSystemsOfEachPassAndBeforeWhatIsDrawnOverThem() {
+        // Alphabetically "sky" would draw first of the drawers and "terrain" after it. The sky writes the sun that
+        // "boulders" (opaque, in MAIN) reads: its update runs first, yet it still draws behind the boulders.
         List<Fake> systems = List.of(
                 system(SystemSpec.named("terrain").draws(Pass.MAIN, Pass.REFLECTION)),
                 system(SystemSpec.named("rocks").draws(Pass.REFLECTION)),
+                system(SystemSpec.named("boulders").reads(String.class).draws(Pass.MAIN)),
                 system(SystemSpec.named("sky").writes(String.class).background().draws(Pass.MAIN, Pass.REFLECTION)),
                 system(SystemSpec.named("shadow").reads(String.class).draws(Pass.OVERLAY)),
                 system(SystemSpec.named("water").overOpaque().draws(Pass.MAIN)),
@@ -105,9 +106,17 @@ class SystemOrderTest {
 
         SystemOrder order = SystemOrder.resolve(systems);
 
-        assertEquals(List.of("a-hud", "rocks", "terrain", "sky", "shadow", "water", "flakes"), names(order));
-        assertTrue(order.describe().contains("sky is the background, shaded only where nothing opaque is: behind what "
-                + "rocks draws in reflection"), order.describe());
+        List<String> names = names(order);
+        assertTrue(names.indexOf("sky") < names.indexOf("boulders"), "the reader's update after the sky's: " + names);
+        assertEquals(List.of("boulders", "terrain", "sky", "water", "flakes"), drawing(order, Pass.MAIN));
+        assertEquals(List.of("rocks", "terrain", "sky"), drawing(order, Pass.REFLECTION));
+        assertEquals(List.of("a-hud", "shadow"), drawing(order, Pass.OVERLAY));
+        assertTrue(order.describe().contains("Drawing in main: boulders, terrain, sky, water, flakes"),
+                order.describe());
+    }
+
+    private static List<String> drawing(SystemOrder order, Pass pass) {
+        return order.drawOrder(pass).stream().map(s -> s.spec().name()).toList();
     }
 
     @Test

@@ -108,7 +108,7 @@ class SkyOcclusionTest {
         Cover cover = new Cover(covered);
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, List.of(), new SkySystem(), cover,
                 new Counter())) {
-            List<String> order = engine.order().systems().stream().map(s -> s.spec().name()).toList();
+            List<String> order = engine.order().drawOrder(Pass.MAIN).stream().map(s -> s.spec().name()).toList();
             assertEquals(List.of("wall", "sky", "counter"), order, "the sky is drawn after the opaque systems");
             engine.world().resource(Camera.class).setPose(new CameraPose(0, 300, 0, 0, 10, 60));
             engine.update();

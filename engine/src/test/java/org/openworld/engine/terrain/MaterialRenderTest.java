@@ -2,7 +2,11 @@ package org.openworld.engine.terrain;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.lwjgl.opengl.GL11C.GL_ALWAYS;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
+import static org.lwjgl.opengl.GL11C.GL_LESS;
+import static org.lwjgl.opengl.GL11C.glDepthFunc;
+import static org.lwjgl.opengl.GL11C.glDepthMask;
 import static org.lwjgl.opengl.GL11C.glDisable;
 import static org.lwjgl.opengl.GL11C.glEnable;
 
@@ -111,12 +115,17 @@ class MaterialRenderTest {
 
         @Override
         public void render(Pass pass, RenderContext context) {
-            glDisable(GL_DEPTH_TEST);
+            // an opaque surface over the whole view: it writes its depth, so the sky (the background, drawn after
+            // it on the far plane) leaves every pixel to it
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            glDepthMask(true);
             materials.bind(uniforms, context.world().resource(Settings.class).get(MaterialSettings.class), 0);
             if (centre != null) {
                 centre.set(mirrorPoint(context.camera().position(), context.world().resource(Sun.class).direction()));
             }
             triangle.draw(context.stats());
+            glDepthFunc(GL_LESS);
         }
 
         @Override
