@@ -40,8 +40,9 @@ import org.openworld.engine.files.AtomicFiles;
  * other state allowed is the one {@link AtomicFiles#replaceFolder} documents: a SIGKILL between its two renames
  * leaves the old run whole at {@link AtomicFiles#aside}, which the next run moves back.
  *
- * <p>Small on purpose: 64×36 pixels, a 256² world, water and shadows off, 60 frames, two benches killed at once
- * (each into its own folder), the forks started with C1 only. A fork spends most of its time starting the JVM and
+ * <p>Small on purpose: 64×36 pixels, a 256² world, water and shadows off, 240 frames (once the terrain and the sky got
+ * cheaper, 60 frames at this size passed so quickly that all ten random SIGTERMs of a run could miss them), two
+ * benches killed at once (each into its own folder), the forks started with C1 only. A fork spends most of its time starting the JVM and
  * making the world. Measured on the project's 2-core machine shared with other builds: 77 s at load average 5,
  * 144 s at load average 8 to 11 (174 s one fork at a time, with 100 frames); at that load a 1-frame bench took 3.5 s,
  * so the 22 forks cannot fit in a minute there.
@@ -51,7 +52,7 @@ class BenchKillTest {
 
     private static final long SEED = 18;
     private static final int KILLS = 20;
-    private static final int FRAMES = 60;
+    private static final int FRAMES = 240;
     /** Benches killed at once, each into its own folder: most of a fork's time is its start, on one core. */
     private static final int LANES = 2;
     /** The forked bench prints this once its world is made, just before its first frame. */
