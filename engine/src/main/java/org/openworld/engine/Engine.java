@@ -71,7 +71,6 @@ public final class Engine implements AutoCloseable {
     private FrameTiming timing;
     private SharedBindings shared;
     private long frame;
-    private boolean profiling;
 
     /**
      * Resolves the system order and initialises every system (on this, the GL thread).
@@ -210,7 +209,6 @@ public final class Engine implements AutoCloseable {
      */
     public void profile() {
         timing.profile();
-        profiling = true;
     }
 
     /** Advances the simulation by exactly one fixed step. */
@@ -219,7 +217,7 @@ public final class Engine implements AutoCloseable {
         for (EngineSystem system : order.systems()) {
             String name = system.spec().name();
             if (isEnabled(name)) {
-                timing.time(name, system.spec().isUpdatedOnGpu() || profiling ? "update." + name : null,
+                timing.time(name, system.spec().isUpdatedOnGpu() || timing.profiling() ? "update." + name : null,
                         () -> system.update(world, step));
             }
         }

@@ -62,6 +62,11 @@ final class FrameTiming {
         profiling = true;
     }
 
+    /** Whether every frame is profiled ({@link #profile}). */
+    boolean profiling() {
+        return profiling;
+    }
+
     /** The frame's rendering starts now. */
     void beginFrame() {
         frameStart = System.nanoTime();

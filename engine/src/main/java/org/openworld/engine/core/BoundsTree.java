@@ -1,5 +1,7 @@
 package org.openworld.engine.core;
 
+import org.joml.Vector3fc;
+
 /**
  * A tree of axis-aligned bounding boxes, each node's box containing its children's, in flat arrays so a traversal
  * touches no objects. A system that wants its objects culled (the terrain's quadtree) builds one and attaches it to
@@ -43,5 +45,17 @@ public final class BoundsTree {
     /** The six floats of all boxes (minX, minY, minZ, maxX, maxY, maxZ per node); shared, not copied. */
     public float[] boxes() {
         return boxes;
+    }
+
+    /**
+     * From {@code p} to the nearest point of {@code node}'s box moved by (offsetX, 0, offsetZ) (the box in one copy
+     * of a periodic tile), metres; 0 inside. The bound a level-of-detail rule needs, and the order of drawing.
+     */
+    public double distance(int node, float offsetX, float offsetZ, Vector3fc p) {
+        int b = 6 * node;
+        double dx = Math.max(0, Math.max(boxes[b] + offsetX - p.x(), p.x() - boxes[b + 3] - offsetX));
+        double dy = Math.max(0, Math.max(boxes[b + 1] - p.y(), p.y() - boxes[b + 4]));
+        double dz = Math.max(0, Math.max(boxes[b + 2] + offsetZ - p.z(), p.z() - boxes[b + 5] - offsetZ));
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 }

@@ -1,6 +1,7 @@
 package org.openworld.engine.terrain;
 
 import org.joml.Vector3fc;
+import org.openworld.engine.core.BoundsTree;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.culling.Visibility.Containment;
 
@@ -24,7 +25,7 @@ final class FlatGridLod implements LodScheme {
     private static final Corner[] CORNERS = Corner.values();
 
     private final TerrainQuadtree tree;
-    private final float[] boxes;
+    private final BoundsTree bounds;
     private final CopyLattice lattice = new CopyLattice();
     private final int[] sideLevel = new int[4];
     private Vector3fc camera;
@@ -37,7 +38,7 @@ final class FlatGridLod implements LodScheme {
 
     FlatGridLod(TerrainQuadtree tree) {
         this.tree = tree;
-        this.boxes = tree.bounds().boxes();
+        this.bounds = tree.bounds();
     }
 
     @Override
@@ -87,7 +88,7 @@ final class FlatGridLod implements LodScheme {
         } else if (level == 0) {
             emit(copy, node, out);
         } else {
-            int first = tree.bounds().firstChild(node);
+            int first = bounds.firstChild(node);
             for (int child = first; child < first + 4; child++) {
                 descend(copy, child, containment == null ? null : visibility.of(copy, child, containment), out);
             }
@@ -137,6 +138,7 @@ final class FlatGridLod implements LodScheme {
 
     /** The paper's D: from the camera to the centre of the leaf's box in a copy, metres. */
     private double centroidDistance(int copy, int leaf) {
+        float[] boxes = bounds.boxes();
         int b = 6 * leaf;
         double x = (boxes[b] + boxes[b + 3]) * 0.5 + lattice.offsetX(copy) - camera.x();
         double y = (boxes[b + 1] + boxes[b + 4]) * 0.5 - camera.y();
@@ -146,12 +148,6 @@ final class FlatGridLod implements LodScheme {
 
     /** From the camera to the nearest point of the leaf's box in a copy, metres: the bound the error rule needs. */
     private double boxDistance(int copy, int leaf) {
-        int b = 6 * leaf;
-        float ox = lattice.offsetX(copy);
-        float oz = lattice.offsetZ(copy);
-        double dx = Math.max(0, Math.max(boxes[b] + ox - camera.x(), camera.x() - boxes[b + 3] - ox));
-        double dy = Math.max(0, Math.max(boxes[b + 1] - camera.y(), camera.y() - boxes[b + 4]));
-        double dz = Math.max(0, Math.max(boxes[b + 2] + oz - camera.z(), camera.z() - boxes[b + 5] - oz));
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return bounds.distance(leaf, lattice.offsetX(copy), lattice.offsetZ(copy), camera);
     }
 }

@@ -34,15 +34,9 @@ final class PatchOrder {
             order = new int[size * 2];
             distance = new float[size * 2];
         }
-        float[] boxes = bounds.boxes();
         for (int i = 0; i < size; i++) {
-            int b = 6 * list.node(i);
-            float ox = offsets[2 * list.copy(i)];
-            float oz = offsets[2 * list.copy(i) + 1];
-            float dx = gap(eye.x(), boxes[b] + ox, boxes[b + 3] + ox);
-            float dy = gap(eye.y(), boxes[b + 1], boxes[b + 4]);
-            float dz = gap(eye.z(), boxes[b + 2] + oz, boxes[b + 5] + oz);
-            distance[i] = (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
+            int copy = list.copy(i);
+            distance[i] = (float) bounds.distance(list.node(i), offsets[2 * copy], offsets[2 * copy + 1], eye);
             // a non-negative float's bits order as the float does, so the index rides in the low half
             keys[i] = (long) Float.floatToIntBits(distance[i]) << 32 | i;
         }
@@ -50,11 +44,6 @@ final class PatchOrder {
         for (int k = 0; k < size; k++) {
             order[k] = (int) keys[k];
         }
-    }
-
-    /** How far {@code p} lies outside {@code [min, max]}, 0 inside. */
-    private static float gap(float p, float min, float max) {
-        return Math.max(0, Math.max(min - p, p - max));
     }
 
     /** Patches ordered by the last {@link #sort}. */

@@ -3,6 +3,7 @@ package org.openworld.engine.terrain;
 import java.util.Arrays;
 
 import org.joml.Vector3fc;
+import org.openworld.engine.core.BoundsTree;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.culling.Visibility.Containment;
 
@@ -41,7 +42,7 @@ final class QuadtreeLod implements LodScheme {
     private static final Corner[] CORNERS = Corner.values();
 
     private final TerrainQuadtree tree;
-    private final float[] boxes;
+    private final BoundsTree bounds;
     private final int nodeCount;
     private final CopyLattice lattice = new CopyLattice();
 
@@ -72,7 +73,7 @@ final class QuadtreeLod implements LodScheme {
 
     QuadtreeLod(TerrainQuadtree tree) {
         this.tree = tree;
-        this.boxes = tree.bounds().boxes();
+        this.bounds = tree.bounds();
         this.nodeCount = tree.nodeCount();
     }
 
@@ -151,7 +152,7 @@ final class QuadtreeLod implements LodScheme {
         visited++;
         int level = tree.level(node);
         if (level > 0 && !limit.fineEnough(level, tree.error(node), boxDistance(copy, node))) {
-            int first = tree.bounds().firstChild(node);
+            int first = bounds.firstChild(node);
             for (int child = first; child < first + 4; child++) {
                 descend(copy, child, containment == null ? null : visibility.of(copy, child, containment));
             }
@@ -162,13 +163,7 @@ final class QuadtreeLod implements LodScheme {
 
     /** Distance from the camera to the nearest point of the node's box in a copy, metres. */
     private double boxDistance(int copy, int node) {
-        float ox = lattice.offsetX(copy);
-        float oz = lattice.offsetZ(copy);
-        int b = 6 * node;
-        double dx = Math.max(0, Math.max(boxes[b] + ox - camera.x(), camera.x() - boxes[b + 3] - ox));
-        double dy = Math.max(0, Math.max(boxes[b + 1] - camera.y(), camera.y() - boxes[b + 4]));
-        double dz = Math.max(0, Math.max(boxes[b + 2] + oz - camera.z(), camera.z() - boxes[b + 5] - oz));
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return bounds.distance(node, lattice.offsetX(copy), lattice.offsetZ(copy), camera);
     }
 
     private void addToCut(int copy, int node, Containment containment) {
@@ -209,7 +204,7 @@ final class QuadtreeLod implements LodScheme {
         stamp[copy * nodeCount + node] = 0;
         forcedSplits++;
         Containment containment = cutContainment[i];
-        int first = tree.bounds().firstChild(node);
+        int first = bounds.firstChild(node);
         for (int child = first; child < first + 4; child++) {
             addToCut(copy, child, containment == null ? null : visibility.of(copy, child, containment));
         }
