@@ -64,6 +64,14 @@ const float MAT_LAYER_SOFTNESS = 0.15; // relief units over which a layer's cove
 const float MAT_F0 = 0.04;           // Fresnel reflectance at normal incidence of rock, leaves and ice (IOR ~1.3-1.5)
 const float MAT_MAX_POWER = 2048.0;  // Blinn-Phong exponent at gloss 1 (power = MAX_POWER^gloss): sharp sun glints
 
+// Schlick's Fresnel reflectance at a cosine: F0 + (1 - F0)(1 - cos)^5, the fifth power by multiplications (a pow
+// is a log and an exponential per pixel on a rasteriser without special-function units).
+float matFresnel(float cosine) {
+    float m = 1.0 - cosine;
+    float m2 = m * m;
+    return MAT_F0 + (1.0 - MAT_F0) * m2 * m2 * m;
+}
+
 // Hash of a lattice point to 0..1, without sin (stable across GPUs): Dave Hoskins, "Hash without Sine".
 float matHash(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
@@ -208,13 +216,13 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
         float power = pow(MAT_MAX_POWER, gloss);
         vec3 h = normalize(l + v);
         float vh = max(dot(v, h), 0.0);
-        float fresnelSun = MAT_F0 + (1.0 - MAT_F0) * pow(1.0 - vh, 5.0);
+        float fresnelSun = matFresnel(vh);
         // normalised Blinn-Phong: (p + 8) / (8 pi) keeps the highlight's energy as it sharpens
         float specular = (power + 8.0) / (8.0 * PI) * pow(max(dot(n, h), 0.0), power) * fresnelSun * gloss;
         color += frame.sunColor.rgb * specular * nl;
         vec3 r = reflect(-v, n);
         float nv = max(dot(n, v), 0.0);
-        float fresnelView = MAT_F0 + (1.0 - MAT_F0) * pow(1.0 - nv, 5.0);
+        float fresnelView = matFresnel(nv);
         color += environmentRadiance(r, (1.0 - gloss) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
     }
     return color;

@@ -8,11 +8,11 @@
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
 //   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
 #include "common/frame.glsl"
-#include "common/fog.glsl"
 #include "common/color.glsl"
 #include "terrain/material.glsl"
 
 in vec3 wsPos;
+in vec4 air;                   // the air to this point, per vertex (terrain.vert)
 flat in int lodLevel;
 out vec4 fragColor;
 
@@ -69,7 +69,7 @@ void main() {
     float lightness = dot(color, vec3(0.2126, 0.7152, 0.0722));
     color = levelColour(lodLevel) * (0.25 + 1.5 * lightness);
   #endif
-    color = applyFog(color, wsPos);
+    color = color * air.a + air.rgb;
 #endif
     fragColor = vec4(displayColor(color), 1.0);
 }

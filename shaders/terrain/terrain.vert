@@ -3,6 +3,7 @@
 // of (N+1)² vertices; the instance says where it lies, how far apart its vertices are and which pyramid level each
 // of its vertices reads. Heights come from the R32F pyramid texture, level L = pyramid level L, read exactly.
 #include "common/frame.glsl"
+#include "common/fog.glsl"
 
 layout(location = 0) in vec2 gridPos;         // column, row in 0..N
 layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample z, samples per grid step, level
@@ -17,6 +18,7 @@ uniform int cells;          // N, grid cells per patch side
 uniform int periodic;       // 1: the map wraps (generated), 0: it clamps (imported)
 
 out vec3 wsPos;
+out vec4 air;                 // the air between the eye and this vertex (common/fog.glsl), see main
 flat out int lodLevel;
 
 // The level a vertex reads: a stitched side reads its coarser neighbour's level, a corner the coarsest of the
@@ -47,5 +49,9 @@ void main() {
     vec2 xz = (vec2(sampleIndex) - 0.5 * float(mapSize)) * spacing + copyOffset;
     wsPos = vec3(xz.x, heightAt(sampleIndex, vertexLevel(g)), xz.y);
     lodLevel = patchInfo.w;
+    // Aerial perspective per vertex, interpolated: the table varies slowly across a triangle (the level rule keeps
+    // a triangle's side a small share of its distance), and per pixel it cost a fifth of the terrain's pixel time
+    // on a software rasteriser (an asin, an atan and a 3D lookup a pixel).
+    air = airTo(wsPos);
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }
