@@ -341,7 +341,7 @@ class WaterRenderTest {
      * the open sea, no pixel of the sky's last row or the water's first rows stands more than 3 levels of luma off
      * the mean of its neighbours 3 pixels to either side. A horizon texel of the sky's panorama whose direction
      * rounded a hair below the horizon took the distant ground's light: a row of brighter dots a degree or so apart,
-     * up to 7 levels, in the sky's last row and, mirrored, in the water's first.
+     * 7.6 levels on llvmpipe, in the sky's last row and, mirrored, in the water's first.
      */
     @Test
     void theSeaHorizonHasNoDots() {
