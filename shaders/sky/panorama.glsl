@@ -25,6 +25,11 @@ vec3 panoramaDirection(vec2 fragCoord, vec2 size) {
     vec2 unit = (vec2(fragCoord.x - lower * size.y, fragCoord.y) - 0.5) / (size.y - 1.0);
     vec2 st = unit * 2.0 - 1.0;
     vec2 xz = vec2(st.x + st.y, st.x - st.y) * 0.5;
-    float y = 1.0 - abs(xz.x) - abs(xz.y);
+    // 1 - |x| - |z| equals 1 - max(|s|, |t|), and only the latter is exact on the border, where |s| or |t| is 1: the
+    // former leaves the rounding of x and z, a hair above or below 0, and a texel of the upper square a hair below
+    // takes the distant ground's light (panorama.frag): every few texels along two of its edges, a row of brighter
+    // dots on the horizon that the water mirrors. Exact, the border of either square holds the horizon's sky alone
+    // (-0 is not below it); max() keeps it so on a driver whose division overshoots 1 there.
+    float y = max(1.0 - max(abs(st.x), abs(st.y)), 0.0);
     return normalize(vec3(xz.x, lower > 0.5 ? -y : y, xz.y));
 }
