@@ -31,8 +31,12 @@
  *       target H pixels high. Triangles go where the relief shows: flat ground stays coarse near the eye, ridges stay
  *       fine far off. The sun's orthographic pass counts texels instead, {@code e / t ≤ lod.shadow-texel-error} for
  *       t metres per texel, so a far cascade casts with coarse patches, and draws no caster finer than the viewer's
- *       own cut (a caster finer than the ground it shadows shadows that ground itself). Cost: one pass over the samples per level when
- *       the world is built (about 0.2 s for 2048², with the boxes), one comparison per visited node per frame;</li>
+ *       own cut (a caster finer than the ground it shadows shadows that ground itself; one coarser darkens the
+ *       ground's hollows, the specks of the paper rule's {@code lod.shadow-coarsening}). A low sun needs no finer
+ *       casters: a height error δh moves its shadow on the ground by δh / tan(e) at sun elevation e, but the map sees
+ *       the ground stretched by the same 1 / sin(e), so in its texels the shadow moves by δh · cos(e) / t ≤ δh / t.
+ *       Cost: one pass over the samples per level when the world is built (about 0.2 s for 2048², with the boxes),
+ *       one comparison per visited node per frame;</li>
  *   <li>the paper's {@code L_B(D) = ⌊log2(D/B)⌋} ({@link org.openworld.engine.terrain.LodRule#level}): a node is split
  *       while its level exceeds {@code L_B(D)}, whatever the relief. The drawn ring of each level then has a fixed
  *       number of patches, so the count grows with the logarithm of the world's size (the paper's equation 1):
