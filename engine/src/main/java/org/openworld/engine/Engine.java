@@ -65,7 +65,10 @@ public final class Engine implements AutoCloseable {
     private final Counters counters = new Counters();
     /** The systems whose init has begun, in order, with what each has handed to {@link EngineContext#own}. */
     private final Map<EngineSystem, Owned> initialised = new LinkedHashMap<>();
-    /** The engine's own GL objects, labelled {@code engine.*}: the scene target and picture, the timers, the shared bindings. */
+    /**
+     * The engine's own GL objects, labelled {@code engine.*}: the scene target and picture, the timers, the shared
+     * bindings.
+     */
     private final Owned owned = new Owned("engine");
     private final FixedStepClock clock = new FixedStepClock();
     private ScaledScene scene;
