@@ -25,7 +25,6 @@ import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.DrawStats;
-import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.Sampling;
@@ -42,7 +41,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *       and REFLECTION, whose {@link PassOwner} gives a view this frame), the frame uniform block is written with
  *       that pass's camera, its target is bound and cleared, each system working in it sets up the pass
  *       ({@link EngineSystem#beginPass}), and the systems draw in resolved order;</li>
- *   <li>the picture is in the scene target, to be read back (headless) or shown (window).</li>
+ *   <li>below {@code engine.render-scale} 1, the scene target, drawn smaller, is stretched over the full-size
+ *       picture ({@link ScaledScene});</li>
+ *   <li>the picture is read back (headless) or shown (window).</li>
  * </ol>
  * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as
  * {@link FrameRecord}s once the GPU has finished them. Three parts live in classes of their own: the simulation's
@@ -64,10 +65,13 @@ public final class Engine implements AutoCloseable {
     private final Counters counters = new Counters();
     /** The systems whose init has begun, in order, with what each has handed to {@link EngineContext#own}. */
     private final Map<EngineSystem, Owned> initialised = new LinkedHashMap<>();
-    /** The engine's own GL objects, labelled {@code engine.*}: the scene target, the timers, the shared bindings. */
+    /**
+     * The engine's own GL objects, labelled {@code engine.*}: the scene target and picture, the timers, the shared
+     * bindings.
+     */
     private final Owned owned = new Owned("engine");
     private final FixedStepClock clock = new FixedStepClock();
-    private Framebuffer scene;
+    private ScaledScene scene;
     private FrameTiming timing;
     private SharedBindings shared;
     private long frame;
@@ -79,8 +83,8 @@ public final class Engine implements AutoCloseable {
      * @param shaders  where shader files come from
      * @param settings every setting, already with the user's {@code --set} values
      * @param systems  the systems, in any order: the engine orders them from their declarations
-     * @param width    scene target width, pixels
-     * @param height   scene target height, pixels
+     * @param width    picture width, pixels
+     * @param height   picture height, pixels
      */
     public Engine(GlContext gl, ShaderSources shaders, Settings settings, List<EngineSystem> systems,
                   int width, int height) {
@@ -116,7 +120,7 @@ public final class Engine implements AutoCloseable {
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
-            scene = owned.own("scene", Framebuffer.scene(gl, width, height));
+            scene = new ScaledScene(gl, owned, width, height, renderScale());
             timing = new FrameTiming(gl, owned, order.systems());
             shared = new SharedBindings(gl, owned);
             for (EngineSystem system : order.systems()) {
@@ -176,12 +180,17 @@ public final class Engine implements AutoCloseable {
         return frame;
     }
 
+    /** The picture's width: what is shown and read back, whatever the render scale. */
     public int width() {
-        return scene.width();
+        return scene.picture().width();
     }
 
     public int height() {
-        return scene.height();
+        return scene.picture().height();
+    }
+
+    private double renderScale() {
+        return settings.get(EngineSettings.class).renderScale();
     }
 
     /**
@@ -237,11 +246,12 @@ public final class Engine implements AutoCloseable {
         }
     }
 
-    /** Renders every pass into the scene target and records the frame's statistics. */
+    /** Renders every pass into the scene target, then makes the picture from it, and records the frame's statistics. */
     public void render() {
         timing.beginFrame();
         stats.reset();
-        PassView viewer = new PassView(world.resource(Camera.class).view((float) scene.width() / scene.height()), scene);
+        scene.fit(width(), height(), renderScale()); // the scale may have changed since the last frame (the panel)
+        PassView viewer = new PassView(world.resource(Camera.class).view((float) width() / height()), scene.scene());
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
         world.setResource(viewer);
@@ -291,7 +301,11 @@ public final class Engine implements AutoCloseable {
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        // 5. the frame's times queued for its GPU times; at most two frames in flight, as with a swap chain
+        // 5. below scale 1, the picture from the smaller scene target: part of the frame, and timed as such
+        if (scene.scaled()) {
+            timing.timeEngine("upscale.engine", scene::upscale);
+        }
+        // 6. the frame's times queued for its GPU times; at most two frames in flight, as with a swap chain
         timing.endFrame(frame, clock.simTime(), stats, counters);
         counters.clear();
         frame++;
@@ -332,32 +346,29 @@ public final class Engine implements AutoCloseable {
         timing.collect(wait, sink);
     }
 
-    /** Reads the scene target back (waits for the GPU). */
+    /** Reads the picture back (waits for the GPU). */
     public Image readImage() {
-        return scene.read();
+        return scene.picture().read();
     }
 
     /**
-     * Runs drawing that goes over the finished picture, into the scene target (the window's settings panel and HUD),
-     * so that what is shown and what is read back are one picture.
+     * Runs drawing that goes over the finished picture (the window's settings panel and HUD), at the picture's full
+     * size whatever the render scale, so that what is shown and what is read back are one picture.
      */
     public void drawOver(Runnable drawing) {
-        scene.bind();
+        scene.picture().bind();
         drawing.run();
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
-    /** Shows the scene target in the window, scaled to its framebuffer. */
+    /** Shows the picture in the window, scaled to its framebuffer. */
     public void present(int screenWidth, int screenHeight) {
-        scene.blitToScreen(screenWidth, screenHeight);
+        scene.picture().blitToScreen(screenWidth, screenHeight);
     }
 
-    /** Re-creates the scene target at a new size (a resized window); 0×0 (minimised) is ignored. */
+    /** Re-creates the scene target and picture at a new size (a resized window); 0×0 (minimised) is ignored. */
     public void resize(int width, int height) {
-        if (width <= 0 || height <= 0 || (width == scene.width() && height == scene.height())) {
-            return;
-        }
-        scene = owned.replace("scene", scene, Framebuffer.scene(gl, width, height));
+        scene.fit(width, height, renderScale());
     }
 
     /**

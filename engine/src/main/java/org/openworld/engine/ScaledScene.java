@@ -1,0 +1,90 @@
+package org.openworld.engine;
+
+import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
+import static org.lwjgl.opengl.GL11C.GL_LINEAR;
+import static org.lwjgl.opengl.GL30C.GL_DRAW_FRAMEBUFFER;
+import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
+import static org.lwjgl.opengl.GL30C.GL_READ_FRAMEBUFFER;
+import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
+import static org.lwjgl.opengl.GL30C.glBlitFramebuffer;
+
+import org.openworld.engine.core.Owned;
+import org.openworld.engine.gl.Format;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Sampling;
+
+/**
+ * The engine's scene target at the render scale ({@code engine.render-scale}, docs/architecture.md, "Render scale"),
+ * and the full-size picture made from it. Below scale 1 the viewer's passes draw into a target of scale × the
+ * picture's width and height, so the fragment shaders run for scale² of the pixels (0.75: 56 %); at the end of the
+ * frame one blit with linear filtering stretches it over the picture. The picture is what the window shows, what is
+ * read back and what the panel and HUD draw over, so the picture keeps its size and the text stays sharp; the price
+ * is a softer picture (an edge blurs over about 1 / scale pixels) and the blit itself, one read and one write per
+ * picture pixel. At scale 1 the two are one target: nothing is copied and the picture is what it was without a scale.
+ */
+final class ScaledScene {
+
+    private final GlContext gl;
+    /** The engine's: holds the scene target as {@code engine.scene} and, below scale 1, {@code engine.picture}. */
+    private final Owned owned;
+    private Framebuffer scene;
+    /** The full-size picture; the scene target itself at scale 1. */
+    private Framebuffer picture;
+
+    ScaledScene(GlContext gl, Owned owned, int width, int height, double scale) {
+        this.gl = gl;
+        this.owned = owned;
+        fit(width, height, scale);
+    }
+
+    /** A side of the scene target: the picture's side times the scale, at least one pixel. */
+    static int scaled(int side, double scale) {
+        return Math.max(1, (int) Math.round(side * scale));
+    }
+
+    /**
+     * Re-makes the targets when the picture's size (a resized window) or the scale (the panel) has changed; 0×0
+     * (minimised) is ignored.
+     */
+    void fit(int width, int height, double scale) {
+        int w = scaled(width, scale);
+        int h = scaled(height, scale);
+        if (width <= 0 || height <= 0 || (picture != null && picture.width() == width && picture.height() == height
+                && scene.width() == w && scene.height() == h)) {
+            return;
+        }
+        if (picture != scene) {
+            owned.drop(picture);
+        }
+        owned.drop(scene);
+        scene = owned.own("scene", Framebuffer.scene(gl, w, h));
+        // colour alone: what draws over the picture (the panel) needs no depth
+        picture = w == width && h == height ? scene
+                : owned.own("picture", new Framebuffer(gl, width, height, Format.RGBA8, null, Sampling.NEAREST_CLAMP));
+    }
+
+    /** Where the viewer's passes draw. */
+    Framebuffer scene() {
+        return scene;
+    }
+
+    /** The full-size picture: shown, read back, drawn over. */
+    Framebuffer picture() {
+        return picture;
+    }
+
+    /** Whether the scene is drawn smaller than the picture, to be stretched over it at the end of the frame. */
+    boolean scaled() {
+        return picture != scene;
+    }
+
+    /** Stretches the scene target over the picture, filtering linearly. */
+    void upscale() {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, picture.id());
+        glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, picture.width(), picture.height(),
+                GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
+}
