@@ -3,7 +3,8 @@
 // steps 1-3 of material.glsl on every texel of a texture laid over the map tile like the gradient map, as a far
 // viewer sees them: the coarse tile at its far weight, each material texture at the mip level of one baked texel
 // (this pass's own derivatives choose it), the macro variation made periodic over a repeating tile.
-// Far terrain then reads albedo, gloss and slope with two lookups (terrain.frag, TERRAIN_FAR).
+// Far terrain then reads albedo, gloss, the detail slope and the ground's gradient with two lookups (terrain.frag,
+// TERRAIN_FAR).
 #include "terrain/material.glsl"
 
 uniform sampler2D heights;     // the height pyramid; level bakeLevel is read
@@ -18,7 +19,7 @@ uniform int bakeLevel;         // the pyramid level whose samples are as far apa
 uniform vec2 bakeSize;         // texels of the far material
 
 layout(location = 0) out vec4 farColour; // rgb albedo (written to sRGB storage), a gloss
-layout(location = 1) out vec4 farSlope;  // rg the detail slope, encoded s * 0.5 + 0.5
+layout(location = 1) out vec4 farSlope;  // rg the detail slope, encoded s * 0.5 + 0.5; ba the ground's gradient
 
 // Metres over which the macro variation of one tile edge fades into that of the opposite edge (two of its longest
 // wavelengths): a generated tile repeats, and its baked variation must meet itself without a seam.
@@ -65,5 +66,6 @@ void main() {
     s.snow = texture(snowMap, uv).r;
     MatTexel m = terrainMaterial(s, MAT_COARSE_FAR, macroTint(wsXZ));
     farColour = vec4(m.albedo, m.gloss);
-    farSlope = vec4(m.slope * 0.5 + 0.5, 0.0, 1.0);
+    // the gradient too, so the far program reads the ground's slope from this texel instead of a third texture
+    farSlope = vec4(m.slope * 0.5 + 0.5, slope);
 }

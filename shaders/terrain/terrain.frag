@@ -4,7 +4,8 @@
 // Variants, each its own program (#defines), chosen per patch on the CPU (engine: TerrainShading), so none pays for
 // another's work (a branch on a uniform runs both sides on a software rasteriser):
 //   (none)                 near patches: every material layer, fading into the far material over farBand
-//   TERRAIN_FAR            patches wholly beyond farBand.y: the baked far material (two lookups)
+//   TERRAIN_FAR            patches wholly beyond farBand.y: the baked far material and the ground's slope (two
+//                          lookups)
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
 //   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
 #include "common/frame.glsl"
@@ -16,10 +17,10 @@ in vec4 air;                   // the air to this point, per vertex (terrain.ver
 flat in int lodLevel;
 out vec4 fragColor;
 
-uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered
+uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
 uniform sampler2D snowMap;     // snow coverage 0..1
 uniform sampler2D farColour;   // baked steps 1-3 of material.glsl (FarMaterial): rgb albedo (sRGB stored), a gloss
-uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5
+uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5, ba the ground's (dh/dx, dh/dz)
 uniform float extent;          // metres per map tile
 uniform vec2 heightRange;      // lowest height, 1 / (highest - lowest), metres
 uniform vec2 farBand;          // metres from the eye: the near material fades into the far one from x to y
@@ -34,7 +35,14 @@ vec3 levelColour(int level) {
 
 void main() {
     vec2 uv = wsPos.xz / extent + 0.5;
+#ifdef TERRAIN_FAR
+    // the far ground's gradient baked beside its detail slope: one lookup fewer (the gradient map itself is finer
+    // only on maps over FarMaterial.MAX_SIZE samples, whose far ground reads coarse mips of it anyway)
+    vec4 farSlopes = texture(farSlope, uv);
+    vec2 slope = farSlopes.ba;
+#else
     vec2 slope = texture(gradients, uv).xy;
+#endif
     TerrainSurface s;
     s.wsPos = wsPos;
     s.wsTangent = normalize(vec3(1.0, slope.x, 0.0));
@@ -47,11 +55,10 @@ void main() {
     color = color * color;
 #else
     vec4 far = texture(farColour, uv);
-    vec2 slopeFar = texture(farSlope, uv).rg * 2.0 - 1.0;
     MatTexel m;
   #ifdef TERRAIN_FAR
     m.albedo = far.rgb;
-    m.slope = slopeFar;
+    m.slope = farSlopes.rg * 2.0 - 1.0;
     m.height = 0.5;
     m.gloss = far.a;
   #else
@@ -61,7 +68,7 @@ void main() {
     m = terrainMaterial(s, eyeDistance, matMacroTint(wsPos.xz));
     float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
     m.albedo = mix(m.albedo, far.rgb, toFar);
-    m.slope = mix(m.slope, slopeFar, toFar);
+    m.slope = mix(m.slope, texture(farSlope, uv).rg * 2.0 - 1.0, toFar);
     m.gloss = mix(m.gloss, far.a, toFar);
   #endif
     vec3 color = lightTerrain(s, m);

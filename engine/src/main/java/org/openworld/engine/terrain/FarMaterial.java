@@ -21,8 +21,9 @@ import org.openworld.engine.gl.Texture2D;
  *
  * <p><b>Size.</b> One texel per height sample up to {@value #MAX_SIZE}² (2 m at the default 4 km tile, 1 m on a
  * 1 km one), then one per sample of the pyramid level with that many: an 8192² map bakes at 8 m. Colour in
- * SRGB8_ALPHA8 (albedo in sRGB, gloss linear), the detail slope in RGBA8 (x, z encoded {@code s * 0.5 + 0.5}), both
- * with mips: 43 MiB at 2048².
+ * SRGB8_ALPHA8 (albedo in sRGB, gloss linear), the detail slope and the ground's gradient in RGBA16F (the slope's x,
+ * z encoded {@code s * 0.5 + 0.5}, the gradient as it is, so far patches need not read the gradient map as well),
+ * both with mips: 64 MiB at 2048².
  *
  * <p><b>When.</b> At start and again when a setting it depends on changes ({@code materials.snow-mode},
  * {@code materials.detail-scale}): one full-screen pass over the textures, then their mips (with the extra programs,
@@ -64,7 +65,7 @@ final class FarMaterial {
         texelMetres = base.extent() / size;
         Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
         colour = context.own("far-material.colour", Texture2D.withMips(gl, size, size, Format.SRGB8_ALPHA8, wrap));
-        slope = context.own("far-material.slope", Texture2D.withMips(gl, size, size, Format.RGBA8, wrap));
+        slope = context.own("far-material.slope", Texture2D.withMips(gl, size, size, Format.RGBA16F, wrap));
         program = context.own("bake", context.shaders().program("terrain/bake.vert", "terrain/bake.frag"));
         triangle = context.own(Mesh.fullScreenTriangle(gl));
         program.use();
@@ -86,7 +87,7 @@ final class FarMaterial {
         return texelMetres;
     }
 
-    /** Binds the baked colour and gloss to {@code unit}, the detail slope to {@code unit + 1}. */
+    /** Binds the baked colour and gloss to {@code unit}, the detail slope and gradient to {@code unit + 1}. */
     void bind(int unit) {
         colour.bind(unit);
         slope.bind(unit + 1);

@@ -60,9 +60,11 @@ final class TerrainShading {
         tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), base, cells,
                 unitHeights);
         for (ShaderProgram p : List.of(near, far, levels, tangentSpace)) {
-            p.sampler("gradients", unitGradients);
+            p.use();
             p.float1("extent").set((float) base.extent());
         }
+        near.sampler("gradients", unitGradients); // the far programs read the gradient from the far material
+        tangentSpace.sampler("gradients", unitGradients);
         for (ShaderProgram p : List.of(near, far, levels)) {
             p.sampler("farColour", unitFar);
             p.sampler("farSlope", unitFar + 1);
