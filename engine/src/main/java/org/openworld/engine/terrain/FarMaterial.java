@@ -115,7 +115,7 @@ final class FarMaterial {
         }
         try (Framebuffer target = Framebuffer.onTextures(gl, colour, slope)) {
             target.bind();
-            // linear albedo in, sRGB stored (the precision goes to the dark tones); the RGBA8 slope is stored as it is
+            // linear albedo in, sRGB stored (the precision goes to the dark tones); the half-float slopes as they are
             glEnable(GL_FRAMEBUFFER_SRGB);
             triangle.draw(new DrawStats());
             glDisable(GL_FRAMEBUFFER_SRGB);
