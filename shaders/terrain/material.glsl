@@ -149,7 +149,7 @@ float matCover(float amount, float relief) {
 // Steps 1-3 at s, seen from eyeDistance metres, under the macro variation macroTint (matMacroTint): the surface's
 // albedo, detail slope and gloss, before light.
 MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint) {
-    float n0y = normalize(s.wsNormal).y;
+    float n0y = s.wsNormal.y;
 
     // 1. texture coordinates at two scales, and the macro variation
     const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
@@ -196,7 +196,7 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
     vec3 toEye = cameraPos() - s.wsPos;
     vec3 v = toEye / max(length(toEye), 1e-4);
     vec3 l = sunDir();
-    vec3 n0 = normalize(s.wsNormal);
+    vec3 n0 = s.wsNormal;
 
     // 4. detail normal: tangent-space (x along +u = +X, y along +v = +Z) through the terrain's TBN
     vec3 n = n0;
