@@ -26,6 +26,8 @@ public final class Settings {
     /** Switch key → on; in the order the systems were given. */
     private final Map<String, Boolean> switches = new LinkedHashMap<>();
     private final Map<String, Boolean> switchDefaults = new LinkedHashMap<>();
+    /** Values set since these settings were made, counting a value set to what it was. */
+    private long changes;
 
     /** Groups of settings without system switches (tests of one group). */
     public Settings(List<SettingsGroup<?>> groups) {
@@ -66,6 +68,15 @@ public final class Settings {
         }
         current.putAll(other.current);
         switches.putAll(other.switches);
+        changes++;
+    }
+
+    /**
+     * A count that grows whenever a value is set ({@link #set}, {@link #takeOver}): a system that keeps something
+     * made under the settings (a shadow map) compares it with the count it was made at, instead of every value.
+     */
+    public long changes() {
+        return changes;
     }
 
     /** Whether the system of this name runs; true for a system without a switch. */
@@ -116,12 +127,14 @@ public final class Settings {
     public void set(String key, String text) {
         if (switches.containsKey(key)) {
             switches.put(key, parseSwitch(key, text));
+            changes++;
             return;
         }
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 if (k.key().equals(key)) {
                     setIn(group, k, parse(k, text));
+                    changes++;
                     return;
                 }
             }

@@ -71,8 +71,8 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
     private final ByteBuffer blockData = MemoryUtil.memCalloc(SunShadow.BLOCK_SIZE);
     private List<LightBox> boxes = List.of();
     private final CascadeRefresh refresh = new CascadeRefresh();
-    /** The settings the maps were drawn under ({@link #everySetting}); null before the first frame. */
-    private List<Object> drawnUnder;
+    /** The {@link Settings#changes} count the maps were drawn under; −1 before the first frame. */
+    private long drawnUnder = -1;
     private ShadowProbe probe;
 
     @Override
@@ -124,10 +124,9 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         Settings settings = world.resource(Settings.class);
         ShadowSettings s = settings.get(ShadowSettings.class);
         fitMaps(s, world);
-        List<Object> now = everySetting(settings);
-        if (!now.equals(drawnUnder)) {
+        if (settings.changes() != drawnUnder) {
             refresh.forget(s.maps());                       // the casters, the maps or their layout may have changed
-            drawnUnder = now;
+            drawnUnder = settings.changes();
         }
         refresh.nextFrame();
         ViewCamera eye = viewer.camera();
@@ -161,14 +160,6 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         writeBlock(s, eye.position());
         world.resource(Counters.class).put("shadow.redrawn", views.size());
         return views;
-    }
-
-    /** Every group's settings and every system switch: what the maps were drawn under, compared each frame. */
-    private static List<Object> everySetting(Settings settings) {
-        List<Object> all = new ArrayList<>();
-        settings.groups().forEach(group -> all.add(settings.get(group.type())));
-        settings.systemKeys().forEach(key -> all.add(settings.text(key)));
-        return all;
     }
 
     /**

@@ -47,6 +47,24 @@ class SettingsTest {
     }
 
     @Test
+    void theChangeCountGrowsWithEverySetAndNotWithReads() {
+        Settings s = new Settings(List.of(SettingsGroup.of("probe", ProbeSettings.class, ProbeSettings.DEFAULTS)),
+                java.util.Map.of("water", true));
+        long start = s.changes();
+        s.get(ProbeSettings.class);
+        s.text("probe.radius");
+        assertEquals(start, s.changes(), "reading changes nothing");
+        s.set("probe.radius", "42.5");
+        assertEquals(start + 1, s.changes(), "a group's value");
+        s.set("system.water", "off");
+        assertEquals(start + 2, s.changes(), "a system switch");
+        s.takeOver(s.defaults());
+        assertEquals(start + 3, s.changes(), "every value at once");
+        assertThrows(SettingsException.class, () -> s.set("probe.radius", "1000"));
+        assertEquals(start + 3, s.changes(), "a refused value sets nothing");
+    }
+
+    @Test
     void startsAtTheDefaults() {
         assertEquals(ProbeSettings.DEFAULTS, settings().get(ProbeSettings.class));
     }

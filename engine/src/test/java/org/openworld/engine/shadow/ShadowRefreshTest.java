@@ -102,6 +102,10 @@ class ShadowRefreshTest {
             assertEquals(0, frame(engine, LOW).get("shadow.redrawn"), "nothing moved: no map redrawn");
             assertArrayEquals(drawn, sun.map().read(), "the kept maps were neither cleared nor drawn over");
             assertSamePicture(picture, engine.readImage());
+            // a setting changed (here the filter): the maps may no longer be what it would draw
+            engine.settings().set("shadow.kernel", "5");
+            assertEquals(3, frame(engine, LOW).get("shadow.redrawn"), "a setting changed: all redrawn");
+            assertEquals(0, frame(engine, LOW).get("shadow.redrawn"), "and then kept again");
             // 20 m east: every box moved by whole texels (the finest is about 0.4 m, the coarsest 1.7 m)
             assertEquals(3, frame(engine, moved(LOW, 20, 0, 0)).get("shadow.redrawn"), "moved: all redrawn");
             // the sun turned by 1°, beyond the refresh angle (0.05°): every box turned with it
