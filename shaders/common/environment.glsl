@@ -11,3 +11,16 @@ const float ENVIRONMENT_MAX_LOD = 6.0;
 vec3 environmentRadiance(vec3 wsDir, float lod) {
     return textureLod(environmentMap, wsDir, lod).rgb;
 }
+
+// Two fixed levels for a surface that reads the environment per vertex and blends per pixel (the far terrain,
+// terrain/terrain.vert): a cube map lookup is the dearest texture read on a software rasteriser (a face chosen and a
+// seamless trilinear filter per pixel), and a distant surface's reflection varies little across a triangle.
+const float ENVIRONMENT_SHARP_LOD = 2.0; // 16 texels a face side: gloss 2/3 (wet rock, snow)
+const float ENVIRONMENT_ROUGH_LOD = 5.0; // 2 texels a face side: gloss 1/6 (grass)
+
+// The radiance at level lod from the two fixed levels' radiance: linear in the level between them, as a trilinear
+// filter is between neighbouring levels, and the nearer one's outside.
+vec3 environmentBetween(vec3 sharp, vec3 rough, float lod) {
+    float t = clamp((lod - ENVIRONMENT_SHARP_LOD) / (ENVIRONMENT_ROUGH_LOD - ENVIRONMENT_SHARP_LOD), 0.0, 1.0);
+    return mix(sharp, rough, t);
+}

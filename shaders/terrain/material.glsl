@@ -30,6 +30,22 @@ uniform vec2 uMatSnowBand;         // ALTITUDE_BANDS: normalised heights where s
 uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
 uniform int uMatGlossMap;          // 1: highlight and sky reflection, scaled by the gloss maps
 
+#ifdef TERRAIN_FAR
+// The far terrain's sky reflection, per vertex at two levels of blur (terrain.vert): the mirror direction of the
+// ground's normal there, without the detail normal, whose bumps are smaller than a far pixel anyway.
+in vec3 skySharp;
+in vec3 skyRough;
+#endif
+
+// The environment's radiance reflected towards the eye along r, blurred to level lod.
+vec3 matSkyReflection(vec3 r, float lod) {
+#ifdef TERRAIN_FAR
+    return environmentBetween(skySharp, skyRough, lod);
+#else
+    return environmentRadiance(r, lod);
+#endif
+}
+
 struct TerrainSurface {
     vec3 wsPos;        // world position, metres
     vec3 wsNormal;     // unit geometric normal of the terrain (from the height field)
@@ -223,7 +239,7 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
         vec3 r = reflect(-v, n);
         float nv = max(dot(n, v), 0.0);
         float fresnelView = matFresnel(nv);
-        color += environmentRadiance(r, (1.0 - gloss) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
+        color += matSkyReflection(r, (1.0 - gloss) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
     }
     return color;
 }

@@ -5,7 +5,7 @@
 // another's work (a branch on a uniform runs both sides on a software rasteriser):
 //   (none)                 near patches: every material layer, fading into the far material over farBand
 //   TERRAIN_FAR            patches wholly beyond farBand.y: the baked far material and the ground's slope (two
-//                          lookups)
+//                          lookups), the sky's reflection from the vertices (terrain.vert)
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
 //   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
 #include "common/frame.glsl"

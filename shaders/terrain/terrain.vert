@@ -4,6 +4,9 @@
 // of its vertices reads. Heights come from the R32F pyramid texture, level L = pyramid level L, read exactly.
 #include "common/frame.glsl"
 #include "common/fog.glsl"
+#ifdef TERRAIN_FAR
+#include "common/environment.glsl"
+#endif
 
 layout(location = 0) in vec2 gridPos;         // column, row in 0..N
 layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample z, samples per grid step, level
@@ -16,10 +19,18 @@ uniform int mapSize;        // level-0 samples per side
 uniform float spacing;      // metres between level-0 samples
 uniform int cells;          // N, grid cells per patch side
 uniform int periodic;       // 1: the map wraps (generated), 0: it clamps (imported)
+#ifdef TERRAIN_FAR
+uniform sampler2D farSlope; // ba: the ground's (dh/dx, dh/dz) over the tile (FarMaterial), as in terrain.frag
+uniform float extent;       // metres per map tile
+#endif
 
 out vec3 wsPos;
 out vec4 air;                 // the air between the eye and this vertex (common/fog.glsl), see main
 flat out int lodLevel;
+#ifdef TERRAIN_FAR
+out vec3 skySharp;            // the environment mirrored by the ground, at its sharp and rough levels (see main)
+out vec3 skyRough;
+#endif
 
 // The level a vertex reads: a stitched side reads its coarser neighbour's level, a corner the coarsest of the
 // patches that meet there, so every patch computes the same height for a shared vertex (no cracks).
@@ -53,5 +64,15 @@ void main() {
     // a triangle's side a small share of its distance), and per pixel it cost a fifth of the terrain's pixel time
     // on a software rasteriser (an asin, an atan and a 3D lookup a pixel).
     air = airTo(wsPos);
+#ifdef TERRAIN_FAR
+    // The sky's reflection per vertex too, at two levels the pixels blend by their gloss (material.glsl): on the
+    // far ground its cube map lookup per pixel was a sixth of the terrain's pixel time on a software rasteriser. The
+    // normal is the ground's, read at the level whose texels are as far apart as this patch's vertices.
+    float texelsPerStep = float(patchInfo.z) * float(textureSize(farSlope, 0).x) / float(mapSize);
+    vec2 slope = textureLod(farSlope, wsPos.xz / extent + 0.5, max(log2(texelsPerStep), 0.0)).ba;
+    vec3 mirror = reflect(normalize(wsPos - cameraPos()), normalize(vec3(-slope.x, 1.0, -slope.y)));
+    skySharp = environmentRadiance(mirror, ENVIRONMENT_SHARP_LOD);
+    skyRough = environmentRadiance(mirror, ENVIRONMENT_ROUGH_LOD);
+#endif
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }

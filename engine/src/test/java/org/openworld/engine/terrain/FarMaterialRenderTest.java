@@ -18,6 +18,7 @@ import org.openworld.engine.colour.Lab;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.sky.SkySystem;
 
 /**
  * The baked far material against the near one it stands in for: the same ground drawn all near
@@ -98,6 +99,47 @@ class FarMaterialRenderTest {
             }
             assertTrue(sum / blocks > 3, "mean ΔE00 of the block means, bands against the snow map: " + sum / blocks);
         }
+    }
+
+    /**
+     * The far ground mirrors the sky as the near ground does: what the gloss maps add (the sun's highlight and the
+     * sky's reflection) agrees between the two. The far program reads the sky per vertex at two levels of blur and
+     * the near one per pixel at the gloss's own level, so their sums differ a little, but a far ground that lost the
+     * sky, or read it along another direction, would add far less at this low sun, seen across the slopes.
+     */
+    @Test
+    void theFarGroundMirrorsTheSkyAsTheNearOneDoes() throws IOException {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400"),
+                new TerrainSystem(), new CullingSystem(), new SkySystem())) {
+            engine.world().setResource(new TimeOfDay(17.5, 0));
+            engine.world().resource(Camera.class).setPose(new CameraPose(0, 600, 400, 0, -15, 60));
+            engine.settings().set("materials.far-texels", "100000");
+            double near = glossGain(engine, "near");
+            engine.settings().set("materials.far-texels", "0");
+            double far = glossGain(engine, "far");
+            assertTrue(near > 0.5, "the gloss maps add lightness (L*) to the near ground: " + near);
+            assertTrue(Math.abs(far - near) < 0.2 * near, "light the gloss maps add, far " + far + " against near "
+                    + near);
+        }
+    }
+
+    /** Mean CIE lightness L* of the picture's lower two thirds (ground) with the gloss maps less without them. */
+    private static double glossGain(Engine engine, String name) throws IOException {
+        engine.settings().set("materials.gloss-map", "off");
+        double off = meanLightness(frame(engine, name + "-matte"));
+        engine.settings().set("materials.gloss-map", "on");
+        return meanLightness(frame(engine, name + "-gloss")) - off;
+    }
+
+    private static double meanLightness(Image image) {
+        double sum = 0;
+        for (int y = HEIGHT / 3; y < HEIGHT; y++) {
+            for (int x = 0; x < WIDTH; x++) {
+                sum += Lab.fromSrgb(image.channel(x, y, 0), image.channel(x, y, 1), image.channel(x, y, 2)).l();
+            }
+        }
+        return sum / ((HEIGHT - HEIGHT / 3) * WIDTH);
     }
 
     /** The mean colour of a block as Lab, or null if any pixel of it is the black background. */
