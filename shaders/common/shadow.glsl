@@ -63,6 +63,15 @@ float insideness(vec3 coords) {
     return coords.z > 1.0 ? -1.0 : min(edge.x, edge.y);
 }
 
+#ifdef SUN_UNSHADOWED
+// The variant for a pass with no shadow map bound (engine: RenderContext.sunShadowed): everything is lit, and no
+// lookup is compiled in. With a map that shadows nothing (cascade count 0) the picture is the same, but a software
+// rasteriser runs a loop's body at least once, masked, whatever its count: the cascade loop and its filter cost a
+// fifth of the terrain's pixel time on llvmpipe, for no shadow.
+float sunVisibility(vec3 wsPos, vec3 wsNormal) {
+    return 1.0;
+}
+#else
 float sunVisibility(vec3 wsPos, vec3 wsNormal) {
     int count = int(shadow.shadowParams.x);
     float distance = length(wsPos - shadow.viewerPos.xyz);
@@ -95,3 +104,4 @@ float sunVisibility(vec3 wsPos, vec3 wsNormal) {
     }
     return 1.0;
 }
+#endif

@@ -265,7 +265,7 @@ public final class Engine implements AutoCloseable {
             for (int v = 0; v < views.size(); v++) {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
-                shared.bind(world, view, viewer, clock.simTime(), frame, shadowReady);
+                boolean sunShadowed = shared.bind(world, view, viewer, clock.simTime(), frame, shadowReady);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 String label = pass.label() + (view.number() >= 0 ? String.valueOf(view.number()) : "") + ".";
                 timing.timeEngine(label + "engine", () -> {
@@ -277,7 +277,7 @@ public final class Engine implements AutoCloseable {
                     }
                 });
                 // 3. each system's state for the whole pass (EngineSystem.beginPass), before anyone draws
-                RenderContext context = new RenderContext(world, view.camera(), stats, view.target());
+                RenderContext context = new RenderContext(world, view.camera(), stats, view.target(), sunShadowed);
                 for (EngineSystem system : drawing) {
                     if (isEnabled(system.spec().name())) {
                         system.beginPass(pass, context);

@@ -5,6 +5,7 @@ import org.joml.Matrix4f;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.PassView;
+import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Exposure;
@@ -47,8 +48,10 @@ final class SharedBindings {
      * the shared textures and blocks: the sky's, or the stand-ins; the sun's shadow once its owner has had this
      * frame's turn (drawn its maps, or kept the last frame's; its block says none while the sun is down), else none
      * (no system casts shadows or it is switched off; and a map being drawn must not be bound for reading).
+     *
+     * @return whether the sun's shadow maps were bound, not the stand-in ({@link RenderContext#sunShadowed})
      */
-    void bind(World world, PassView view, PassView viewer, double simTime, long frame, boolean shadowReady) {
+    boolean bind(World world, PassView view, PassView viewer, double simTime, long frame, boolean shadowReady) {
         frameUniforms.write(frameValues(world, view, viewer, simTime, frame));
         SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
         maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
@@ -56,6 +59,7 @@ final class SharedBindings {
         SunShadow shadow = shadowReady ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
         shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
         shadow.block().bindBase(SharedBlock.SHADOW.binding());
+        return shadow != noShadow;
     }
 
     /** The block for one view of a pass; {@code viewer} is the MAIN camera's, given to every pass as the viewer. */

@@ -13,6 +13,10 @@ import org.openworld.engine.gl.Framebuffer;
  * @param stats  draw calls and triangles, counted by {@code Mesh}
  * @param target the framebuffer this pass draws into (the scene target in MAIN and OVERLAY), bound; a system that
  *               binds another one (the water copying the scene) binds this one back
+ * @param sunShadowed the sun's shadow maps are bound ({@code shaders/common/shadow.glsl}); false: a map that shadows
+ *               nothing is, and a program compiled with {@code SUN_UNSHADOWED}, which skips the lookup, draws the
+ *               same picture for less
  */
-public record RenderContext(World world, ViewCamera camera, DrawStats stats, Framebuffer target) {
+public record RenderContext(World world, ViewCamera camera, DrawStats stats, Framebuffer target,
+                            boolean sunShadowed) {
 }

@@ -1,5 +1,6 @@
 package org.openworld.engine.terrain;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.DrawStats;
@@ -18,23 +19,29 @@ import org.openworld.engine.gl.Uniform;
  * also reads, and from D on shows only that; so where a near patch meets a far one both show the same colour, and
  * nothing pops as a patch changes program.
  *
+ * <p><b>Shadows.</b> The near and far programs come twice: reading the sun's shadow maps, and compiled without the
+ * lookup ({@code SUN_UNSHADOWED}, {@code shaders/common/shadow.glsl}) for the passes where no map is bound (no shadow
+ * system, or it is switched off). A map that shadows nothing would give the same picture, but a software rasteriser
+ * runs a loop's body at least once, masked, whatever its count: the lookup cost a fifth of the terrain's pixel time
+ * with no shadows to show.
+ *
  * <p><b>Views.</b> The debug colourings are programs of their own: {@code levels} is the far program tinted by the
  * patch's level (figure 6: only the light's lightness matters there), {@code tangent-space} reads no material
  * (figure 4).
  *
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
- * per pixel (docs/terrain.md has the measured split). Six programs are compiled at start instead of two.
+ * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two.
  */
 final class TerrainShading {
 
-    private final ShaderProgram near;
-    private final ShaderProgram far;
-    private final ShaderProgram levels;
+    /** The near and far programs for one kind of sunlight, with their material uniforms. */
+    private record Lit(TerrainMaterials.Uniforms near, TerrainMaterials.Uniforms far, Uniform.Vec2 farBand) {
+    }
+
+    private final Lit shadowed;
+    private final Lit unshadowed;
     private final ShaderProgram tangentSpace;
-    private final TerrainMaterials.Uniforms nearUniforms;
-    private final TerrainMaterials.Uniforms farUniforms;
     private final TerrainMaterials.Uniforms levelsUniforms;
-    private final Uniform.Vec2 farBand;
     private final TerrainMaterials materials;
     private final FarMaterial farMaterial;
     private final int unitMaterials;
@@ -54,47 +61,65 @@ final class TerrainShading {
         unitFar = unitMaterials + TerrainMaterials.UNITS; // and the next: colour, slope
         materials = context.own("materials", new TerrainMaterials(context.gl(), seed));
         farMaterial = new FarMaterial(context, base, unitHeights);
-        near = variant(context, "program", List.of(), base, cells, unitHeights);
-        far = variant(context, "program.far", List.of("TERRAIN_FAR"), base, cells, unitHeights);
-        levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"), base, cells, unitHeights);
+        shadowed = lit(context, "", List.of(), base, cells, unitHeights);
+        unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), base, cells, unitHeights);
+        ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"), base,
+                cells, unitHeights);
+        farSamplers(levels, unitFar);
+        levelsUniforms = TerrainMaterials.lightUniforms(levels);
         tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), base, cells,
                 unitHeights);
-        for (ShaderProgram p : List.of(near, far, levels, tangentSpace)) {
-            p.use();
-            p.float1("extent").set((float) base.extent());
-        }
-        near.sampler("gradients", unitGradients); // the far programs read the gradient from the far material
         tangentSpace.sampler("gradients", unitGradients);
-        for (ShaderProgram p : List.of(near, far, levels)) {
-            p.sampler("farColour", unitFar);
-            p.sampler("farSlope", unitFar + 1);
-        }
-        near.sampler("snowMap", unitSnow);
-        near.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
-        farBand = near.vec2("farBand");
-        nearUniforms = TerrainMaterials.uniforms(near);
-        farUniforms = TerrainMaterials.lightUniforms(far);
-        levelsUniforms = TerrainMaterials.lightUniforms(levels);
         maps.heights.bind(unitHeights);
         maps.gradients.bind(unitGradients);
         maps.snow.bind(unitSnow);
         farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
     }
 
+    /** The near program ({@code program}) and the far one ({@code program.far}), {@code suffix} on their roles. */
+    private Lit lit(EngineContext context, String suffix, List<String> light, HeightMap base, int cells,
+                    int unitHeights) {
+        ShaderProgram near = variant(context, "program" + suffix, light, base, cells, unitHeights);
+        ShaderProgram far = variant(context, "program.far" + suffix, with(light, "TERRAIN_FAR"), base, cells,
+                unitHeights);
+        near.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
+        near.sampler("snowMap", unitHeights + 2);
+        near.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
+        farSamplers(near, unitFar);
+        farSamplers(far, unitFar);
+        return new Lit(TerrainMaterials.uniforms(near), TerrainMaterials.lightUniforms(far), near.vec2("farBand"));
+    }
+
+    private static List<String> with(List<String> defines, String define) {
+        List<String> all = new ArrayList<>(defines);
+        all.add(define);
+        return all;
+    }
+
+    private static void farSamplers(ShaderProgram p, int unitFar) {
+        p.sampler("farColour", unitFar);
+        p.sampler("farSlope", unitFar + 1);
+    }
+
+    /** A terrain program with the patch uniforms and the tile's extent set. */
     private static ShaderProgram variant(EngineContext context, String role, List<String> defines, HeightMap base,
                                          int cells, int unitHeights) {
         ShaderProgram p = context.own(role,
                 context.shaders().program(defines, "terrain/terrain.vert", "terrain/terrain.frag"));
         TerrainSystem.setPatchUniforms(p, base, cells, unitHeights);
+        p.use();
+        p.float1("extent").set((float) base.extent());
         return p;
     }
 
     /**
      * Draws the ordered patches in the colouring asked for, near ones first; the maps are bound to their units.
-     * Bakes the far material again first if a setting it depends on changed.
+     * Bakes the far material again first if a setting it depends on changed. {@code sunShadowed}: the pass has the
+     * sun's shadow maps bound (RenderContext#sunShadowed), else the programs without the lookup draw.
      */
     void draw(PatchList patches, PatchOrder order, float[] copyOffsets, MaterialSettings settings,
-              TerrainDebugSettings.Colouring colouring, PatchRenderer renderer, DrawStats stats) {
+              TerrainDebugSettings.Colouring colouring, boolean sunShadowed, PatchRenderer renderer,
+              DrawStats stats) {
         farMaterial.refresh(materials, settings, unitMaterials);
         farMaterial.bind(unitFar);
         int all = order.size();
@@ -102,10 +127,11 @@ final class TerrainShading {
             case SHADED -> {
                 double farDistance = settings.farTexels() * farMaterial.texelMetres();
                 int nearCount = order.nearerThan(farDistance);
-                materials.bind(nearUniforms, settings, unitMaterials);
-                farBand.set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
+                Lit lit = sunShadowed ? shadowed : unshadowed;
+                materials.bind(lit.near(), settings, unitMaterials);
+                lit.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
-                materials.bind(farUniforms, settings, unitMaterials);
+                materials.bind(lit.far(), settings, unitMaterials);
                 renderer.draw(patches, order.order(), nearCount, all, copyOffsets, stats);
             }
             case LEVELS -> {

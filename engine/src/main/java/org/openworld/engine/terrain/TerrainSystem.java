@@ -223,7 +223,7 @@ public final class TerrainSystem implements EngineSystem {
                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             }
             shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class), debug.colouring(),
-                    renderer, context.stats());
+                    context.sunShadowed(), renderer, context.stats());
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
         glDisable(GL_CULL_FACE);
