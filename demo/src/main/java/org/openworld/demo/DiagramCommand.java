@@ -196,8 +196,8 @@ final class DiagramCommand implements Callable<Integer> {
                     + "in the middle of each (atmosphere.outer-samples).",
             "Inner sum (hollow): from each p toward the sun to the top at c, in equal steps "
                     + "(atmosphere.inner-samples): the optical depth t(p, c).",
-            "I(λ) = F(θ) S(λ) K(λ) Σ_p exp(−h/H₀) exp(−(t(a, p) + t(p, c))) Δs        t(a, b, λ) = K(λ) Σ exp(−h/H₀) Δs"
-                    + "        (equations 4 and 3)",
+            "I(λ) = F(θ) S(λ) K(λ) Σ_p exp(−h/H₀) exp(−(t(a, p) + t(p, c))) Δs        "
+                    + "t(a, b, λ) = K(λ) Σ exp(−h/H₀) Δs        (equations 4 and 3)",
         };
         for (int i = 0; i < legend.length; i++) {
             g.drawString(legend[i], 24, LEGEND_TOP + 34 + 28 * i);

@@ -8,10 +8,10 @@ import org.openworld.demo.Figure.Tool;
  * Every figure of the paper, as pictures the demo makes: the one list {@code openworld figures} renders. Figure 7,
  * the paper's diagram of the scattering sums, is drawn ({@code openworld diagram}), and beside it are the paper's
  * findings on those sums as strips ({@code openworld sky-strip}): how many wavelengths and samples per sum it
- * takes for the sky's colour to settle, with the measured difference printed under each. Poses, times and settings are those of the docs pages
- * (docs/terrain.md, sky.md, shadows.md, water.md, particles.md) where they give them; the rest were chosen by looking
- * at the result, and are named below with what they show. Captions quote the paper: a figure's own caption where
- * it has one, else the sentence of the text that shows it.
+ * takes for the sky's colour to settle, with the measured difference printed under each. Poses, times and settings
+ * are those of the docs pages (docs/terrain.md, sky.md, shadows.md, water.md, particles.md) where they give them;
+ * the rest were chosen by looking at the result, and are named below with what they show. Captions quote the
+ * paper: a figure's own caption where it has one, else the sentence of the text that shows it.
  */
 final class FigureCatalogue {
 
@@ -137,9 +137,9 @@ final class FigureCatalogue {
         for (String when : List.of("noon", "sunset")) {
             List<String> sun = when.equals("noon") ? List.of() : List.of("--sunset");
             list.add(strip("7-wavelengths-" + when, found, "Wavelengths in the default sky at " + when + ", against "
-                    + "32: 3 are far off (red: above ΔE00 2, a just-noticeable difference), 6 and more settle; 4 passes by "
-                    + "where its wavelengths happen to fall (5 does not).",
-                    sun, "--wavelengths", "3,4,6,8,16"));
+                    + "32: 3 are far off (red: above ΔE00 2, a just-noticeable difference), 6 and more settle; 4 "
+                    + "passes by where its wavelengths happen to fall (5 does not).", sun, "--wavelengths",
+                    "3,4,6,8,16"));
             list.add(strip("7-samples-" + when, found, "Samples in each of the paper's sums at " + when + ", against "
                     + "64: with physical constants 2 are far off; it takes about 16.", sun, "--samples", "1,2,4,16"));
         }

@@ -22,9 +22,10 @@ import picocli.CommandLine.Option;
  * {@code index.html} gallery of them. Each picture is made by parsing its printed command line with the demo's own
  * command line and running that command ({@code shot}; {@code heightmap} for figure 2; {@code diagram} and
  * {@code sky-strip}, on the CPU, for figure 7 and the findings beside it) from scratch: a fresh world and GL context
- * per picture, nothing kept between them, so the command the gallery prints makes the same picture on its own. The price is small: making the 2048² world again takes about 0.15 s of the 1.8 s (median) a
- * 960×540 shot takes on llvmpipe with 2 cores once the JIT is warm; the whole set, 50 pictures, about 95 s, of
- * which figure 7's five, on the CPU, 9 s.
+ * per picture, nothing kept between them, so the command the gallery prints makes the same picture on its own. The
+ * price is small: making the 2048² world again takes about 0.15 s of the 1.8 s (median) a 960×540 shot takes on
+ * llvmpipe with 2 cores once the JIT is warm; the whole set, 50 pictures, about 95 s, of which figure 7's five, on
+ * the CPU, 9 s.
  */
 @Command(name = "figures", mixinStandardHelpOptions = true,
         description = "Remake the paper's figures headless into a folder, with an index.html gallery that shows each "

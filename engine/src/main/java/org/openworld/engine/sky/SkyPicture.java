@@ -23,7 +23,7 @@ import org.openworld.engine.gl.Image;
  */
 public final class SkyPicture {
 
-    /** Picture size, pixels: 1° per pixel across the 180° of azimuth. */
+    /** Picture size, pixels: about 1° per pixel (180° of azimuth over 192, 90° of elevation over 96). */
     public static final int WIDTH = 192;
     public static final int HEIGHT = 96;
     /** The wavelengths of the reference the spectral sampling is measured against: 4 times the default. */
