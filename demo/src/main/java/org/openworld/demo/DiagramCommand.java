@@ -27,7 +27,7 @@ import picocli.CommandLine.Option;
  * atmosphere at b with the outer sum's points p at the midpoints of equal steps, and from each p the inner ray
  * toward the sun to the top of the atmosphere at c with the inner sum's points. The sums are those of
  * {@code SkyIntegrator} in single scattering ({@code atmosphere.outer-samples}, {@code atmosphere.inner-samples});
- * the shell is drawn 4 times thicker than Earth's (100 km on 6360) so it can be seen.
+ * the shell is drawn about 10 times thicker than Earth's (100 km on 6360) so it can be seen.
  */
 @Command(name = "diagram", mixinStandardHelpOptions = true,
         description = "Draw the paper's figure 7, the scattering sums: the eye, the view ray's outer samples, the "
