@@ -24,7 +24,11 @@ record Figure(String id, int number, String caption, String note, Tool tool, Lis
         /** {@code openworld shot}: one rendered image, {@code ID.png}. */
         SHOT("shot"),
         /** {@code openworld heightmap}: the height, snow and spectrum maps, no OpenGL, in the folder {@code ID}. */
-        HEIGHTMAP("heightmap");
+        HEIGHTMAP("heightmap"),
+        /** {@code openworld sky-strip}: the sky on the CPU at several samplings with their ΔE, {@code ID.png}. */
+        STRIP("sky-strip"),
+        /** {@code openworld diagram}: figure 7, drawn, {@code ID.png}. */
+        DIAGRAM("diagram");
 
         final String command;
 
@@ -37,17 +41,17 @@ record Figure(String id, int number, String caption, String note, Tool tool, Lis
         arguments = List.copyOf(arguments);
     }
 
-    /** Where the command writes, relative to the gallery's folder: a PNG file for a shot, a folder for the maps. */
+    /** Where the command writes, relative to the gallery's folder: a folder for the maps, else a PNG file. */
     String output() {
-        return tool == Tool.SHOT ? id + ".png" : id;
+        return tool == Tool.HEIGHTMAP ? id : id + ".png";
     }
 
     /** The images the command writes, relative to the gallery's folder, in the order the gallery shows them. */
     List<String> files() {
-        return tool == Tool.SHOT
-                ? List.of(output())
-                : List.of(id + "/" + HeightmapCommand.HEIGHT_PNG, id + "/" + HeightmapCommand.SNOW_PNG,
-                        id + "/" + HeightmapCommand.SPECTRUM_PNG);
+        return tool == Tool.HEIGHTMAP
+                ? List.of(id + "/" + HeightmapCommand.HEIGHT_PNG, id + "/" + HeightmapCommand.SNOW_PNG,
+                        id + "/" + HeightmapCommand.SPECTRUM_PNG)
+                : List.of(output());
     }
 
     /**

@@ -5,11 +5,13 @@ import java.util.List;
 import org.openworld.demo.Figure.Tool;
 
 /**
- * Every figure of the paper that shows a rendering or a map (all but figure 7, a diagram), as pictures the demo
- * makes: the one list {@code openworld figures} renders. Poses, times and settings are those of the docs pages
- * (docs/terrain.md, sky.md, shadows.md, water.md, particles.md) where they give them; the rest were chosen by looking
- * at the result, and are named below with what they show. Captions quote the paper: a figure's own caption where
- * it has one, else the sentence of the text that shows it.
+ * Every figure of the paper, as pictures the demo makes: the one list {@code openworld figures} renders. Figure 7,
+ * the paper's diagram of the scattering sums, is drawn ({@code openworld diagram}), and beside it are the paper's
+ * findings on those sums as strips ({@code openworld sky-strip}): how many wavelengths and samples per sum it
+ * takes for the sky's colour to settle, with the measured difference printed under each. Poses, times and settings
+ * are those of the docs pages (docs/terrain.md, sky.md, shadows.md, water.md, particles.md) where they give them;
+ * the rest were chosen by looking at the result, and are named below with what they show. Captions quote the
+ * paper: a figure's own caption where it has one, else the sentence of the text that shows it.
  */
 final class FigureCatalogue {
 
@@ -124,6 +126,24 @@ final class FigureCatalogue {
                     "terrain-debug.colouring=levels", "lod.base-resolution=" + bases[i]));
         }
 
+        // Figure 7: the scattering sums drawn, and the paper's findings on them measured (paper 3.1)
+        list.add(new Figure("7", 7, "Figure 7: Illustration of the scattering equations",
+                "The eye a, the view ray to b with the outer sum's points p, from each the inner sum toward the sun "
+                        + "to c at the top of the atmosphere.", Tool.DIAGRAM, List.of()));
+        String found = "This project found that the visible spectrum (400-750 nm) needs to be sampled at least 6 "
+                + "times (linearly spaced samples) in order to approximate the resulting color distribution good "
+                + "enough. Also, the light rays in both inner and outer integrals needs to be sampled at least 2 "
+                + "times each (linearly spaced samples).";
+        for (String when : List.of("noon", "sunset")) {
+            List<String> sun = when.equals("noon") ? List.of() : List.of("--sunset");
+            list.add(strip("7-wavelengths-" + when, found, "Wavelengths in the default sky at " + when + ", against "
+                    + "32: 3 are far off (red: above ΔE00 2, a just-noticeable difference), 6 and more settle; 4 "
+                    + "passes by where its wavelengths happen to fall (5 does not).", sun, "--wavelengths",
+                    "3,4,6,8,16"));
+            list.add(strip("7-samples-" + when, found, "Samples in each of the paper's sums at " + when + ", against "
+                    + "64: with physical constants 2 are far off; it takes about 16.", sun, "--samples", "1,2,4,16"));
+        }
+
         // Figure 8: the two kinds of scattering (paper 3.1)
         String phases = "The scattering equations are solved for two phase functions, one for Rayleigh scattering "
                 + "(giving the ambient background colors), and one for Mie scattering (giving the red-yellow colors "
@@ -210,6 +230,13 @@ final class FigureCatalogue {
                         + "the eye.",
                 "14:00", LAKE_POSE, "system.particles=on", "particles.count=1000000", "clouds.cover=0.9"));
         return List.copyOf(list);
+    }
+
+    /** A strip of the sky at several samplings: {@code --wavelengths} or {@code --samples}, at noon or sunset. */
+    private static Figure strip(String id, String caption, String note, List<String> sun, String... vary) {
+        List<String> arguments = new ArrayList<>(List.of(vary));
+        arguments.addAll(sun);
+        return new Figure(id, 7, caption, note, Tool.STRIP, arguments);
     }
 
     /** A shot at the catalogue's seed: {@code --seed --time --camera=} and one {@code --set} per setting. */

@@ -20,10 +20,12 @@ import picocli.CommandLine.Option;
 /**
  * {@code openworld figures}: remakes the paper's figures ({@link FigureCatalogue}) headless, and writes an
  * {@code index.html} gallery of them. Each picture is made by parsing its printed command line with the demo's own
- * command line and running that command ({@code shot}, or {@code heightmap} for figure 2) from scratch: a fresh
- * world and GL context per picture, nothing kept between them, so the command the gallery prints makes the same
- * picture on its own. The price is small: making the 2048² world again takes about 0.15 s of the 1.8 s (median) a
- * 960×540 shot takes on llvmpipe with 2 cores once the JIT is warm; the whole set, 45 pictures, about 85 s.
+ * command line and running that command ({@code shot}; {@code heightmap} for figure 2; {@code diagram} and
+ * {@code sky-strip}, on the CPU, for figure 7 and the findings beside it) from scratch: a fresh world and GL context
+ * per picture, nothing kept between them, so the command the gallery prints makes the same picture on its own. The
+ * price is small: making the 2048² world again takes about 0.15 s of the 1.8 s (median) a 960×540 shot takes on
+ * llvmpipe with 2 cores once the JIT is warm; the whole set, 50 pictures, about 95 s, of which figure 7's five, on
+ * the CPU, 9 s.
  */
 @Command(name = "figures", mixinStandardHelpOptions = true,
         description = "Remake the paper's figures headless into a folder, with an index.html gallery that shows each "
@@ -37,7 +39,7 @@ final class FiguresCommand implements Callable<Integer> {
     Path out;
 
     @Option(names = "--only", paramLabel = "N", split = ",",
-            description = "Only figure N of the paper; repeatable or N,M (default: all, 1-6 and 8-14).")
+            description = "Only figure N of the paper; repeatable or N,M (default: all, 1-14).")
     List<Integer> only = new ArrayList<>();
 
     @Option(names = "--size", paramLabel = "WxH", converter = Size.Converter.class, defaultValue = "960x540",
@@ -46,7 +48,7 @@ final class FiguresCommand implements Callable<Integer> {
 
     @Option(names = "--set", paramLabel = "KEY=VALUE",
             description = "A setting added to every picture's command after its own, so it wins; repeatable. "
-                    + "Figure 2's maps take only the engine.* and terrain.* keys.")
+                    + "Figure 2's maps take only the engine.* and terrain.* keys; figure 7's diagram and strips none.")
     List<String> set = new ArrayList<>();
 
     /** One picture's command: as the gallery prints it (output relative to the folder) and parsed to run. */
@@ -69,15 +71,22 @@ final class FiguresCommand implements Callable<Integer> {
         List<Gallery.Plate> plates = new ArrayList<>();
         for (Job job : jobs) {
             long t0 = System.nanoTime();
+            String measured = "";
             switch (job.figure().tool()) {
                 case SHOT -> {
                     ShotCommand.Result shot = ((ShotCommand) job.command()).take();
                     renderer = shot.renderer() + ", " + shot.contextMode();
                 }
                 case HEIGHTMAP -> ((HeightmapCommand) job.command()).call();
+                case STRIP -> {
+                    SkyStripCommand strip = (SkyStripCommand) job.command();
+                    measured = strip.measured(strip.draw());
+                }
+                case DIAGRAM -> ((DiagramCommand) job.command()).call();
             }
             double seconds = (System.nanoTime() - t0) / 1e9;
-            plates.add(new Gallery.Plate(job.figure(), "openworld " + Gallery.shellLine(job.printed()), seconds));
+            plates.add(new Gallery.Plate(job.figure(), "openworld " + Gallery.shellLine(job.printed()), measured,
+                    seconds));
             System.out.printf(Locale.ROOT, "figures: %d/%d %s ... %.1f s%n", plates.size(), jobs.size(),
                     job.figure().id(), seconds);
         }
@@ -96,15 +105,18 @@ final class FiguresCommand implements Callable<Integer> {
         for (int n : only) {
             if (!valid.contains(n)) {
                 throw new UserError("--only " + n + ": the paper has no figure " + n + " to make; choose from "
-                        + valid.stream().map(String::valueOf).collect(Collectors.joining(", "))
-                        + " (figure 7 is a diagram)");
+                        + valid.stream().map(String::valueOf).collect(Collectors.joining(", ")));
             }
         }
         return FigureCatalogue.all().stream().filter(f -> only.isEmpty() || only.contains(f.number())).toList();
     }
 
     private Job job(Figure figure) {
-        List<String> overrides = figure.tool() == Tool.SHOT ? set : heightmapOverrides();
+        List<String> overrides = switch (figure.tool()) {
+            case SHOT -> set;
+            case HEIGHTMAP -> heightmapOverrides();
+            case STRIP, DIAGRAM -> List.of(); // they take no settings: each strip fixes its own
+        };
         List<String> printed = figure.commandLine(figure.output(), size, overrides);
         List<String> run = figure.commandLine(out.resolve(figure.output()).toString(), size, overrides);
         CommandLine.ParseResult parsed = new CommandLine(new Main()).parseArgs(run.toArray(String[]::new));

@@ -35,8 +35,11 @@ final class Gallery {
             double seconds) {
     }
 
-    /** One picture made: its catalogue entry, the command that made it as a shell line, and its wall time. */
-    record Plate(Figure figure, String command, double seconds) {
+    /**
+     * One picture made: its catalogue entry, the command that made it as a shell line, what it measured (a strip's
+     * ΔE; empty for a picture that measures nothing) and its wall time.
+     */
+    record Plate(Figure figure, String command, String measured, double seconds) {
     }
 
     private Gallery() {
@@ -70,6 +73,7 @@ final class Gallery {
                 figure { margin: 0; }
                 figure img { width: 100%; height: auto; border: 1px solid #ddd; display: block; }
                 .id { font-weight: bold; margin-right: .4rem; }
+                .measured { margin: .3rem 0; font-weight: bold; }
                 blockquote { margin: .3rem 0; font-style: italic; color: #444; }
                 .note { margin: .3rem 0; }
                 code { display: block; background: #f4f4f4; padding: .4rem; font-size: .85em; white-space: pre-wrap;
@@ -120,6 +124,8 @@ final class Gallery {
         html.append("<figcaption><span class=\"id\">").append(escape(figure.id())).append("</span>")
                 .append("<blockquote>").append(escape(figure.caption())).append("</blockquote>\n")
                 .append("<p class=\"note\">").append(escape(figure.note())).append("</p>\n")
+                .append(plate.measured().isEmpty() ? ""
+                        : "<p class=\"measured\">Measured: " + escape(plate.measured()) + "</p>\n")
                 .append("<code>").append(escape(plate.command())).append("</code>\n")
                 .append(String.format(Locale.ROOT, "<span class=\"time\">%.1f s</span>", plate.seconds()))
                 .append("</figcaption>\n</figure>\n");

@@ -25,6 +25,7 @@ import picocli.CommandLine.Command;
 @Command(name = "openworld", mixinStandardHelpOptions = true, version = "OpenWorld 0.1",
         description = "Renders large outdoor worlds in real time. Without a command: 'run'.",
         subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, HeightmapCommand.class, FiguresCommand.class,
+            SkyStripCommand.class, DiagramCommand.class,
             DiffCommand.class, SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
 public final class Main {
 

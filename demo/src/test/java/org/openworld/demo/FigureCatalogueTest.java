@@ -27,8 +27,8 @@ class FigureCatalogueTest {
 
     @Test
     void everyPaperFigureWithAPictureIsThereOnceUnderUniqueNames() {
-        List<Integer> expected = IntStream.rangeClosed(1, 14).filter(n -> n != 7).boxed().toList();
-        assertEquals(expected, FigureCatalogue.numbers(), "figure 7 is the paper's only diagram");
+        List<Integer> expected = IntStream.rangeClosed(1, 14).boxed().toList();
+        assertEquals(expected, FigureCatalogue.numbers(), "every figure of the paper, 7 drawn as a diagram");
         List<Figure> all = FigureCatalogue.all();
         assertEquals(all.size(), all.stream().map(Figure::id).distinct().count(), "ids must be unique");
         List<String> files = all.stream().flatMap(f -> f.files().stream()).toList();
@@ -57,10 +57,14 @@ class FigureCatalogueTest {
                     String key = assignment.substring(0, assignment.indexOf('='));
                     assertEquals(alone.text(key), settings.text(key), figure.id() + ": " + assignment);
                 }
-            } else {
+            } else if (figure.tool() == Tool.HEIGHTMAP) {
                 HeightmapCommand maps = (HeightmapCommand) command;
                 assertEquals(FigureCatalogue.SEED, maps.seed, figure.id());
                 assertEquals(figure.output(), maps.out.toString());
+            } else if (figure.tool() == Tool.STRIP) {
+                assertEquals(figure.output(), ((SkyStripCommand) command).out.toString());
+            } else {
+                assertEquals(figure.output(), ((DiagramCommand) command).out.toString());
             }
         }
     }
@@ -117,5 +121,21 @@ class FigureCatalogueTest {
     private static Object parse(List<String> words) {
         return new CommandLine(new Main()).parseArgs(words.toArray(String[]::new)).subcommand().commandSpec()
                 .userObject();
+    }
+
+    @Test
+    void theFindingsStripsAreTheTestedOnesAtNoonAndSunset() {
+        Map<String, Figure> figures = byId();
+        for (String when : List.of("noon", "sunset")) {
+            SkyStripCommand wavelengths = (SkyStripCommand) parse(figures.get("7-wavelengths-" + when)
+                    .commandLine("w.png", SIZE, List.of()));
+            assertEquals(List.of(3, 4, 6, 8, 16), wavelengths.vary.wavelengths);
+            assertEquals(when.equals("sunset"), wavelengths.sunset);
+            SkyStripCommand samples = (SkyStripCommand) parse(figures.get("7-samples-" + when)
+                    .commandLine("s.png", SIZE, List.of()));
+            assertEquals(List.of(1, 2, 4, 16), samples.vary.samples);
+            assertEquals(when.equals("sunset"), samples.sunset);
+        }
+        assertEquals(Tool.DIAGRAM, figures.get("7").tool());
     }
 }

@@ -39,8 +39,12 @@ class GalleryTest {
         Figure maps = new Figure("2", 2, "(a) maps", "Height and snow", Tool.HEIGHTMAP, List.of("--seed", "1"));
         Gallery.Made made = new Gallery.Made("openworld figures --out g", "llvmpipe, headless-egl", "2017-06-01 12:00",
                 new Size(320, 180), 1, List.of("terrain.size=256"), 12);
-        String html = Gallery.html(made, List.of(new Gallery.Plate(maps, "openworld heightmap --out 2 --seed 1", 1),
-                new Gallery.Plate(shot, "openworld shot --out 5a.png --set 'a=<b>'", 2)));
+        Figure strip = new Figure("7-samples-noon", 7, "(findings)", "Samples", Tool.STRIP,
+                List.of("--samples", "1"));
+        String html = Gallery.html(made, List.of(
+                new Gallery.Plate(maps, "openworld heightmap --out 2 --seed 1", "", 1),
+                new Gallery.Plate(shot, "openworld shot --out 5a.png --set 'a=<b>'", "", 2),
+                new Gallery.Plate(strip, "openworld sky-strip --out 7-samples-noon.png --samples 1", "1: 22.42 <", 3)));
 
         assertTrue(html.contains("A caption with &lt;tags&gt; &amp; &quot;quotes&quot;"), html);
         assertFalse(html.contains("<tags>"));
@@ -49,6 +53,8 @@ class GalleryTest {
             assertTrue(html.contains("<img src=\"" + file + "\""), file);
         }
         assertTrue(html.indexOf("id=\"figure-2\"") < html.indexOf("id=\"figure-5\""), "figures in the given order");
+        assertTrue(html.contains("<p class=\"measured\">Measured: 1: 22.42 &lt;</p>"), "a strip's numbers, escaped");
+        assertEquals(2, html.split("class=\"measured\"", -1).length, "only the plate that measured shows numbers");
         assertTrue(html.contains("llvmpipe, headless-egl") && html.contains("320×180") && html.contains("seed 1")
                 && html.contains("terrain.size=256"), "the header says how the set was made");
     }

@@ -15,9 +15,11 @@ import org.openworld.engine.settings.SettingsGroup;
  *                      (molecules, the blue background) or {@code MIE} (aerosols, the glow around the sun).
  *                      Extinction always counts every particle, so only the in-scattering changes
  * @param wavelengths   spectral samples spread over 400–750 nm by the midpoint rule; the paper found at least 6
- *                      are needed for the colours to settle, because scattering does not blend additively in RGB
- * @param outerSamples  SINGLE mode: points of the outer sum along the view ray (equation 4); the paper needs ≥ 2
- * @param innerSamples  SINGLE mode: points of the inner sum toward the sun (equation 3's optical depth); ≥ 2
+ *                      are needed for the colours to settle, because scattering does not blend additively in RGB.
+ *                      Up to 32, the reference {@link SkyPicture}'s findings are measured against
+ * @param outerSamples  SINGLE mode: points of the outer sum along the view ray (equation 4); the paper found 2
+ *                      enough, with physical constants 16 are needed (docs/sky.md); 1 shows why
+ * @param innerSamples  SINGLE mode: points of the inner sum toward the sun (equation 3's optical depth); as outer
  * @param haze          multiplier of the aerosol (Mie) density: 0 clean air, 1 a clear day, 10+ a hazy one
  * @param ozone         multiplier of the 300 Dobson-unit ozone layer; ozone absorbs orange light and keeps the
  *                      twilight zenith blue
@@ -29,10 +31,11 @@ public record AtmosphereSettings(
         Scattering scattering,
         @Setting(doc = "particles that scatter light to the eye: BOTH, RAYLEIGH or MIE (figure 8)")
         Component component,
-        @Setting(doc = "spectral samples over 400-750 nm (the paper needs >= 6)", min = 3, max = 16) int wavelengths,
-        @Setting(doc = "SINGLE mode: samples of the outer sum along the view ray", min = 2, max = 64)
+        @Setting(doc = "spectral samples over 400-750 nm (the paper needs >= 6; 32 the findings' reference)", min = 3,
+                max = 32) int wavelengths,
+        @Setting(doc = "SINGLE mode: samples of the outer sum along the view ray", min = 1, max = 64)
         int outerSamples,
-        @Setting(doc = "SINGLE mode: samples of the inner sum toward the sun", min = 2, max = 64) int innerSamples,
+        @Setting(doc = "SINGLE mode: samples of the inner sum toward the sun", min = 1, max = 64) int innerSamples,
         @Setting(doc = "aerosol (Mie) density multiplier", min = 0, max = 20) double haze,
         @Setting(doc = "ozone amount multiplier (1 = 300 Dobson units)", min = 0, max = 3) double ozone,
         @Setting(doc = "Mie phase function anisotropy g", min = 0, max = 0.99) double mieAnisotropy,
@@ -82,9 +85,9 @@ public record AtmosphereSettings(
         if (scattering == null || component == null) {
             throw new IllegalArgumentException("the scattering model and the component must be given");
         }
-        requireRange("wavelengths", wavelengths, 3, 16);
-        requireRange("outer samples", outerSamples, 2, 64);
-        requireRange("inner samples", innerSamples, 2, 64);
+        requireRange("wavelengths", wavelengths, 3, 32);
+        requireRange("outer samples", outerSamples, 1, 64);
+        requireRange("inner samples", innerSamples, 1, 64);
         requireRange("haze", haze, 0, 20);
         requireRange("ozone", ozone, 0, 3);
         requireRange("Mie anisotropy", mieAnisotropy, 0, 0.99);
@@ -113,5 +116,11 @@ public record AtmosphereSettings(
     public AtmosphereSettings withWavelengths(int count) {
         return new AtmosphereSettings(scattering, component, count, outerSamples, innerSamples, haze, ozone,
                 mieAnisotropy, groundAlbedo);
+    }
+
+    /** A copy with {@code count} samples in each of the single-scattering sums, outer and inner. */
+    public AtmosphereSettings withSamples(int count) {
+        return new AtmosphereSettings(scattering, component, wavelengths, count, count, haze, ozone, mieAnisotropy,
+                groundAlbedo);
     }
 }

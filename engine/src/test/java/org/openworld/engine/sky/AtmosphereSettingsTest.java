@@ -24,9 +24,11 @@ class AtmosphereSettingsTest {
     void outOfRangeValuesAreRejected() {
         AtmosphereSettings d = AtmosphereSettings.DEFAULTS;
         assertThrows(IllegalArgumentException.class, () -> d.withWavelengths(2));
-        assertThrows(IllegalArgumentException.class, () -> d.withWavelengths(17));
+        assertThrows(IllegalArgumentException.class, () -> d.withWavelengths(33));
         assertThrows(IllegalArgumentException.class, () -> new AtmosphereSettings(d.scattering(), d.component(),
                 8, 16, 8, 1, 1, 1.0, 0.3));
-        assertEquals(16, d.withWavelengths(16).wavelengths());
+        assertEquals(32, d.withWavelengths(32).wavelengths());
+        assertEquals(1, d.withSamples(1).outerSamples());
+        assertThrows(IllegalArgumentException.class, () -> d.withSamples(0));
     }
 }
