@@ -51,7 +51,8 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "heightmap", mixinStandardHelpOptions = true,
         description = "Generate (or import) the height map and snow map without OpenGL; write height.png (16-bit), "
-                + "snow.png and spectrum.png, and time each stage.")
+                + "snow.png and spectrum.png, and time each stage. With --overview, picture 64 km of the unbounded "
+                + "world instead.")
 final class HeightmapCommand implements Callable<Integer> {
 
     static final String HEIGHT_PNG = "height.png";

@@ -64,7 +64,7 @@ final class WorldOverview {
         float[] heights = new float[SAMPLES * SAMPLES];
         int strip = SAMPLES / STRIPS;
         for (int s = 0; s < STRIPS; s++) {
-            // a strip is the strip × strip windows across it, each made directly at the level
+            // a strip is STRIPS square windows side by side, each made directly at the level
             for (int w = 0; w < STRIPS; w++) {
                 float[] window = world.level(level, -SAMPLES / 2 + w * strip, -SAMPLES / 2 + s * strip, strip);
                 for (int j = 0; j < strip; j++) {

@@ -21,7 +21,7 @@ import org.openworld.engine.core.HeightField;
  * relief spans its lowest to highest sample, with the range taken as ±3σ (a few per mille of the ground lie beyond).
  *
  * <h2>Never repeating</h2>
- * Band k repeats on its own lattice of side {@code P_k = 512 · d_k/2} (131 km for the 1–2 km band, 256 m for the
+ * Band k repeats on its own lattice of side {@code P_k = 512 · d_k/2} (131 km for the 1–2 km band, 512 m for the
  * 4–8 m band), turned by its own random angle and shifted by its own random offset. The sum repeats only where a
  * displacement T is, for every band at once, within a small fraction ε of that band's shortest wavelength 2 d_k of
  * one of its lattice points. Counting from the coarsest band: a disc of radius R holds π R² / P² of its lattice
@@ -93,6 +93,7 @@ public final class BandedHeights implements HeightField {
 
     /** Height of a level at (x, z), metres: the mean height plus the bands {@code level} and coarser. */
     public double height(int level, double x, double z) {
+        checkLevel(level);
         double h = base;
         for (int k = bands.length - 1; k >= level; k--) {
             h += band(k, x, z);
@@ -102,6 +103,7 @@ public final class BandedHeights implements HeightField {
 
     /** Band k's share of the height at (x, z), metres (0 for a band the cut-offs leave empty). */
     public double band(int k, double x, double z) {
+        checkLevel(k);
         OctaveBand band = bands[k];
         return band == null ? 0 : metresPerUnit * band.value(x, z);
     }
@@ -111,18 +113,17 @@ public final class BandedHeights implements HeightField {
      * ((ix0 + i) · d, (iz0 + j) · d) for d = {@link #spacing(int)}.
      */
     public float[] level(int level, long ix0, long iz0, int n) {
-        checkLevel(level);
         return window(level, ix0, iz0, n, (x, z) -> height(level, x, z));
     }
 
     /** Band k's share of a window of level {@code level}'s samples, as {@link #level}. */
     public float[] band(int k, int level, long ix0, long iz0, int n) {
         checkLevel(k);
-        checkLevel(level);
         return window(level, ix0, iz0, n, (x, z) -> band(k, x, z));
     }
 
     private float[] window(int level, long ix0, long iz0, int n, DoubleBinaryOperator height) {
+        checkLevel(level);
         if (n < 1) {
             throw new IllegalArgumentException("a window needs at least one sample a side, got " + n);
         }

@@ -79,7 +79,7 @@ final class OctaveBand {
         int n = TILE;
         float[] a = new float[n * n];
         SpectralSynthesis.fillSpectrum(a, n, n * d / 2, beta, shortest, longest, phases);
-        double gain = Math.pow(2, k * (beta - 1));
+        double gain = StrictMath.pow(2, k * (beta - 1)); // (E_k / E_0)^(β−1), E_k = 2^k E_0
         double[] spline = new double[n / 2 + 1]; // 1 / sinc⁴(k/n) for k = 0 .. n/2
         for (int i = 0; i <= n / 2; i++) {
             double x = Math.PI * i / n;
