@@ -24,7 +24,7 @@
  * amplitude. Level L is {@code h_L(x, z) = mean + Σ_{k ≥ L} band_k(R_k (x, z) + o_k)}, each band turned (R_k) and
  * shifted (o_k) per seed so that the bands' periods never line up (the whole repeats beyond 10 000 km: the
  * arithmetic is in BandedHeights). Cost: nine 512² FFTs and 9 MiB when the world is made (0.3 s); then 16 samples
- * per band per height, 0.84 s for the 2000² samples of the 64 km overview on two cores. Limits: each band alone
+ * per band per height, 0.75–1.2 s for the 2000² samples of the 64 km overview on two cores. Limits: each band alone
  * repeats on its lattice (131 km for the 1–2 km band, which carries 80 % of the variance at β = 2.2); the relief is
  * scaled by the standard deviation (±3σ), so a few per mille of the ground lie outside it; nothing draws it yet.
  *
