@@ -47,10 +47,12 @@ import picocli.CommandLine.Option;
  * radially averaged power spectrum on log-log axes with its fitted line). With {@code --repeat N} it is also the
  * generation benchmark: the median time of each stage over N runs and the peak heap. {@code --out} is checked before
  * the maps are made ({@link Outputs}), and each picture is written whole or not at all ({@link AtomicFiles#write}).
+ * With {@code --overview} it pictures the unbounded world instead ({@link WorldOverview}).
  */
 @Command(name = "heightmap", mixinStandardHelpOptions = true,
         description = "Generate (or import) the height map and snow map without OpenGL; write height.png (16-bit), "
-                + "snow.png and spectrum.png, and time each stage.")
+                + "snow.png and spectrum.png, and time each stage. With --overview, picture 64 km of the unbounded "
+                + "world instead.")
 final class HeightmapCommand implements Callable<Integer> {
 
     static final String HEIGHT_PNG = "height.png";
@@ -81,6 +83,11 @@ final class HeightmapCommand implements Callable<Integer> {
                     + "(default: ${DEFAULT-VALUE}).", defaultValue = "1")
     int repeat;
 
+    @Option(names = "--overview",
+            description = "Instead of the tile, picture the unbounded world: 64 km x 64 km around the origin, 32 m "
+                    + "between samples; writes height.png (16-bit) and relief.png (shaded relief).")
+    boolean overview;
+
     @Override
     public Integer call() throws IOException {
         Settings settings = newSettings();
@@ -90,6 +97,18 @@ final class HeightmapCommand implements Callable<Integer> {
         int worldSeed = settings.get(EngineSettings.class).seed();
         if (repeat < 1) {
             throw new UserError("--repeat must be at least 1, got " + repeat);
+        }
+        if (overview) {
+            if (terrain.imports()) {
+                throw new UserError("--overview pictures the generated unbounded world; it cannot show "
+                        + "terrain.import-file");
+            }
+            if (repeat != 1) {
+                throw new UserError("--overview makes the overview once; leave out --repeat");
+            }
+            Outputs.png(out.resolve(HEIGHT_PNG), false);
+            Outputs.png(out.resolve(WorldOverview.RELIEF_PNG), false);
+            return WorldOverview.write(terrain, worldSeed, out);
         }
         for (String name : List.of(HEIGHT_PNG, SNOW_PNG, SPECTRUM_PNG)) {
             Outputs.png(out.resolve(name), false);
@@ -139,7 +158,7 @@ final class HeightmapCommand implements Callable<Integer> {
                         -2 * terrain.beta()));
 
         // 3. the pictures
-        writeHeight(base, out.resolve(HEIGHT_PNG));
+        writeHeight(base.size(), base.heights(), out.resolve(HEIGHT_PNG));
         writeSnow(data.snow(), out.resolve(SNOW_PNG));
         BufferedImage spectrumChart = BitmapEncoder.getBufferedImage(chart(spectrum, fit, terrain));
         AtomicFiles.write(out.resolve(SPECTRUM_PNG), file -> ImageIO.write(spectrumChart, "png", file.toFile()));
@@ -174,7 +193,7 @@ final class HeightmapCommand implements Callable<Integer> {
      * Collects garbage, then resets and returns the heap pools, whose peaks then measure one run. The sum of the
      * pools' peaks is an upper bound of the true peak: the pools need not peak at the same moment.
      */
-    private static List<MemoryPoolMXBean> resetHeapPeaks() {
+    static List<MemoryPoolMXBean> resetHeapPeaks() {
         System.gc();
         List<MemoryPoolMXBean> pools = ManagementFactory.getMemoryPoolMXBeans().stream()
                 .filter(p -> p.getType() == MemoryType.HEAP).toList();
@@ -190,18 +209,21 @@ final class HeightmapCommand implements Callable<Integer> {
     }
 
     /**
-     * The heights as a 16-bit grayscale PNG, north (z = 0) at the top, lowest sample 0 and highest 65535.
-     * stb_image_write writes 8 bits per channel only, and 256 levels would terrace the relief, so this one file goes
-     * through {@code javax.imageio}, whose PNG writer takes a {@link BufferedImage#TYPE_USHORT_GRAY} image as 16-bit
-     * gray.
+     * The n × n heights (row-major) as a 16-bit grayscale PNG, north (z = 0) at the top, lowest sample 0 and highest
+     * 65535. stb_image_write writes 8 bits per channel only, and 256 levels would terrace the relief, so this one file
+     * goes through {@code javax.imageio}, whose PNG writer takes a {@link BufferedImage#TYPE_USHORT_GRAY} image as
+     * 16-bit gray.
      */
-    private static void writeHeight(HeightMap map, Path file) throws IOException {
-        int n = map.size();
+    static void writeHeight(int n, float[] h, Path file) throws IOException {
         BufferedImage image = new BufferedImage(n, n, BufferedImage.TYPE_USHORT_GRAY);
         short[] pixels = ((DataBufferUShort) image.getRaster().getDataBuffer()).getData();
-        float[] h = map.heights();
-        double min = map.min();
-        double scale = MAX_16_BIT / Math.max(map.max() - min, Double.MIN_NORMAL);
+        float min = Float.POSITIVE_INFINITY;
+        float max = Float.NEGATIVE_INFINITY;
+        for (float v : h) {
+            min = Math.min(min, v);
+            max = Math.max(max, v);
+        }
+        double scale = MAX_16_BIT / Math.max(max - (double) min, Double.MIN_NORMAL);
         for (int i = 0; i < h.length; i++) {
             pixels[i] = (short) Math.round((h[i] - min) * scale);
         }

@@ -98,4 +98,43 @@ class HeightmapCommandTest {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--out", dir.toString(), "--repeat", "0"));
         assertTrue(console.stderr().contains("--repeat"), console.stderr());
     }
+
+    @Test
+    void overviewWritesTheUnboundedWorldsHeightsAndReliefWithProgress() throws Exception {
+        Path folder = dir.resolve("overview");
+        assertEquals(0, Main.execute("heightmap", "--overview", "--out", folder.toString()), console.stderr());
+        BufferedImage height = ImageIO.read(folder.resolve(HeightmapCommand.HEIGHT_PNG).toFile());
+        assertEquals(WorldOverview.SAMPLES, height.getWidth());
+        assertEquals(WorldOverview.SAMPLES, height.getHeight());
+        assertEquals(16, height.getColorModel().getComponentSize(0), "16 bits per height sample");
+        Image relief = Image.read(folder.resolve(WorldOverview.RELIEF_PNG));
+        assertEquals(WorldOverview.SAMPLES, relief.width());
+        // shaded: along the diagonal the brightness spans far more than a flat tint would
+        double darkest = 255;
+        double brightest = 0;
+        for (int i = 0; i < relief.width(); i += 7) {
+            darkest = Math.min(darkest, relief.luma(i, i));
+            brightest = Math.max(brightest, relief.luma(i, i));
+        }
+        assertTrue(brightest - darkest > 80, "luma along the diagonal: " + darkest + " .. " + brightest);
+        for (String line : new String[] {"pyramid level 4", "64 km across", "( 50 %)", "(100 %)", "peak heap"}) {
+            assertTrue(console.stdout().contains(line), "missing '" + line + "' in\n" + console.stdout());
+        }
+        String slope = console.stdout().replaceAll("(?s).*spectrum slope of the central 1024²: (-?[0-9.]+).*", "$1");
+        assertEquals(-4.4, Double.parseDouble(slope), 0.15, console.stdout());
+    }
+
+    @Test
+    void overviewRefusesWhatItCannotPicture() {
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
+                "--set", "terrain.spacing=3"));
+        assertTrue(console.stderr().contains("--overview") && console.stderr().contains("3.0 m"), console.stderr());
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
+                "--repeat", "2"));
+        assertTrue(console.stderr().contains("--repeat"), console.stderr());
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
+                "--set", "terrain.import-file=" + dir.resolve("map.png")));
+        assertTrue(console.stderr().contains("terrain.import-file"), console.stderr());
+        assertFalse(console.stderr().contains("Exception"), console.stderr());
+    }
 }

@@ -12,7 +12,8 @@ import org.openworld.engine.core.FftThreads;
  * <h2>The spectrum</h2>
  * For the integer frequency (kx, kz) of the tile (kx, kz cycles across it, ω = √(kx² + kz²) / extent) the
  * coefficient is {@code ω^−β · (cos φ, sin φ)} with φ uniform in [0, 2π). Frequencies whose wavelength 1/ω lies
- * outside [{@code minWavelength}, {@code maxWavelength}] get 0, and the mean (ω = 0) is 0 too. The Nyquist row and
+ * outside ({@code minWavelength}, {@code maxWavelength}] get 0, and the mean (ω = 0) is 0 too. The short end is open
+ * so that octave bands ({@link BandedHeights}) cut at the same wavelength share no frequency. The Nyquist row and
  * column (kx or kz = size/2) stay 0 as well: on the grid a wave at the Nyquist frequency can only be a cosine, so its
  * phase cannot be random. The inverse DFT of such a spectrum is periodic, so copies of the tile join without a seam.
  *
@@ -63,7 +64,7 @@ public final class SpectralSynthesis {
     public static HeightMap generate(TerrainSettings s, int seed) {
         int n = s.size();
         float[] a = new float[n * n];
-        fillSpectrum(a, n, s, seed);
+        fillSpectrum(a, n, s.extent(), s.beta(), s.minWavelength(), s.maxWavelength(), seed ^ STREAM);
         inverseTransform(a, n);
         normalise(a, n, s.relief(), s.seaFraction());
         return new HeightMap(n, s.spacing(), a, true);
@@ -74,18 +75,19 @@ public final class SpectralSynthesis {
      * row r holds kz = r (r &lt; n/2) or r − n (r &gt; n/2); within a row, slots 2kx and 2kx + 1 hold the real and
      * imaginary part of (kx, kz) for 0 &lt; kx &lt; n/2. Slot pair 0, 1 holds (kx = 0, kz = r) in rows
      * 0 &lt; r &lt; n/2 (the conjugates at −kz follow from symmetry), and Nyquist or mean terms everywhere else:
-     * those stay 0.
+     * those stay 0. The coefficients are {@code k^−β} for k cycles per tile (multiply by {@code extent^β} for
+     * ω^−β in cycles per metre); {@code stream} seeds the random phases.
      */
-    private static void fillSpectrum(float[] a, int n, TerrainSettings s, int seed) {
-        double extent = s.extent();
+    static void fillSpectrum(float[] a, int n, double extent, double beta, double minWavelength,
+                             double maxWavelength, long stream) {
         // cut-offs as squared integer frequencies: k cycles per tile has wavelength extent / k
-        double kLow = extent / s.maxWavelength();
-        double kHigh = extent / s.minWavelength();
+        double kLow = extent / maxWavelength;
+        double kHigh = extent / minWavelength;
         double k2Low = kLow * kLow;
         double k2High = kHigh * kHigh;
-        double halfBeta = s.beta() / 2;
+        double halfBeta = beta / 2;
 
-        SplittableRandom root = new SplittableRandom(seed ^ STREAM);
+        SplittableRandom root = new SplittableRandom(stream);
         long[] rowSeeds = new long[n];
         for (int r = 0; r < n; r++) {
             rowSeeds[r] = root.nextLong();
@@ -99,7 +101,7 @@ public final class SpectralSynthesis {
             int firstKx = r > 0 && r < n / 2 ? 0 : 1; // slot 0 of the other rows holds Nyquist or mean terms
             for (int kx = firstKx; kx < n / 2; kx++) {
                 long k2 = kx * (long) kx + kz * kz;
-                if (k2 < k2Low || k2 > k2High) {
+                if (k2 < k2Low || k2 >= k2High) {
                     continue;
                 }
                 // (√k2)^−β; exp(log) is specified bit for bit like pow, and five times faster
@@ -120,7 +122,7 @@ public final class SpectralSynthesis {
     }
 
     /** The in-place inverse transform with JTransforms' thread count pinned (see the class comment). */
-    private static void inverseTransform(float[] a, int n) {
+    static void inverseTransform(float[] a, int n) {
         // No 1/n² scaling: the normalisation rescales anyway.
         FftThreads.pinned(() -> new FloatFFT_2D(n, n).realInverse(a, false));
     }

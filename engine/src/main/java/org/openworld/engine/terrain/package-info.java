@@ -14,6 +14,20 @@
  * ({@link org.openworld.engine.terrain.HeightImport}: 16-bit PNG or float32 raw); it is not periodic and clamps.
  * Cost O(n² log n): about 0.2 s for 2048², 0.8 s for 4096² on two cores.
  *
+ * <p><b>The unbounded world: heights made per level (issue 20).</b> {@link
+ * org.openworld.engine.terrain.BandedHeights} makes what the paper's conclusion proposes: each resolution directly,
+ * with no full-resolution map. The spectrum is cut into octave bands, band k holding {@code 1/(4 d_k) ≤ ω < 1/(2 d_k)}
+ * for level k's spacing {@code d_k = 2^k · spacing}; each band ({@link org.openworld.engine.terrain.OctaveBand}) is
+ * a 512² periodic tile of samples d_k/2 apart, synthesised as above with its coefficients times {@code E^(β−1)} (E
+ * the tile's side: the density ω^−2β continues across tiles of different sizes) and divided by {@code sinc⁴}, so that
+ * a cubic B-spline through its samples reproduces the band exactly, its images weakened to at most 1.2 % of the
+ * amplitude. Level L is {@code h_L(x, z) = mean + Σ_{k ≥ L} band_k(R_k (x, z) + o_k)}, each band turned (R_k) and
+ * shifted (o_k) per seed so that the bands' periods never line up (the whole repeats beyond 10 000 km: the
+ * arithmetic is in BandedHeights). Cost: nine 512² FFTs and 9 MiB when the world is made (0.3 s); then 16 samples
+ * per band per height, 0.75–1.2 s for the 2000² samples of the 64 km overview on two cores. Limits: each band alone
+ * repeats on its lattice (131 km for the 1–2 km band, which carries 80 % of the variance at β = 2.2); the relief is
+ * scaled by the standard deviation (±3σ), so a few per mille of the ground lie outside it; nothing draws it yet.
+ *
  * <p><b>Pyramid (2.5).</b> {@link org.openworld.engine.terrain.HeightPyramid#build} low-passes each level with the
  * binomial kernel (1 4 6 4 1)/16 (a Gaussian of σ ≈ 1 sample, response cos⁴(πf)) and keeps every other sample.
  * Without the filter a ridge finer than the new spacing would alias into a false hill at the coarse level; with it,
@@ -76,6 +90,6 @@
  *
  * <p><b>Limits.</b> The whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
  * and again on the GPU); levels switch without geomorphing, so a patch can pop when it changes level; a generated
- * world repeats every tile; the snow map is capped at 2048².
+ * tile repeats (the unbounded world does not, but is not drawn yet); the snow map is capped at 2048².
  */
 package org.openworld.engine.terrain;
