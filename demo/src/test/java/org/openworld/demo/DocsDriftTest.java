@@ -387,7 +387,8 @@ class DocsDriftTest {
         return null;
     }
 
-    private static String checkLink(DocPage page, String target) {
+    /** What is wrong with a link on a page (its file or its section missing), or null; PaperPageTest asks too. */
+    static String checkLink(DocPage page, String target) {
         if (target.matches("[a-z]+:.*")) {
             return null;
         }

@@ -12,7 +12,8 @@
  *   <li>{@code SINGLE}: the paper's equations 3 and 4 as written, nested sums: an outer sum of points along the
  *       view ray, and at each an inner sum towards the sun for its optical depth; only light scattered once.
  *       Cost per direction: outer × inner × wavelengths. Its limit is the paper's own: with the sun below the
- *       horizon the lit air is far away and dawn and dusk go dark (figure 9 a and f).</li>
+ *       horizon the lit air is far away and dawn and dusk go darker and greyer (figure 9 a and f), though with
+ *       Earth's constants not black: at −4° the zenith is 1.7 times darker than with multiple scattering.</li>
  *   <li>{@code MULTIPLE} (default): Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere Rendering
  *       Technique": a transmittance table (altitude × sun angle) replaces the inner sum, and a multiple-scattering
  *       table adds every higher order as an isotropic source {@code Ψ_ms = L₂ / (1 − f_ms)} (the second order
