@@ -21,6 +21,10 @@ import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.Sun;
@@ -304,5 +308,60 @@ class ShadowRenderTest {
                 assertEquals(off.luma(x, y), night.luma(x, y), 1e-9, "no map, no shadow: (" + x + ", " + y + ")");
             }
         }
+    }
+
+    /** Records what each MAIN pass was told. */
+    static final class Probe implements EngineSystem {
+        final List<Boolean> told = new ArrayList<>();
+
+        @Override
+        public SystemSpec spec() {
+            return SystemSpec.named("probe").draws(Pass.MAIN);
+        }
+
+        @Override
+        public void render(Pass pass, RenderContext context) {
+            told.add(context.sunShadowed());
+        }
+    }
+
+    /**
+     * The passes tell their systems whether the sun's shadow maps are bound ({@link RenderContext#sunShadowed}), and
+     * the terrain picks its programs by it (with the lookup, or compiled without it): while the shadow system runs,
+     * MAIN is shadowed and the wall's shadow shows; switched off, MAIN is not, and the ground behind the wall is lit.
+     * A terrain that took the unshadowed programs while the maps are bound would lose the shadow; one that took the
+     * shadowed programs without them would draw the same picture, only dearer (bench measures that).
+     */
+    @Test
+    void mainIsShadowedExactlyWhileTheShadowSystemRuns() {
+        Probe probe = new Probe();
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H,
+                settings(), new CullingSystem(), new TerrainSystem(), new ShadowSystem(), probe)) {
+            engine.world().setResource(EAST_SUN);
+            engine.world().resource(Camera.class).setPose(ABOVE);
+            Image shadowed = frame(engine);
+            assertEquals(List.of(true), probe.told, "MAIN with the shadow system running");
+
+            engine.setEnabled("shadow", false);
+            Image lit = frame(engine);
+            assertEquals(List.of(true, false), probe.told, "MAIN with the shadow system switched off");
+
+            int darker = 0;
+            for (int y = 0; y < H; y++) {
+                for (int x = 0; x < W; x++) {
+                    if (lit.channel(x, y, 1) - shadowed.channel(x, y, 1) > 20) {
+                        darker++;
+                    }
+                }
+            }
+            assertTrue(darker > W * H / 20,
+                    "pixels the wall's shadow darkens while the maps are bound: " + darker);
+        }
+    }
+
+    private static Image frame(Engine engine) {
+        engine.update();
+        engine.render();
+        return engine.readImage();
     }
 }
