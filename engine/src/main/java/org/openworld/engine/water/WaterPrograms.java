@@ -1,5 +1,6 @@
 package org.openworld.engine.water;
 
+import java.util.List;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
@@ -7,8 +8,10 @@ import org.openworld.engine.gl.Uniform;
 /**
  * The water's three programs over one vertex shader (water.vert) and their uniforms: the Fresnel method above the
  * water (fresnel.frag) and under it (underwater.frag), two programs rather than one with a branch, since a software
- * rasteriser runs both sides of a branch; and the paper's stencil method (stencil.frag). Each {@code use} binds one
- * and sets its uniforms; the caller binds the textures to the units below and draws.
+ * rasteriser runs both sides of a branch; and the paper's stencil method (stencil.frag). The two Fresnel programs
+ * come twice, with the sun's shadow lookup and compiled without it ({@code SUN_UNSHADOWED}) for passes where no shadow
+ * map is bound: a software rasteriser runs the lookup's loop once even for no cascade (docs/shadows.md). Each
+ * {@code use} binds one and sets its uniforms; the caller binds the textures to the units below and draws.
  */
 final class WaterPrograms {
 
@@ -22,15 +25,11 @@ final class WaterPrograms {
     record Ripple(float inverseTile, int frames, float cycles, float slopeScale) {
     }
 
-    private final ShaderProgram above;
-    private final ShaderProgram below;
+    private final Above above;
+    private final Above aboveUnshadowed;
+    private final Below below;
+    private final Below belowUnshadowed;
     private final ShaderProgram stencil;
-    private final Optics aboveOptics;
-    private final Optics belowOptics;
-    private final Uniform.Int reflected;
-    private final Uniform.Vec3 body;
-    private final Uniform.Float microSlope2;
-    private final Uniform.Vec3 inside;
     private final Plane stencilPlane;
     private final Uniform.Int stencilStep;
     private final Uniform.Float stencilAlpha;
@@ -74,16 +73,33 @@ final class WaterPrograms {
         }
     }
 
+    /** The water seen from above (fresnel.frag) and its uniforms, for one kind of sunlight. */
+    private record Above(ShaderProgram program, Optics optics, Uniform.Int reflected, Uniform.Vec3 body,
+                         Uniform.Float microSlope2) {
+
+        static Above of(EngineContext context, String role, List<String> light) {
+            ShaderProgram p = context.own(role, context.shaders().program(light, "water/water.vert",
+                    "water/fresnel.frag"));
+            p.sampler("reflection", UNIT_REFLECTION);
+            return new Above(p, Optics.of(p), p.int1("uReflected"), p.vec3("uBody"), p.float1("uMicroSlope2"));
+        }
+    }
+
+    /** The water seen from below (underwater.frag) and its uniforms, for one kind of sunlight. */
+    private record Below(ShaderProgram program, Optics optics, Uniform.Vec3 inside) {
+
+        static Below of(EngineContext context, String role, List<String> light) {
+            ShaderProgram p = context.own(role, context.shaders().program(light, "water/water.vert",
+                    "water/underwater.frag"));
+            return new Below(p, Optics.of(p), p.vec3("uInside"));
+        }
+    }
+
     WaterPrograms(EngineContext context) {
-        above = context.own("fresnel", context.shaders().program("water/water.vert", "water/fresnel.frag"));
-        above.sampler("reflection", UNIT_REFLECTION);
-        aboveOptics = Optics.of(above);
-        reflected = above.int1("uReflected");
-        body = above.vec3("uBody");
-        microSlope2 = above.float1("uMicroSlope2");
-        below = context.own("underwater", context.shaders().program("water/water.vert", "water/underwater.frag"));
-        belowOptics = Optics.of(below);
-        inside = below.vec3("uInside");
+        above = Above.of(context, "fresnel", List.of());
+        aboveUnshadowed = Above.of(context, "fresnel.unshadowed", List.of("SUN_UNSHADOWED"));
+        below = Below.of(context, "underwater", List.of());
+        belowUnshadowed = Below.of(context, "underwater.unshadowed", List.of("SUN_UNSHADOWED"));
         stencil = context.own("stencil", context.shaders().program("water/water.vert", "water/stencil.frag"));
         stencil.sampler("reflection", UNIT_REFLECTION);
         stencilPlane = Plane.of(stencil);
@@ -96,21 +112,24 @@ final class WaterPrograms {
      *
      * @param hasReflection whether the reflection pass ran for this camera this frame
      * @param glitterSlope2 mean square slope of the ripples finer than the texture
+     * @param sunShadowed   the pass has the sun's shadow maps bound (RenderContext#sunShadowed)
      */
     void useAbove(PlaneOnScreen plane, float level, WaterOptics optics, Ripple ripple, boolean hasReflection,
-                  float glitterSlope2) {
-        above.use();
-        aboveOptics.set(plane, level, optics, ripple);
-        reflected.set(hasReflection ? 1 : 0);
-        body.set(optics.body());
-        microSlope2.set(glitterSlope2);
+                  float glitterSlope2, boolean sunShadowed) {
+        Above a = sunShadowed ? above : aboveUnshadowed;
+        a.program().use();
+        a.optics().set(plane, level, optics, ripple);
+        a.reflected().set(hasReflection ? 1 : 0);
+        a.body().set(optics.body());
+        a.microSlope2().set(glitterSlope2);
     }
 
     /** The water seen from below, a full-screen triangle that writes its own depth. */
-    void useBelow(float level, WaterOptics optics, Ripple ripple) {
-        below.use();
-        belowOptics.set(null, level, optics, ripple);
-        inside.set(optics.inside());
+    void useBelow(float level, WaterOptics optics, Ripple ripple, boolean sunShadowed) {
+        Below b = sunShadowed ? below : belowUnshadowed;
+        b.program().use();
+        b.optics().set(null, level, optics, ripple);
+        b.inside().set(optics.inside());
     }
 
     /**

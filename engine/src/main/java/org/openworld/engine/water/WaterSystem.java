@@ -255,7 +255,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         glDepthMask(true);
         if (underwater) {
             // every pixel is under water: the shader writes the surface's depth, or the scene's where that is nearer
-            programs.useBelow((float) s.level(), optics, ripple);
+            programs.useBelow((float) s.level(), optics, ripple, context.sunShadowed());
             glDepthFunc(GL_ALWAYS);
             fullScreen.draw(context.stats());
             glDepthFunc(GL_LESS);
@@ -266,7 +266,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         }
         double slopeVariance = s.rmsSlope() * s.rmsSlope();
         programs.useAbove(onScreen(context.camera(), s), (float) s.level(), optics, ripple, reflected,
-                (float) (slopeVariance * (1 - RESOLVED_VARIANCE)));
+                (float) (slopeVariance * (1 - RESOLVED_VARIANCE)), context.sunShadowed());
         drawPlane(context);
     }
 
