@@ -1,0 +1,86 @@
+package org.openworld.engine.colour;
+
+import org.jtransforms.fft.DoubleFFT_2D;
+import org.openworld.engine.core.FftThreads;
+import org.openworld.engine.gl.Image;
+
+/**
+ * How much a picture repeats itself, as one number: the strongest peak of the normalised autocorrelation of its
+ * luminance away from zero shift (the paper's named flaw, section 6: 1 m detail textures that tile visibly).
+ *
+ * <p>For the luminance L with its mean taken out, the autocorrelation at a shift T = (tx, ty) is
+ * <pre>
+ *   r(T) = [ Σ L(p) L(p + T) / n(T) ] / [ Σ L(p)² / n(0) ]
+ * </pre>
+ * over the n(T) pixels p where both p and p + T lie in the picture: 1 at T = 0, near 1 again where the picture
+ * matches a shifted copy of itself (a texture repeating every T), near 0 for a picture that does not repeat. The
+ * sums come from the power spectrum (Wiener–Khinchin: the autocorrelation is the inverse transform of |F(L)|²), with
+ * the picture padded to twice its size in zeros so a shift does not wrap around; dividing by n(T) makes a long
+ * shift, which overlaps less of the picture, count like a short one. Shifts beyond half the picture are left out
+ * (too few pixels overlap to judge), and so are those shorter than {@code minShift} pixels, where a picture
+ * correlates with itself merely because neighbouring pixels are alike (the width of a texture's own features).
+ * The whole picture's variance stands in for that of the part a shift overlaps, so an exact repeat may read a
+ * little over 1 (by 0.2 % for a 20-pixel tile in a 160 × 96 picture).
+ *
+ * <p>Cost: two FFTs of 4 × width × height complex values; about 50 ms for 320 × 180 on one core.
+ */
+public final class Repetition {
+
+    private Repetition() {
+    }
+
+    /**
+     * The largest r(T) over shifts with |T| ≥ {@code minShift} and |tx| ≤ width / 2, |ty| ≤ height / 2.
+     *
+     * @param minShift pixels; a shift shorter than this is not counted as a repeat
+     * @return the peak: about 1 for an exact repeat, near 0 for none; 0 for a picture of one colour, which has nothing
+     *         to repeat
+     */
+    public static double peak(Image image, int minShift) {
+        int w = image.width();
+        int h = image.height();
+        double[] luma = new double[w * h];
+        double mean = 0;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                luma[y * w + x] = image.luma(x, y);
+                mean += luma[y * w + x];
+            }
+        }
+        mean /= w * h;
+        int pw = 2 * w;
+        int ph = 2 * h;
+        double[] a = new double[2 * pw * ph]; // complex, row-major, zero padding
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                a[2 * (y * pw + x)] = luma[y * w + x] - mean;
+            }
+        }
+        DoubleFFT_2D fft = new DoubleFFT_2D(ph, pw);
+        FftThreads.pinned(() -> fft.complexForward(a));
+        for (int i = 0; i < pw * ph; i++) {
+            double re = a[2 * i];
+            double im = a[2 * i + 1];
+            a[2 * i] = re * re + im * im;
+            a[2 * i + 1] = 0;
+        }
+        FftThreads.pinned(() -> fft.complexInverse(a, true));
+        double zero = a[0] / (w * h);
+        if (zero <= 0) {
+            return 0;
+        }
+        double peak = Double.NEGATIVE_INFINITY;
+        long min2 = (long) minShift * minShift;
+        for (int ty = -h / 2; ty <= h / 2; ty++) {
+            for (int tx = -w / 2; tx <= w / 2; tx++) {
+                if ((long) tx * tx + (long) ty * ty < min2) {
+                    continue;
+                }
+                int overlap = (w - Math.abs(tx)) * (h - Math.abs(ty));
+                int index = Math.floorMod(ty, ph) * pw + Math.floorMod(tx, pw);
+                peak = Math.max(peak, a[2 * index] / overlap / zero);
+            }
+        }
+        return peak;
+    }
+}
