@@ -71,18 +71,17 @@ public final class SkyIrradiance {
      * irradiance is then exactly πL(1 − n_y)/2: nothing on a surface facing up, πL on one facing down.
      */
     public SkyIrradiance addLowerHemisphere(Vector3dc l) {
-        double[] weights = {2 * Math.PI * NORM[0], -Math.PI * NORM[1]};
-        for (int i = 0; i < weights.length; i++) {
-            radiance[3 * i] += l.x() * weights[i];
-            radiance[3 * i + 1] += l.y() * weights[i];
-            radiance[3 * i + 2] += l.z() * weights[i];
-        }
-        return this;
+        return addHemisphere(l, -1);
     }
 
     /** The same with uniform radiance above the horizon (πL(1 + n_y)/2): Y_10 integrates to +π·0.488603 there. */
     public SkyIrradiance addUpperHemisphere(Vector3dc l) {
-        double[] weights = {2 * Math.PI * NORM[0], Math.PI * NORM[1]};
+        return addHemisphere(l, 1);
+    }
+
+    /** Uniform radiance l over the half sphere on the side {@code side} (+1 up, −1 down) of the horizon. */
+    private SkyIrradiance addHemisphere(Vector3dc l, int side) {
+        double[] weights = {2 * Math.PI * NORM[0], side * Math.PI * NORM[1]};
         for (int i = 0; i < weights.length; i++) {
             radiance[3 * i] += l.x() * weights[i];
             radiance[3 * i + 1] += l.y() * weights[i];

@@ -184,7 +184,6 @@ class LightInShadowTest {
         String numbers = "shadow / sunlit over " + count + " pixels: measured " + measured + ", predicted "
                 + predicted + " (scene luminance); darkest pixel " + darkest + " of its prediction, "
                 + darkestLuma + " of the sunlit pixel's display luma";
-        System.out.println(numbers);
         assertEquals(predicted, measured, 0.2 * predicted, numbers);
         assertTrue(darkest > 0.8, "no dark holes: " + numbers);
     }
