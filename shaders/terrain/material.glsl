@@ -16,8 +16,9 @@
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
-//   5. light: Lambert sun, the sky's and the ground's irradiance for the normal (frame.glsl), normalised Blinn-Phong highlight and a Fresnel-weighted reflection of
-//      the environment map (the sky system's), both scaled by the gloss map
+//   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance),
+//      normalised Blinn-Phong highlight and a Fresnel-weighted reflection of the environment map (the sky
+//      system's), both scaled by the gloss map
 #include "common/frame.glsl"
 #include "common/environment.glsl"
 #include "common/shadow.glsl"

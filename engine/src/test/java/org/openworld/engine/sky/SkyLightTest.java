@@ -60,8 +60,9 @@ class SkyLightTest {
 
     /**
      * The harmonics of the sky: facing up, the ambient light (the same table, another quadrature); facing the sun,
-     * brighter than facing away (the sky is brightest around the sun), whichever way the sun stands; facing down, the ground's bounce light (albedo × the
-     * light on level ground), the sky's own share there being only the harmonics' ringing.
+     * brighter than facing away (the sky is brightest around the sun), whichever way the sun stands; facing down,
+     * the ground's bounce light (albedo × the light on level ground), the sky's own share there being only the
+     * harmonics' ringing.
      */
     @Test
     void theSkysIrradianceIsTheAmbientUpwardsFollowsTheSunAndAddsTheGroundBelow() {
