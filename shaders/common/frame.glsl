@@ -1,5 +1,5 @@
-// The per-pass frame block (engine: org.openworld.engine.gl.FrameUniforms). Every member is a vec4 or mat4, so
-// the std140 layout is simply their order. Conventions: shaders/common/conventions.glsl.
+// The per-pass frame block (engine: org.openworld.engine.gl.FrameUniforms). Every member is a vec4, a mat4 or an
+// array of vec4s, so the std140 layout is simply their order. Conventions: shaders/common/conventions.glsl.
 //
 // Two eyes, not to be mixed up:
 //   cameraPos()  the PASS camera's eye: the viewer's in MAIN and OVERLAY, the mirrored eye under the water in
@@ -24,11 +24,23 @@ layout(std140) uniform FrameBlock {
     vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
     vec4 viewerPos;       // xyz: the viewer's eye, world space (m), the same in every pass; w: 0
+    vec4 sky[9];          // rgb: the sky's and the ground's irradiance as factors of order-2 spherical harmonics
+                          // (engine: environment.SkyIrradiance), read by skyIrradiance
 } frame;
 
 vec3 cameraPos() { return frame.cameraPosNear.xyz; }
 vec3 viewerPos() { return frame.viewerPos.xyz; }
 vec3 sunDir() { return frame.sunDirFar.xyz; }
+
+// The light of the sky and of the sunlit ground around on a surface of unit normal n, display units: the irradiance
+// convolution of Ramamoorthi and Hanrahan (2001) with its factors folded in on the CPU, so 9 multiply-adds and no
+// texture read. Facing up it is ambientColor within a few per cent; facing down, the ground's bounce light.
+vec3 skyIrradiance(vec3 n) {
+    return frame.sky[0].rgb + frame.sky[1].rgb * n.y + frame.sky[2].rgb * n.z + frame.sky[3].rgb * n.x
+        + frame.sky[4].rgb * (n.x * n.y) + frame.sky[5].rgb * (n.y * n.z)
+        + frame.sky[6].rgb * (3.0 * n.y * n.y - 1.0) + frame.sky[7].rgb * (n.x * n.z)
+        + frame.sky[8].rgb * (n.x * n.x - n.z * n.z);
+}
 
 // The world-space direction of the view ray through a point of the screen (ndc.xy in -1..1), unnormalised. Built
 // from the view's rotation and the projection's x and y scales, not by unprojecting a depth: that stays right for a

@@ -16,8 +16,9 @@
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
-//   5. light: Lambert sun and hemisphere sky, normalised Blinn-Phong highlight and a Fresnel-weighted reflection of
-//      the environment map (the sky system's), both scaled by the gloss map
+//   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance),
+//      normalised Blinn-Phong highlight and a Fresnel-weighted reflection of the environment map (the sky
+//      system's), both scaled by the gloss map
 #include "common/frame.glsl"
 #include "common/environment.glsl"
 #include "common/shadow.glsl"
@@ -225,7 +226,7 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
     float sunFacing = smoothstep(-0.05, 0.1, dot(n0, l)); // bumps cannot be lit from behind the terrain itself
     sunFacing *= sunVisibility(s.wsPos, n0);
     float nl = max(dot(n, l), 0.0) * sunFacing;
-    vec3 sky = frame.ambientColor.rgb * (0.6 + 0.4 * n.y);
+    vec3 sky = skyIrradiance(n); // the sky, and the sunlit ground around: the light in the shadows
     vec3 color = m.albedo * (frame.sunColor.rgb * nl + sky);
     if (uMatGlossMap == 1) {
         float gloss = m.gloss;

@@ -71,7 +71,7 @@ final class SharedBindings {
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
                 exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
-                view.target().height(), viewer.camera().position());
+                view.target().height(), viewer.camera().position(), sun.sky().shaderFactors());
     }
 
     /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */

@@ -1,7 +1,9 @@
 /**
  * The light every lit shader shares, as world resources written by the systems that model it and bound by the
  * engine before each pass: {@link org.openworld.engine.environment.TimeOfDay} (the clock),
- * {@link org.openworld.engine.environment.Sun} (direction, direct and ambient light),
+ * {@link org.openworld.engine.environment.Sun} (direction, direct and ambient light, and the light of the sky and of
+ * the sunlit ground on any normal as nine spherical-harmonic factors,
+ * {@link org.openworld.engine.environment.SkyIrradiance}: {@code shaders/common/frame.glsl}'s skyIrradiance),
  * {@link org.openworld.engine.environment.Exposure} (scene light to the tone mapper),
  * {@link org.openworld.engine.environment.SkyMaps} (the sky around the scene and the air between the eye and a point:
  * {@code shaders/common/environment.glsl}, {@code fog.glsl}) and

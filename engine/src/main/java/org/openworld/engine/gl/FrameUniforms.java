@@ -23,19 +23,24 @@ public final class FrameUniforms implements Labelled {
 
     private static final int MAT4 = 64;
     private static final int VEC4 = 16;
-    /** 4 matrices and 8 vectors, bytes. */
-    static final int SIZE = 4 * MAT4 + 8 * VEC4;
+    /** The sky's irradiance factors (spherical harmonics of order 2), one RGB vector each. */
+    public static final int SKY_FACTORS = 9;
+    /** 4 matrices, 8 vectors and the sky's factors, bytes. */
+    static final int SIZE = 4 * MAT4 + 8 * VEC4 + SKY_FACTORS * VEC4;
 
     /**
      * Everything the block holds, gathered by the engine for one pass.
      *
      * @param cameraPos the pass camera's eye (the sun's camera in SHADOW, the mirrored eye in REFLECTION)
      * @param viewerPos the viewer's eye, the MAIN camera's, whatever the pass
+     * @param sky       the {@value #SKY_FACTORS} factors of the sky's irradiance for any normal (frame.glsl's
+     *                  skyIrradiance; environment.SkyIrradiance#shaderFactors)
      */
     public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
                          Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure,
                          double simTime, double timeOfDayHours, long frame,
-                         int width, int height, Vector3fc viewerPos) {
+                         int width, int height, Vector3fc viewerPos,
+                         Vector3fc[] sky) {
     }
 
     private final GpuBuffer buffer;
@@ -63,7 +68,10 @@ public final class FrameUniforms implements Labelled {
         o = vec4(o, v.exposure(), 0, 0, 0);
         o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
         o = vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
-        vec4(o, v.viewerPos().x(), v.viewerPos().y(), v.viewerPos().z(), 0);
+        o = vec4(o, v.viewerPos().x(), v.viewerPos().y(), v.viewerPos().z(), 0);
+        for (Vector3fc c : v.sky()) {
+            o = vec4(o, c.x(), c.y(), c.z(), 0);
+        }
         buffer.update(data);
         buffer.bindBase(SharedBlock.FRAME.binding());
     }

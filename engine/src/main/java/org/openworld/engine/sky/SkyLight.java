@@ -1,6 +1,8 @@
 package org.openworld.engine.sky;
 
 import org.joml.Vector3d;
+import org.joml.Vector3fc;
+import org.openworld.engine.environment.SkyIrradiance;
 
 /**
  * The light the sky puts on the scene for one sun position, in display units (E / E_sun, linear sRGB): the direct
@@ -12,6 +14,9 @@ import org.joml.Vector3d;
  * <li>{@link #ambient()}: E = ∫_{upper hemisphere} L cosθ dω from the {@link SkyView} table, which stores P = π·L, so
  *     E = 2 ∫₀^π dφ ∫₀^{π/2} (P/π) sin e cos e de (the sky is symmetric about the sun's plane), by the midpoint rule
  *     on {@value #AMBIENT_AZIMUTHS} × {@value #AMBIENT_ELEVATIONS} directions. A uniform sky P = 1 gives E = 1.</li>
+ * <li>{@link #irradiance}: the same sky for any normal, as spherical harmonics in the world's axes (the table turned
+ *     to the sun's azimuth), with the ground around as a uniform lower hemisphere of radiance
+ *     albedo · (sun on level ground + ambient) / π: one bounce of the light that reaches the ground.</li>
  * </ul>
  */
 public final class SkyLight {
@@ -22,6 +27,11 @@ public final class SkyLight {
     private static final int AMBIENT_AZIMUTHS = 32;
     /** Midpoint-rule directions over the elevation 0..π/2: sin e cos e is smooth, 16 are within 0.2 %. */
     private static final int AMBIENT_ELEVATIONS = 16;
+
+    /** Midpoint-rule directions over the azimuth 0..π (each used on both sides of the sun) for the harmonics. */
+    private static final int IRRADIANCE_AZIMUTHS = 48;
+    /** Midpoint-rule directions over the elevation 0..π/2 for the harmonics. */
+    private static final int IRRADIANCE_ELEVATIONS = 24;
 
     private final Vector3d sun;
     private final Vector3d ambient;
@@ -44,6 +54,41 @@ public final class SkyLight {
     /** Sky irradiance on an upward-facing surface, E / E_sun as linear sRGB (a copy). */
     public Vector3d ambient() {
         return new Vector3d(ambient);
+    }
+
+    /**
+     * The sky of {@code view} around a sun towards {@code toSun} (world space) and the ground lit by {@code light},
+     * of reflectance {@code groundAlbedo}, as {@link SkyIrradiance}: the upper hemisphere by the midpoint rule on
+     * {@value #IRRADIANCE_AZIMUTHS} × {@value #IRRADIANCE_ELEVATIONS} directions (each azimuth from the sun's plane
+     * counted on both sides of it), the ground in closed form. A few thousand table reads: run when the sun moved.
+     */
+    public static SkyIrradiance irradiance(SkyView view, SkyLight light, Vector3fc toSun, double groundAlbedo) {
+        Vector3d toward = new Vector3d(toSun.x(), 0, toSun.z());
+        if (toward.lengthSquared() < 1e-12) {
+            toward.set(1, 0, 0); // the sun overhead: the sky is the same all round, any azimuth will do
+        }
+        toward.normalize();
+        Vector3d side = new Vector3d(-toward.z, 0, toward.x);
+        SkyIrradiance sky = new SkyIrradiance();
+        Vector3d p = new Vector3d();
+        Vector3d d = new Vector3d();
+        double dPhi = Math.PI / IRRADIANCE_AZIMUTHS;
+        double dE = Math.PI / 2 / IRRADIANCE_ELEVATIONS;
+        for (int j = 0; j < IRRADIANCE_ELEVATIONS; j++) {
+            double e = (j + 0.5) * dE;
+            double dOmega = Math.cos(e) * dE * dPhi;
+            for (int i = 0; i < IRRADIANCE_AZIMUTHS; i++) {
+                double phi = (i + 0.5) * dPhi;
+                view.sample(phi, e, p).div(Math.PI); // the table holds π·L
+                for (int sign = -1; sign <= 1; sign += 2) {
+                    d.set(toward).mul(Math.cos(phi)).fma(sign * Math.sin(phi), side).mul(Math.cos(e));
+                    d.y = Math.sin(e);
+                    sky.add(d, p, dOmega);
+                }
+            }
+        }
+        Vector3d ground = light.sun().mul(Math.max(toSun.y(), 0)).add(light.ambient()).mul(groundAlbedo / Math.PI);
+        return sky.addLowerHemisphere(ground);
     }
 
     private static Vector3d sunlight(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {

@@ -21,6 +21,7 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.Exposure;
+import org.openworld.engine.environment.SkyIrradiance;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
@@ -106,6 +107,11 @@ public final class SkySystem implements EngineSystem {
     private final Vector3f panoramaSun = new Vector3f();
     private CloudSettings panoramaClouds;
     private double panoramaAlbedo = Double.NaN;
+    /** The sky's light for any normal, and the tables, ground albedo and sun it was projected for. */
+    private SkyIrradiance irradiance;
+    private SunTables irradianceTables;
+    private double irradianceAlbedo = Double.NaN;
+    private final Vector3f irradianceSun = new Vector3f();
     /** The panorama's draws, made in the update, outside any frame's counts. */
     private final DrawStats updateDraws = new DrawStats();
 
@@ -199,7 +205,15 @@ public final class SkySystem implements EngineSystem {
         }
         stepped |= step > 0;
         SkyLight light = tables.light();
-        world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient())));
+        double albedo = atmosphere.groundAlbedo();
+        if (irradianceTables != tables || irradianceAlbedo != albedo
+                || toSun.angle(irradianceSun) >= PANORAMA_SUN_STEP) {
+            irradiance = SkyLight.irradiance(tables.view(), light, toSun, albedo);
+            irradianceTables = tables;
+            irradianceAlbedo = albedo;
+            irradianceSun.set(toSun);
+        }
+        world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient()), irradiance));
         world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
         world.setResource(new Wind(settings.get(CloudSettings.class).windVelocity(new Vector3f())));
         refresh(settings, world.resource(Sun.class), counters);

@@ -35,8 +35,12 @@
  * 108 directions, denser at the horizon: the paper's per-vertex dome evaluation), the aerial perspective for the
  * terrain ({@link org.openworld.engine.sky.AerialPerspective}, 32 × 32 directions × 32 distances up to 64 km) and
  * the light ({@link org.openworld.engine.sky.SkyLight}: the sun's colour at the eye from the transmittance, the
- * sky's irradiance on the ground). The GPU only looks them up. Units throughout are display units, 1 = a white
- * surface facing the sun above the atmosphere; an automatic exposure adapts to the light of the moment.
+ * sky's irradiance on the ground, and on any normal as order-2 spherical harmonics projected from the sky-view table
+ * turned to the sun's azimuth, with the sunlit ground below as one bounce: albedo · (sun + sky on level ground) / π
+ * of radiance from the lower hemisphere, whose irradiance is exactly that times π(1 − n_y)/2; re-projected when the
+ * tables change or the sun moves 0.1°, about 4600 table reads). The GPU only looks them up. Units throughout are
+ * display units, 1 = a white surface facing the sun above the atmosphere; an automatic exposure adapts to the light
+ * of the moment.
  *
  * <p><b>Clouds</b> (paper 2.3). {@link org.openworld.engine.sky.CloudField}: random phases with amplitude 1/f over
  * two axes of space and one of time, one inverse 3D DFT: a density that tiles in space and loops in time. Mapped

@@ -38,6 +38,38 @@ public final class WallWorld {
         return Files.write(dir.resolve("wall.raw"), bytes.array());
     }
 
+    /**
+     * The same wall on ground that rises westwards at {@code slopeDeg} (facing east, towards a morning sun): the
+     * ground at {@link #slopedGround}, the wall 100 m above it. Import with {@link #slopedTerrain}.
+     */
+    public static Path writeSloped(Path dir, double slopeDeg) throws IOException {
+        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
+        for (int z = 0; z < SAMPLES; z++) {
+            for (int x = 0; x < SAMPLES; x++) {
+                double height = slopedGround(slopeDeg, 2.0 * (x - SAMPLES / 2)) + (x >= 120 && x < 128 ? 100 : 0);
+                bytes.putFloat((float) height);
+            }
+        }
+        return Files.write(dir.resolve("sloped-wall.raw"), bytes.array());
+    }
+
+    /** Height of the sloped ground at x (metres east of the centre): {@link #GROUND} at x = 0. */
+    public static double slopedGround(double slopeDeg, double x) {
+        return GROUND - Math.tan(Math.toRadians(slopeDeg)) * x;
+    }
+
+    /**
+     * The terrain settings that import {@link #writeSloped}'s map at its heights: the import normalises the samples
+     * to 0..1, so the relief is the ground's rise from the east edge (x = 254 m) to the west (x = −256 m), the
+     * wall's top being lower, and the sea fraction puts 0 m where it was.
+     */
+    public static List<String> slopedTerrain(Path wall, double slopeDeg) {
+        double low = slopedGround(slopeDeg, 2.0 * (SAMPLES - 1 - SAMPLES / 2));
+        double relief = slopedGround(slopeDeg, -2.0 * (SAMPLES / 2)) - low;
+        return List.of("terrain.import-file=" + wall, "terrain.spacing=2", "terrain.relief=" + relief,
+                "terrain.sea-fraction=" + (-low / relief));
+    }
+
     /** The terrain settings that import it: 2 m apart, 0 → −20 m and 1 → 80 m. */
     public static List<String> terrain(Path wall) {
         return List.of("terrain.import-file=" + wall, "terrain.spacing=2", "terrain.relief=100",

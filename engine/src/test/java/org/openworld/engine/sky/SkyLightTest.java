@@ -5,8 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.openworld.engine.sky.SkyColours.luminance;
 
 import org.joml.Vector3d;
+import org.joml.Vector3f;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.openworld.engine.environment.SkyIrradiance;
 
 class SkyLightTest {
 
@@ -54,6 +56,35 @@ class SkyLightTest {
         assertEquals(0.5, SkyLight.discFractionAbove(0), 1e-12);
         assertEquals(1, SkyLight.discFractionAbove(1), 1e-12);
         assertEquals(0, SkyLight.discFractionAbove(-1), 1e-12);
+    }
+
+    /**
+     * The harmonics of the sky: facing up, the ambient light (the same table, another quadrature); facing the sun,
+     * brighter than facing away (the sky is brightest around the sun), whichever way the sun stands; facing down,
+     * the ground's bounce light (albedo × the light on level ground), the sky's own share there being only the
+     * harmonics' ringing.
+     */
+    @Test
+    void theSkysIrradianceIsTheAmbientUpwardsFollowsTheSunAndAddsTheGroundBelow() {
+        double elevation = Math.toRadians(40);
+        SkyView view = SkyView.build(tables, elevation, ALTITUDE);
+        SkyLight light = SkyLight.of(tables, view, elevation, ALTITUDE);
+        float c = (float) Math.cos(elevation);
+        float s = (float) Math.sin(elevation);
+        SkyIrradiance east = SkyLight.irradiance(view, light, new Vector3f(c, s, 0), 0.3);
+        SkyIrradiance north = SkyLight.irradiance(view, light, new Vector3f(0, s, -c), 0.3);
+        double up = luminance(east.irradiance(new Vector3d(0, 1, 0), new Vector3d()));
+        assertEquals(luminance(light.ambient()), up, 0.06 * up, "facing up");
+        SkyIrradiance skyOnly = SkyLight.irradiance(view, light, new Vector3f(c, s, 0), 0);
+        double towards = luminance(skyOnly.irradiance(new Vector3d(1, 0, 0), new Vector3d()));
+        double away = luminance(skyOnly.irradiance(new Vector3d(-1, 0, 0), new Vector3d()));
+        assertTrue(towards > 1.15 * away, "sky light on a wall facing the sun " + towards + ", facing away " + away);
+        towards = luminance(east.irradiance(new Vector3d(1, 0, 0), new Vector3d()));
+        assertEquals(towards, luminance(north.irradiance(new Vector3d(0, 0, -1), new Vector3d())), 1e-3 * towards,
+                "the sun in the north: the same light on a wall facing north");
+        double ground = 0.3 * (luminance(light.sun()) * s + luminance(light.ambient()));
+        assertEquals(ground, luminance(east.irradiance(new Vector3d(0, -1, 0), new Vector3d())), 0.1 * ground,
+                "facing down");
     }
 
     private static SkyLight light(double sunDegrees) {

@@ -145,7 +145,8 @@ class WaterRenderTest {
         int waterline = (int) Math.round(row(AT_THE_TOWER, 0));
         double underTower = picture.meanLuma(W / 2 - 8, waterline + 4, W / 2 + 8, waterline + 30);
         double besideTower = picture.meanLuma(W / 2 + 60, waterline + 4, W / 2 + 76, waterline + 30);
-        assertTrue(besideTower - underTower > 20, "the dark tower should darken its reflection: under it "
+        // 27 levels with the former hemisphere ambient, 19 since the shaded face gets the sky's and the ground's light
+        assertTrue(besideTower - underTower > 15, "the dark tower should darken its reflection: under it "
                 + underTower + ", beside it " + besideTower);
     }
 
