@@ -29,7 +29,7 @@ void main() {
     float wrap = needles ? WRAP : 0.0;
     float nl = max((dot(n, l) + wrap) / (1.0 + wrap), 0.0);
     float sun = nl * sunVisibility(wsPos, n);
-    vec3 sky = frame.ambientColor.rgb * (0.6 + 0.4 * n.y);
+    vec3 sky = skyIrradiance(n);
     vec3 color = albedo * (frame.sunColor.rgb * sun + sky);
     fragColor = vec4(displayColor(applyFog(color, wsPos)), 1.0);
 }
