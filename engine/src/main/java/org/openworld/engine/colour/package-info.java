@@ -3,6 +3,8 @@
  * colour into CIELAB (D65), where distance follows what people see; {@link org.openworld.engine.colour.DeltaE} is
  * CIEDE2000, the CIE's colour difference formula; {@link org.openworld.engine.colour.ImageComparison} applies it to
  * two pictures pixel by pixel and draws a difference image. {@code openworld diff} prints what it finds.
+ * {@link org.openworld.engine.colour.Repetition} measures how much one picture repeats itself (the peak of its
+ * luminance's autocorrelation away from zero shift): how visibly a texture tiles.
  *
  * <p>Why not compare the RGB numbers? Equal steps in sRGB are not equal steps to the eye: a change of 10 in a dark
  * blue is far easier to miss than the same change in a mid green. CIELAB was built so that distances are roughly
