@@ -32,11 +32,21 @@ uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
 uniform int uMatGlossMap;          // 1: highlight and sky reflection, scaled by the gloss maps
 
 #ifdef TERRAIN_FAR
-// The far terrain's sky reflection, per vertex at two levels of blur (terrain.vert): the mirror direction of the
+// The far terrain's sky reflection, per vertex at two levels of blur, and its sky light (terrain.vert): for the
 // ground's normal there, without the detail normal, whose bumps are smaller than a far pixel anyway.
 in vec3 skySharp;
 in vec3 skyRough;
+in vec3 skyLight;
 #endif
+
+// The sky's and the sunlit ground's light on the normal n (frame.glsl skyIrradiance).
+vec3 matSkyLight(vec3 n) {
+#ifdef TERRAIN_FAR
+    return skyLight;
+#else
+    return skyIrradiance(n);
+#endif
+}
 
 // The environment's radiance reflected towards the eye along r, blurred to level lod.
 vec3 matSkyReflection(vec3 r, float lod) {
@@ -226,7 +236,7 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
     float sunFacing = smoothstep(-0.05, 0.1, dot(n0, l)); // bumps cannot be lit from behind the terrain itself
     sunFacing *= sunVisibility(s.wsPos, n0);
     float nl = max(dot(n, l), 0.0) * sunFacing;
-    vec3 sky = skyIrradiance(n); // the sky, and the sunlit ground around: the light in the shadows
+    vec3 sky = matSkyLight(n); // the sky, and the sunlit ground around: the light in the shadows
     vec3 color = m.albedo * (frame.sunColor.rgb * nl + sky);
     if (uMatGlossMap == 1) {
         float gloss = m.gloss;

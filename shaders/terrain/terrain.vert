@@ -30,6 +30,7 @@ flat out int lodLevel;
 #ifdef TERRAIN_FAR
 out vec3 skySharp;            // the environment mirrored by the ground, at its sharp and rough levels (see main)
 out vec3 skyRough;
+out vec3 skyLight;            // the sky's and the ground's irradiance for the ground's normal (frame.glsl)
 #endif
 
 // The level a vertex reads: a stitched side reads its coarser neighbour's level, a corner the coarsest of the
@@ -70,9 +71,13 @@ void main() {
     // normal is the ground's, read at the level whose texels are as far apart as this patch's vertices.
     float texelsPerStep = float(patchInfo.z) * float(textureSize(farSlope, 0).x) / float(mapSize);
     vec2 slope = textureLod(farSlope, wsPos.xz / extent + 0.5, max(log2(texelsPerStep), 0.0)).ba;
-    vec3 mirror = reflect(normalize(wsPos - cameraPos()), normalize(vec3(-slope.x, 1.0, -slope.y)));
+    vec3 normal = normalize(vec3(-slope.x, 1.0, -slope.y));
+    vec3 mirror = reflect(normalize(wsPos - cameraPos()), normal);
     skySharp = environmentRadiance(mirror, ENVIRONMENT_SHARP_LOD);
     skyRough = environmentRadiance(mirror, ENVIRONMENT_ROUGH_LOD);
+    // and the sky light on it: per pixel, its nine factors read from the frame block cost the far ground a sixth
+    // of its time on llvmpipe, and it varies as slowly over a far triangle as the reflection does
+    skyLight = skyIrradiance(normal);
 #endif
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }
