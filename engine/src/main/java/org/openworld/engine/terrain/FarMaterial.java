@@ -28,8 +28,8 @@ import org.openworld.engine.gl.Texture2D;
  * both with mips: 64 MiB at 2048².
  *
  * <p><b>When.</b> At start and again when a setting it depends on changes ({@code materials.snow-mode},
- * {@code materials.detail-scale}, {@code materials.tiling}): one full-screen pass over the textures, then their mips (with the extra programs,
- * a shot's start-up on llvmpipe grows by about 0.2 s).
+ * {@code materials.detail-scale}, {@code materials.tiling}): one full-screen pass over the textures, then their
+ * mips (with the extra programs, a shot's start-up on llvmpipe grows by about 0.2 s).
  *
  * <p><b>Limits.</b> A texel is a mean: detail finer than a texel (the fine tile, a blade of grass, a blend edge
  * sharper than a texel) is gone, and the mean slope lights like one normal, not like the many it stands for (a
@@ -107,8 +107,8 @@ final class FarMaterial {
 
     /**
      * Bakes if nothing was baked yet or the snow mode, the detail tile's size or the tiling changed since the last
-     * bake: the
-     * caller has bound the maps (see the constructor); the materials take units {@code materialUnit} onwards.
+     * bake: the caller has bound the maps (see the constructor); the materials take units {@code materialUnit}
+     * onwards.
      * Leaves the framebuffer, viewport, depth test, blending and face culling as they were; the program in use and
      * the texture bindings of the materials' units change.
      */

@@ -32,8 +32,8 @@ import org.openworld.engine.gl.Uniform;
  * (figure 4).
  *
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
- * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and two
- * more for the other tiling ({@link MaterialSettings.Tiling}: each near program and the bake come in both).
+ * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and three
+ * more for the other tiling ({@link MaterialSettings.Tiling}: the two near programs and the bake come in both).
  */
 final class TerrainShading {
 
