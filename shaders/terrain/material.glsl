@@ -11,7 +11,8 @@
 //
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
-//      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6)
+//      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6);
+//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
@@ -181,7 +182,7 @@ MatTiles matTiles(vec2 uv) {
 }
 
 // The variance-preserving blend of the three shifted lookups of layer in tex, around the layer's mean (its 1x1 mip).
-vec4 matStochastic(sampler2DArray tex, float layer, MatTiles t) {
+vec4 matLookup(sampler2DArray tex, float layer, MatTiles t) {
     vec4 mean = textureLod(tex, vec3(0.5, 0.5, layer), 16.0);
     vec4 sum = t.w.x * (textureGrad(tex, vec3(t.uv0, layer), t.dx, t.dy) - mean)
              + t.w.y * (textureGrad(tex, vec3(t.uv1, layer), t.dx, t.dy) - mean)
@@ -194,10 +195,6 @@ struct MatCoords {
     MatTiles coarse;
     float coarseWeight;
 };
-
-vec4 matLookup(sampler2DArray tex, float layer, MatTiles t) {
-    return matStochastic(tex, layer, t);
-}
 #else
 struct MatCoords {
     vec2 fine;
