@@ -1,5 +1,6 @@
 #version 330 core
-// The far material, baked once at start (and when the snow mode or the tile size changes; engine: FarMaterial):
+// The far material, baked once at start (and when the snow mode, the tile size or the tiling changes; engine:
+// FarMaterial; materials.tiling=stochastic compiles it with MAT_STOCHASTIC):
 // steps 1-3 of material.glsl on every texel of a texture laid over the map tile like the gradient map, as a far
 // viewer sees them: the coarse tile at its far weight, each material texture at the mip level of one baked texel
 // (this pass's own derivatives choose it), the macro variation made periodic over a repeating tile.

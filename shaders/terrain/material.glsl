@@ -11,7 +11,8 @@
 //
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
-//      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6)
+//      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6);
+//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
@@ -145,6 +146,66 @@ struct MatTexel {
     float gloss;
 };
 
+#ifdef MAT_STOCHASTIC
+// Stochastic tiling (Heitz and Neyret 2018, materials.tiling=stochastic; MaterialSettings.Tiling): the plane is cut
+// into equilateral triangles MAT_STOCHASTIC_CELL tiles across, each triangle corner shifts the texture by its own
+// random offset, and a pixel blends the three lookups of its triangle's corners by its barycentric weights w. A plain
+// linear blend would wash the texture out towards its mean where three patches mix; the variance-preserving blend
+//     x = mean + sum_i w_i (x_i - mean) / sqrt(sum_i w_i^2)
+// keeps the contrast (for uncorrelated x_i of one variance, the variance of the sum is sum_i w_i^2 times it). The
+// paper's full operator first makes the texture Gaussian and maps back through an inverse lookup table so the
+// histogram is kept exactly; this one keeps the mean and the variance only (see docs/terrain.md, section 4).
+const float MAT_STOCHASTIC_CELL = 0.29; // tiles per triangle side (1 / 2 sqrt 3, the paper's): a patch small enough
+                                        // that no two triangles side by side show the same feature
+
+// The triangle around uv (in tiles): the texture coordinates of its three corners' shifted copies and their weights.
+struct MatTiles {
+    vec2 uv0;
+    vec2 uv1;
+    vec2 uv2;
+    vec3 w;
+    float norm;  // 1 / sqrt(sum w^2)
+    vec2 dx;     // derivatives of uv across the pixel, for every lookup: the shifted coordinates jump at triangle
+    vec2 dy;     // edges, and implicit derivatives there would pick the coarsest mip (a seam of blur)
+};
+
+MatTiles matTiles(vec2 uv) {
+    // skewed space: the triangular lattice becomes the square one, each square cut into two triangles by x + y = 1
+    const mat2 toSkewed = mat2(1.0, 0.0, -0.57735027, 1.15470054); // columns: (1, 0), (-1/sqrt 3, 2/sqrt 3)
+    vec2 skewed = toSkewed * (uv / MAT_STOCHASTIC_CELL);
+    vec2 base = floor(skewed);
+    vec2 f = skewed - base;
+    float upper = step(1.0, f.x + f.y); // 0: lower triangle (corners base, +y, +x), 1: upper (+x+y, +x, +y)
+    vec2 c0 = base + vec2(upper);
+    vec2 c1 = base + vec2(upper, 1.0 - upper);
+    vec2 c2 = base + vec2(1.0 - upper, upper);
+    MatTiles t;
+    // barycentric weights: each 1 at its own corner and 0 on the opposite edge
+    t.w = mix(vec3(1.0 - f.x - f.y, f.y, f.x), vec3(f.x + f.y - 1.0, 1.0 - f.y, 1.0 - f.x), upper);
+    t.norm = inversesqrt(dot(t.w, t.w));
+    t.uv0 = uv + vec2(matHash(c0), matHash(c0 + 71.3));
+    t.uv1 = uv + vec2(matHash(c1), matHash(c1 + 71.3));
+    t.uv2 = uv + vec2(matHash(c2), matHash(c2 + 71.3));
+    t.dx = dFdx(uv);
+    t.dy = dFdy(uv);
+    return t;
+}
+
+// The variance-preserving blend of the three shifted lookups of layer in tex, around the layer's mean (its 1x1 mip).
+vec4 matLookup(sampler2DArray tex, float layer, MatTiles t) {
+    vec4 mean = textureLod(tex, vec3(0.5, 0.5, layer), 16.0);
+    vec4 sum = t.w.x * (textureGrad(tex, vec3(t.uv0, layer), t.dx, t.dy) - mean)
+             + t.w.y * (textureGrad(tex, vec3(t.uv1, layer), t.dx, t.dy) - mean)
+             + t.w.z * (textureGrad(tex, vec3(t.uv2, layer), t.dx, t.dy) - mean);
+    return clamp(mean + sum * t.norm, 0.0, 1.0);
+}
+
+struct MatCoords {
+    MatTiles fine;
+    MatTiles coarse;
+    float coarseWeight;
+};
+#else
 struct MatCoords {
     vec2 fine;
     vec2 coarse;
@@ -153,12 +214,18 @@ struct MatCoords {
 
 // Implicit derivatives: every layer is sampled on every pixel, outside any branch (on a software rasteriser a branch
 // skips nothing, and explicit gradients, which sampling under branches needs, cost a per-pixel LOD of their own).
+vec4 matLookup(sampler2DArray tex, float layer, vec2 uv) {
+    return texture(tex, vec3(uv, layer));
+}
+#endif
+
+// One material at both scales: repeated or stochastic tiles (matLookup), the same for albedo and detail.
 MatTexel matSample(float layer, MatCoords c) {
     const mat2 unturn = mat2(0.8253, -0.5646, 0.5646, 0.8253); // rotation by -MAT_COARSE_TURN: coarse slopes to world
-    vec4 albedoFine = texture(uMatAlbedo, vec3(c.fine, layer));
-    vec4 detailFine = texture(uMatDetail, vec3(c.fine, layer));
-    vec4 albedoCoarse = texture(uMatAlbedo, vec3(c.coarse, layer));
-    vec4 detailCoarse = texture(uMatDetail, vec3(c.coarse, layer));
+    vec4 albedoFine = matLookup(uMatAlbedo, layer, c.fine);
+    vec4 detailFine = matLookup(uMatDetail, layer, c.fine);
+    vec4 albedoCoarse = matLookup(uMatAlbedo, layer, c.coarse);
+    vec4 detailCoarse = matLookup(uMatDetail, layer, c.coarse);
     MatTexel t;
     t.albedo = mix(albedoFine.rgb, albedoCoarse.rgb, c.coarseWeight);
     t.slope = mix(detailFine.rg * 2.0 - 1.0, unturn * (detailCoarse.rg * 2.0 - 1.0), c.coarseWeight);
@@ -180,9 +247,16 @@ MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint) {
 
     // 1. texture coordinates at two scales, and the macro variation
     const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
+    vec2 fine = s.wsPos.xz / uMatDetailScale;
+    vec2 coarse = turn * fine / MAT_COARSE_FACTOR;
     MatCoords c;
-    c.fine = s.wsPos.xz / uMatDetailScale;
-    c.coarse = turn * c.fine / MAT_COARSE_FACTOR;
+#ifdef MAT_STOCHASTIC
+    c.fine = matTiles(fine);
+    c.coarse = matTiles(coarse);
+#else
+    c.fine = fine;
+    c.coarse = coarse;
+#endif
     c.coarseWeight = mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance));
     float macro = macroTint.x;
     float tint = macroTint.y;

@@ -2,6 +2,8 @@ package org.openworld.engine.terrain;
 
 import static org.lwjgl.opengl.GL30C.*;
 
+import java.util.EnumMap;
+import java.util.Map;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.Format;
@@ -26,8 +28,8 @@ import org.openworld.engine.gl.Texture2D;
  * both with mips: 64 MiB at 2048².
  *
  * <p><b>When.</b> At start and again when a setting it depends on changes ({@code materials.snow-mode},
- * {@code materials.detail-scale}): one full-screen pass over the textures, then their mips (with the extra programs,
- * a shot's start-up on llvmpipe grows by about 0.2 s).
+ * {@code materials.detail-scale}, {@code materials.tiling}): one full-screen pass over the textures, then their
+ * mips (with the extra programs, a shot's start-up on llvmpipe grows by about 0.2 s).
  *
  * <p><b>Limits.</b> A texel is a mean: detail finer than a texel (the fine tile, a blade of grass, a blend edge
  * sharper than a texel) is gone, and the mean slope lights like one normal, not like the many it stands for (a
@@ -45,16 +47,18 @@ final class FarMaterial {
     private final GlContext gl;
     private final Texture2D colour;
     private final Texture2D slope;
-    private final ShaderProgram program;
-    private final TerrainMaterials.Uniforms uniforms;
+    private final Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> bakes =
+            new EnumMap<>(MaterialSettings.Tiling.class);
     private final Mesh triangle;
     private final double texelMetres;
     private MaterialSettings.SnowMode bakedSnow;
     private double bakedScale = Double.NaN;
+    private MaterialSettings.Tiling bakedTiling;
 
     /**
-     * Makes the textures and the bake program, handed to the system's owner ({@code terrain.far-material.colour},
-     * {@code terrain.far-material.slope}, {@code terrain.bake}); nothing is baked until {@link #refresh}.
+     * Makes the textures and the bake programs, one per {@link MaterialSettings.Tiling}, handed to the system's owner
+     * ({@code terrain.far-material.colour}, {@code terrain.far-material.slope}, {@code terrain.bake},
+     * {@code terrain.bake.stochastic}); nothing is baked until {@link #refresh}.
      *
      * @param unitHeights   texture unit the caller binds the height pyramid to before a refresh; then the gradients
      *                      and the snow map on the next two units
@@ -66,8 +70,16 @@ final class FarMaterial {
         Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
         colour = context.own("far-material.colour", Texture2D.withMips(gl, size, size, Format.SRGB8_ALPHA8, wrap));
         slope = context.own("far-material.slope", Texture2D.withMips(gl, size, size, Format.RGBA16F, wrap));
-        program = context.own("bake", context.shaders().program("terrain/bake.vert", "terrain/bake.frag"));
         triangle = context.own(Mesh.fullScreenTriangle(gl));
+        for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
+            ShaderProgram program = context.own("bake" + tiling.roleSuffix(),
+                    context.shaders().program(tiling.defines(), "terrain/bake.vert", "terrain/bake.frag"));
+            bakes.put(tiling, bakeUniforms(program, base, size, unitHeights));
+        }
+    }
+
+    private static TerrainMaterials.Uniforms bakeUniforms(ShaderProgram program, HeightMap base, int size,
+                                                          int unitHeights) {
         program.use();
         program.sampler("heights", unitHeights);
         program.sampler("gradients", unitHeights + 1);
@@ -79,7 +91,7 @@ final class FarMaterial {
         program.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
         program.int1("bakeLevel").set(Integer.numberOfTrailingZeros(base.size() / size));
         program.vec2("bakeSize").set(size, size);
-        uniforms = TerrainMaterials.layerUniforms(program);
+        return TerrainMaterials.layerUniforms(program);
     }
 
     /** Metres of ground along the side of one baked texel. */
@@ -94,16 +106,18 @@ final class FarMaterial {
     }
 
     /**
-     * Bakes if nothing was baked yet or the snow mode or the detail tile's size changed since the last bake: the
-     * caller has bound the maps (see the constructor); the materials take units {@code materialUnit} onwards.
+     * Bakes if nothing was baked yet or the snow mode, the detail tile's size or the tiling changed since the last
+     * bake: the caller has bound the maps (see the constructor); the materials take units {@code materialUnit}
+     * onwards.
      * Leaves the framebuffer, viewport, depth test, blending and face culling as they were; the program in use and
      * the texture bindings of the materials' units change.
      */
     void refresh(TerrainMaterials materials, MaterialSettings settings, int materialUnit) {
-        if (settings.snowMode() == bakedSnow && settings.detailScale() == bakedScale) {
+        if (settings.snowMode() == bakedSnow && settings.detailScale() == bakedScale
+                && settings.tiling() == bakedTiling) {
             return;
         }
-        materials.bind(uniforms, settings, materialUnit);
+        materials.bind(bakes.get(settings.tiling()), settings, materialUnit);
         int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
         int[] viewport = new int[4];
         glGetIntegerv(GL_VIEWPORT, viewport);
@@ -132,6 +146,7 @@ final class FarMaterial {
         slope.generateMipmaps();
         bakedSnow = settings.snowMode();
         bakedScale = settings.detailScale();
+        bakedTiling = settings.tiling();
     }
 
 }

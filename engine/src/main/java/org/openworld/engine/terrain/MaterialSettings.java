@@ -1,5 +1,6 @@
 package org.openworld.engine.terrain;
 
+import java.util.List;
 import org.openworld.engine.settings.Setting;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -17,6 +18,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *                    of every material layer, in texels of that material (2 m each on the default map, 1 m on a
  *                    1 km one), so a coarser bake starts further out; the near material fades into it over the last
  *                    {@link FarMaterial#BLEND_FRACTION} of that distance
+ * @param tiling      how the detail textures cover the ground: repeated tiles, or stochastic tiling (Heitz and Neyret
+ *                    2018), which hides the repetition at three times the texture lookups of the near material
  */
 public record MaterialSettings(
         @Setting(doc = "where snow lies: snow-map (probabilistic map) or altitude-bands (plain height bands)")
@@ -25,7 +28,8 @@ public record MaterialSettings(
         @Setting(doc = "gloss maps: sun highlights and sky reflection") boolean glossMap,
         @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
         @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
-                max = 100000) double farTexels) {
+                max = 100000) double farTexels,
+        @Setting(doc = "how the detail textures tile: repeat or stochastic (Heitz-Neyret)") Tiling tiling) {
 
     /** How snow is placed on the terrain. */
     public enum SnowMode {
@@ -35,13 +39,38 @@ public record MaterialSettings(
         ALTITUDE_BANDS
     }
 
+    /**
+     * How the detail textures cover the ground; each is a variant of the near terrain and the bake programs
+     * ({@code MAT_STOCHASTIC} in {@code shaders/terrain/material.glsl}), so neither pays for the other.
+     */
+    public enum Tiling {
+        /** The tiles repeat: one lookup per scale, visibly periodic from tens of metres up. */
+        REPEAT,
+        /**
+         * Histogram-preserving stochastic tiling (Heitz and Neyret 2018), with the mean-and-variance-preserving
+         * blend: three randomly shifted lookups per scale, blended over a triangle grid; nothing repeats.
+         */
+        STOCHASTIC;
+
+        /** The shader defines of the programs for this tiling. */
+        List<String> defines() {
+            return this == STOCHASTIC ? List.of("MAT_STOCHASTIC") : List.of();
+        }
+
+        /** What this tiling's programs add to their GL labels: nothing for the repeated tiles. */
+        String roleSuffix() {
+            return this == STOCHASTIC ? ".stochastic" : "";
+        }
+    }
+
     public static final MaterialSettings DEFAULTS = new MaterialSettings(
             SnowMode.SNOW_MAP,
             true,
             true,
             2.7,    // m: 512 texels over 2.7 m is 5 mm per texel, about one pixel on the ground at a walker's feet
-            150);   // texels (300 m on the default map): nearer, a baked texel spans several pixels of a 720-row view
+            150,    // texels (300 m on the default map): nearer, a baked texel spans several pixels of a 720-row view
                     // and the ground looks blurred; 75 (150 m) already shows it on figure 3's mountainside
+            Tiling.REPEAT);
 
     public static final SettingsGroup<MaterialSettings> SETTINGS =
             SettingsGroup.of("materials", MaterialSettings.class, DEFAULTS);

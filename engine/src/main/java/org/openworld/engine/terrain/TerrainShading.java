@@ -1,7 +1,9 @@
 package org.openworld.engine.terrain;
 
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.List;
+import java.util.Map;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.ShaderProgram;
@@ -30,12 +32,17 @@ import org.openworld.engine.gl.Uniform;
  * (figure 4).
  *
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
- * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two.
+ * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and three
+ * more for the other tiling ({@link MaterialSettings.Tiling}: the two near programs and the bake come in both).
  */
 final class TerrainShading {
 
-    /** The near and far programs for one kind of sunlight, with their material uniforms. */
-    private record Lit(TerrainMaterials.Uniforms near, TerrainMaterials.Uniforms far, Uniform.Vec2 farBand) {
+    /** A near program (one tiling, one kind of sunlight) with its material uniforms and its far band. */
+    private record Near(TerrainMaterials.Uniforms uniforms, Uniform.Vec2 farBand) {
+    }
+
+    /** The near programs (one per tiling) and the far one for one kind of sunlight. */
+    private record Lit(Map<MaterialSettings.Tiling, Near> near, TerrainMaterials.Uniforms far) {
     }
 
     private final Lit shadowed;
@@ -76,23 +83,31 @@ final class TerrainShading {
         farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
     }
 
-    /** The near program ({@code program}) and the far one ({@code program.far}), {@code suffix} on their roles. */
+    /**
+     * The near programs ({@code program}, {@code program.stochastic}) and the far one ({@code program.far}),
+     * {@code suffix} on their roles.
+     */
     private Lit lit(EngineContext context, String suffix, List<String> light, HeightMap base, int cells,
                     int unitHeights) {
-        ShaderProgram near = variant(context, "program" + suffix, light, base, cells, unitHeights);
-        ShaderProgram far = variant(context, "program.far" + suffix, with(light, "TERRAIN_FAR"), base, cells,
-                unitHeights);
-        near.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
-        near.sampler("snowMap", unitHeights + 2);
-        near.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
-        farSamplers(near, unitFar);
+        Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
+        for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
+            ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
+                    with(light, tiling.defines()), base, cells, unitHeights);
+            p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
+            p.sampler("snowMap", unitHeights + 2);
+            p.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
+            farSamplers(p, unitFar);
+            near.put(tiling, new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
+        }
+        ShaderProgram far = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")), base,
+                cells, unitHeights);
         farSamplers(far, unitFar);
-        return new Lit(TerrainMaterials.uniforms(near), TerrainMaterials.lightUniforms(far), near.vec2("farBand"));
+        return new Lit(near, TerrainMaterials.lightUniforms(far));
     }
 
-    private static List<String> with(List<String> defines, String define) {
+    private static List<String> with(List<String> defines, List<String> more) {
         List<String> all = new ArrayList<>(defines);
-        all.add(define);
+        all.addAll(more);
         return all;
     }
 
@@ -128,8 +143,9 @@ final class TerrainShading {
                 double farDistance = settings.farTexels() * farMaterial.texelMetres();
                 int nearCount = order.nearerThan(farDistance);
                 Lit lit = sunShadowed ? shadowed : unshadowed;
-                materials.bind(lit.near(), settings, unitMaterials);
-                lit.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
+                Near near = lit.near().get(settings.tiling());
+                materials.bind(near.uniforms(), settings, unitMaterials);
+                near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
                 materials.bind(lit.far(), settings, unitMaterials);
                 renderer.draw(patches, order.order(), nearCount, all, copyOffsets, stats);

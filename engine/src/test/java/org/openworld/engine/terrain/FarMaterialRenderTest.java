@@ -102,6 +102,53 @@ class FarMaterialRenderTest {
     }
 
     /**
+     * The far material is baked again when the tiling changes, and stochastic tiling keeps the ground's colour: the
+     * pixels differ (the shifted patches are baked in) while the block means stay within the far-near tolerance,
+     * since the variance-preserving blend pivots on each texture's mean.
+     */
+    @Test
+    void changingTheTilingBakesTheFarMaterialAgainInTheSameColours() throws IOException {
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400", "materials.far-texels=0"),
+                new TerrainSystem(), new CullingSystem())) {
+            engine.world().setResource(new TimeOfDay(11.0, 0));
+            engine.world().resource(Camera.class).setPose(new CameraPose(0, 450, 350, 0, -35, 60));
+            Image repeat = frame(engine, "repeat");
+            engine.settings().set("materials.tiling", "stochastic");
+            Image stochastic = frame(engine, "stochastic");
+
+            double pixels = 0;
+            int ground = 0;
+            for (int y = 0; y < HEIGHT; y++) {
+                for (int x = 0; x < WIDTH; x++) {
+                    if (repeat.channel(x, y, 0) + repeat.channel(x, y, 1) + repeat.channel(x, y, 2) > 0) {
+                        pixels += DeltaE.ciede2000(lab(repeat, x, y), lab(stochastic, x, y));
+                        ground++;
+                    }
+                }
+            }
+            double sum = 0;
+            int blocks = 0;
+            for (int by = 0; by < HEIGHT / BLOCK; by++) {
+                for (int bx = 0; bx < WIDTH / BLOCK; bx++) {
+                    Lab a = blockMean(repeat, bx, by);
+                    Lab b = blockMean(stochastic, bx, by);
+                    if (a != null && b != null) {
+                        sum += DeltaE.ciede2000(a, b);
+                        blocks++;
+                    }
+                }
+            }
+            assertTrue(pixels / ground > 1, "mean ΔE00 per pixel, stochastic against repeat: " + pixels / ground);
+            assertTrue(sum / blocks < 2.5, "mean ΔE00 of the block means, stochastic against repeat: " + sum / blocks);
+        }
+    }
+
+    private static Lab lab(Image image, int x, int y) {
+        return Lab.fromSrgb(image.channel(x, y, 0), image.channel(x, y, 1), image.channel(x, y, 2));
+    }
+
+    /**
      * The far ground mirrors the sky as the near ground does: what the gloss maps add (the sun's highlight and the
      * sky's reflection) agrees between the two. The far program reads the sky per vertex at two levels of blur and
      * the near one per pixel at the gloss's own level, so their sums differ a little, but a far ground that lost the
