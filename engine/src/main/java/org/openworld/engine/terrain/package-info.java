@@ -77,7 +77,8 @@
  * d from {@code viewerPos()}. At k = 1 the patch is its parent (at its vertices), so the switch moves nothing;
  * shared edge and corner vertices take the largest ramp of the patches sampling their level, so neighbours agree
  * ({@link org.openworld.engine.terrain.QuadtreeLod} has the argument). Cost: two more height fetches per morphing
- * vertex and 72 more bytes per instance. Off with {@code lod.morph=off}; the flat grid (figure 6) never morphs.
+ * vertex and 72 more bytes per instance. On with {@code lod.morph=on} (off by default: the ground it coarsens shortens a low sun's shadows beyond what
+ * {@code CasterLevelsRenderTest} accepts); the flat grid (figure 6) never morphs.
  *
  * <p><b>Materials (2.2).</b> Grass low, rock between and on steep slopes, snow high, blended smoothly; the snow comes
  * from {@link org.openworld.engine.terrain.SnowMap}: snow with probability {@code p = clamp((n − base)/(full − base))}
