@@ -13,6 +13,11 @@ layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample 
 layout(location = 2) in ivec4 sideLevels;     // north, east, south, west
 layout(location = 3) in ivec4 cornerLevels;   // north-west, north-east, south-east, south-west
 layout(location = 4) in vec2 copyOffset;      // metres
+layout(location = 5) in vec2 morphRange;      // start, end: viewer distances (m) over which the patch morphs
+layout(location = 6) in vec4 sideMorphNE;     // north, east neighbour's range when it samples the side's level
+layout(location = 7) in vec4 sideMorphSW;     // south, west
+layout(location = 8) in vec4 cornerMorphN;    // north-west, north-east diagonal's range at the corner's level
+layout(location = 9) in vec4 cornerMorphS;    // south-east, south-west
 
 uniform sampler2D heights;
 uniform int mapSize;        // level-0 samples per side
@@ -55,11 +60,55 @@ float heightAt(ivec2 sampleIndex, int level) {
     return texelFetch(heights, texel, level).r;
 }
 
+// Geomorphing (QuadtreeLod explains it): k = 0 at the range's start, 1 at its end; a range with start = end steps.
+float ramp(vec2 range, float d) {
+    return range.y > range.x ? clamp((d - range.x) / (range.y - range.x), 0.0, 1.0) : step(range.y, d);
+}
+
+vec2 sideRange(int side) {
+    return side == 0 ? sideMorphNE.xy : side == 1 ? sideMorphNE.zw : side == 2 ? sideMorphSW.xy : sideMorphSW.zw;
+}
+
+// k of a side's patches that sample this level: the neighbour's ramp (given only when it samples the side's level)
+float sideK(int side, int level, float d) {
+    return sideLevels[side] == level ? ramp(sideRange(side), d) : 0.0;
+}
+
+// How far a vertex sampling `level` has morphed at viewer distance d: the largest ramp of the patches that sample
+// that level there, so that every patch sharing the vertex computes the same k.
+float morphFactor(ivec2 g, int level, float d) {
+    bool north = g.y == 0, south = g.y == cells, west = g.x == 0, east = g.x == cells;
+    float k = level == patchInfo.w ? ramp(morphRange, d) : 0.0;
+    if (north && west) return max(k, max(max(sideK(0, level, d), sideK(3, level, d)), ramp(cornerMorphN.xy, d)));
+    if (north && east) return max(k, max(max(sideK(0, level, d), sideK(1, level, d)), ramp(cornerMorphN.zw, d)));
+    if (south && east) return max(k, max(max(sideK(2, level, d), sideK(1, level, d)), ramp(cornerMorphS.xy, d)));
+    if (south && west) return max(k, max(max(sideK(2, level, d), sideK(3, level, d)), ramp(cornerMorphS.zw, d)));
+    if (north) return max(k, sideK(0, level, d));
+    if (east) return max(k, sideK(1, level, d));
+    if (south) return max(k, sideK(2, level, d));
+    if (west) return max(k, sideK(3, level, d));
+    return k;
+}
+
+// The next coarser level's surface at a vertex of `level`: its own height there when the vertex is on the coarser
+// grid (even), else the mean of its two even neighbours along its odd axis, or along the cell's diagonal (from
+// (−,−) to (+,+), as PatchPatterns cuts every cell) when odd in both.
+float coarserHeight(ivec2 sampleIndex, int level) {
+    ivec2 toEven = ((sampleIndex >> level) & 1) << level;
+    return 0.5 * (heightAt(sampleIndex - toEven, level + 1) + heightAt(sampleIndex + toEven, level + 1));
+}
+
 void main() {
     ivec2 g = ivec2(gridPos);
     ivec2 sampleIndex = patchInfo.xy + g * patchInfo.z;
     vec2 xz = (vec2(sampleIndex) - 0.5 * float(mapSize)) * spacing + copyOffset;
-    wsPos = vec3(xz.x, heightAt(sampleIndex, vertexLevel(g)), xz.y);
+    int level = vertexLevel(g);
+    wsPos = vec3(xz.x, heightAt(sampleIndex, level), xz.y);
+    // the viewer's distance, the same in every pass, so shadows, reflection and the view morph alike
+    float k = morphFactor(g, level, distance(wsPos, viewerPos()));
+    if (k > 0.0) {
+        wsPos.y = mix(wsPos.y, coarserHeight(sampleIndex, level), k);
+    }
     lodLevel = patchInfo.w;
     // Aerial perspective per vertex, interpolated: the table varies slowly across a triangle (the level rule keeps
     // a triangle's side a small share of its distance), and per pixel it cost a fifth of the terrain's pixel time

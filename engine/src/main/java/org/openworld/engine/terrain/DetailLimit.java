@@ -16,6 +16,13 @@ public sealed interface DetailLimit {
      */
     boolean fineEnough(int level, double error, double distance);
 
+    /**
+     * The distance from which a patch of this level and error is fine enough, metres: {@link #fineEnough} holds for
+     * every distance at least this (0 when it always holds, positive infinity when it never does). Geomorphing
+     * ({@link QuadtreeLod}) reads a node's merge distance from it: where its parent becomes fine enough.
+     */
+    double fineFrom(int level, double error);
+
     /** The paper's rule: level L is fine enough from distance D on when L ≤ L_B(D) ({@link LodRule#level}). */
     static DetailLimit paper(double baseResolution) {
         if (!(baseResolution > 0)) {
@@ -57,6 +64,11 @@ public sealed interface DetailLimit {
         public boolean fineEnough(int level, double error, double distance) {
             return first.fineEnough(level, error, distance) || second.fineEnough(level, error, distance);
         }
+
+        @Override
+        public double fineFrom(int level, double error) {
+            return Math.min(first.fineFrom(level, error), second.fineFrom(level, error));
+        }
     }
 
     /** The paper's distance rule with base resolution B, metres. */
@@ -64,6 +76,12 @@ public sealed interface DetailLimit {
         @Override
         public boolean fineEnough(int level, double error, double distance) {
             return level <= LodRule.level(distance, baseResolution);
+        }
+
+        /** L ≤ ⌊log2(D / B)⌋ from D = B · 2^L on; level 0 always. */
+        @Override
+        public double fineFrom(int level, double error) {
+            return level == 0 ? 0 : baseResolution * Math.pow(2, level);
         }
     }
 
@@ -79,6 +97,15 @@ public sealed interface DetailLimit {
         @Override
         public boolean fineEnough(int level, double error, double distance) {
             return error * focal <= pixels * (perspective ? distance : 1);
+        }
+
+        /** D = error · focal / pixels through a perspective; through an orthographic view always or never. */
+        @Override
+        public double fineFrom(int level, double error) {
+            if (perspective) {
+                return error * focal / pixels;
+            }
+            return error * focal <= pixels ? 0 : Double.POSITIVE_INFINITY;
         }
     }
 }

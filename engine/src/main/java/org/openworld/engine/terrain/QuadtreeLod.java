@@ -30,6 +30,33 @@ import org.openworld.engine.culling.Visibility.Containment;
  * two patches sharing it, a corner the coarsest of the up to four patches touching it, so both patches of a shared
  * vertex fetch the very same height.
  *
+ * <p>Geomorphing (CDLOD-style, Strugar 2009). Each drawn node gets a morph range [start, end] of viewer distances.
+ * The end is its merge distance M(parent) = {@link DetailLimit#fineFrom} of its parent: from there on the parent is
+ * fine enough (paper rule B · 2^(L+1); screen error e_parent · f / p). The vertex shader takes the distance d from
+ * the viewer to each vertex and k = clamp((d − start) / (end − start), 0, 1), and moves the vertex's height from its
+ * own level's towards the parent's surface there: an even vertex (a parent vertex) to the parent level's height, an
+ * odd one to the mean of the parent-level heights of its two even neighbours along its odd axis, or along the cell's
+ * diagonal when odd in both (the diagonal {@link PatchPatterns} cuts every cell with), its x and z unchanged. Why it
+ * is exact: the parent is drawn only when its box distance reaches M(parent), and no vertex of a node is nearer than
+ * its parent's box, so at a merge every vertex of the children has k = 1 and shows the parent's surface. The parent
+ * must then show that surface too, with its own k = 0: its start is M(node) + the diagonal of its box, beyond every
+ * vertex it has when it appears (the ranges nest: a node's start lies at or beyond its children's end). Where that
+ * is beyond the end, start = end and the node steps at its end instead (by at most its parent's error).
+ *
+ * <p>Shared vertices must agree, so k on an edge is not the patch's own. A side vertex samples the side's level
+ * (the coarser patch's); its k is the ramp of the neighbour that samples that level (the coarser neighbour's own
+ * range), and when both patches have the same level, the larger of the two ramps: both compute max(k_A, k_B), which
+ * is 1 when either merges (so the side is the parent's edge, which the remaining neighbour then reads unmorphed at
+ * the parent's k = 0) and equals the remaining patch's ramp when the other has just split (the new children have
+ * k = 1 there). A corner takes the largest ramp over the patches touching it that sample its level: the patch
+ * itself, its two side neighbours (each side carries its neighbour's range only when that neighbour samples the
+ * side's level) and the diagonal one. An edge vertex on a coarser neighbour's level thus morphs with that
+ * neighbour, not by itself. The distance is from {@code viewerPos()} to the vertex at the level it samples, so every
+ * pass and both patches compute the same d. Limits: the sun's pass chooses its cut from the viewer's eye, as k
+ * does, but the reflection's cut is chosen from the mirrored eye, so its merges can step; a node split only to keep neighbours
+ * within log2 N levels ({@link #forcedSplits()}) shows its parent's unmorphed surface; the edge strips' fans are not
+ * the parent's triangles, so inside a patch's outermost ring of cells k = 1 matches the parent at the vertices only.
+ *
  * <p>Cost. The cut is found top-down, touching only the nodes above it. Selected nodes are marked with a per-frame
  * stamp; a neighbour lookup walks from the root towards the same-level node across the side (the node above a
  * given one at any depth is its Morton code shifted, {@link TerrainQuadtree#node}) and stops at the first stamped
@@ -241,16 +268,48 @@ final class QuadtreeLod implements LodScheme {
         int column = tree.column(node);
         int row = tree.row(node);
         int i = out.add(node, copy, tree.sampleX(node), tree.sampleZ(node), 1 << level, level, 0);
+        out.setMorph(i, morphStart(node), morphEnd(node));
         for (Side side : SIDES) {
             int neighbour = selectedAt(copy, level, column + side.dx(), row + side.dz());
             int shared = neighbour < 0 ? level : Math.max(level, tree.level(neighbour));
             sideLevel[side.ordinal()] = shared;
             out.setSide(i, side, shared, shared - level);
+            if (neighbour >= 0 && tree.level(neighbour) == shared) {
+                out.setSideMorph(i, side, morphStart(neighbour), morphEnd(neighbour));
+            }
         }
         for (Corner corner : CORNERS) {
             int diagonal = selectedAt(copy, level, column + corner.dx(), row + corner.dz());
             int coarsest = Math.max(sideLevel[corner.northSouth().ordinal()], sideLevel[corner.eastWest().ordinal()]);
-            out.setCorner(i, corner, diagonal < 0 ? coarsest : Math.max(coarsest, tree.level(diagonal)));
+            int cornerLevel = diagonal < 0 ? coarsest : Math.max(coarsest, tree.level(diagonal));
+            out.setCorner(i, corner, cornerLevel);
+            if (diagonal >= 0 && tree.level(diagonal) == cornerLevel) {
+                out.setCornerMorph(i, corner, morphStart(diagonal), morphEnd(diagonal));
+            }
         }
+    }
+
+    /** Where a node has merged into its parent, metres: the parent's {@link DetailLimit#fineFrom}; never for the root. */
+    private float morphEnd(int node) {
+        int level = tree.level(node);
+        if (level >= tree.rootLevel()) {
+            return PatchList.NEVER;
+        }
+        int parent = tree.node(level + 1, tree.column(node) >> 1, tree.row(node) >> 1);
+        return (float) Math.min(PatchList.NEVER, limit.fineFrom(level + 1, tree.error(parent)));
+    }
+
+    /**
+     * Where a node starts to morph, metres: beyond every vertex it has when it appears (its own fine-enough distance
+     * plus its box's diagonal), so that it then shows its own surface, as its children did at k = 1; at most its end.
+     */
+    private float morphStart(int node) {
+        float[] boxes = bounds.boxes();
+        int b = 6 * node;
+        double dx = boxes[b + 3] - boxes[b];
+        double dy = boxes[b + 4] - boxes[b + 1];
+        double dz = boxes[b + 5] - boxes[b + 2];
+        double appears = limit.fineFrom(tree.level(node), tree.error(node)) + Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return (float) Math.min(morphEnd(node), appears);
     }
 }

@@ -198,6 +198,9 @@ public final class TerrainSystem implements EngineSystem {
         }
         long t0 = System.nanoTime();
         selection.select(eye, copyOffsets, limit, lod.mode(), visibility, patches);
+        if (!lod.morph()) {
+            patches.withoutMorph();
+        }
         double selectMs = (System.nanoTime() - t0) / 1e6;
         Counters counters = world.resource(Counters.class);
         String prefix = "terrain." + pass.label() + ".";

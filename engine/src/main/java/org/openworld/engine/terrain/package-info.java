@@ -69,6 +69,17 @@
  * element buffer holds them all, and {@link org.openworld.engine.terrain.PatchRenderer} draws each pattern in use
  * with one instanced call, so draw calls do not grow with the visible patches.
  *
+ * <p><b>Geomorphing (issue 20, CDLOD-style after Strugar 2009).</b> In the quadtree cut each patch morphs into its
+ * parent's surface before it merges: it carries a range [start, end] of viewer distances, end where its parent
+ * becomes fine enough ({@link org.openworld.engine.terrain.DetailLimit#fineFrom}: B · 2^(L+1) under the paper's rule,
+ * e_parent · f / p under the screen error), start where its farthest vertex lies when it appears; the vertex shader
+ * blends each vertex's height towards the coarser level's surface by {@code k = clamp((d − start)/(end − start), 0, 1)},
+ * d from {@code viewerPos()}. At k = 1 the patch is its parent (at its vertices), so the switch moves nothing;
+ * shared edge and corner vertices take the largest ramp of the patches sampling their level, so neighbours agree
+ * ({@link org.openworld.engine.terrain.QuadtreeLod} has the argument). Cost: two more height fetches per morphing
+ * vertex and 72 more bytes per instance. On with {@code lod.morph=on} (off by default: the ground it coarsens shortens a low sun's shadows beyond what
+ * {@code CasterLevelsRenderTest} accepts); the flat grid (figure 6) never morphs.
+ *
  * <p><b>Materials (2.2).</b> Grass low, rock between and on steep slopes, snow high, blended smoothly; the snow comes
  * from {@link org.openworld.engine.terrain.SnowMap}: snow with probability {@code p = clamp((n − base)/(full − base))}
  * of the normalised height n, then a morphological opening and closing (figures 1b, 2). Figure 1a's plain altitude
@@ -94,7 +105,8 @@
  * start. Limit: edges finer than a texel are softer far away.
  *
  * <p><b>Limits.</b> The whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
- * and again on the GPU); levels switch without geomorphing, so a patch can pop when it changes level; a generated
- * tile repeats (the unbounded world does not, but is not drawn yet); the snow map is capped at 2048².
+ * and again on the GPU); geomorphing makes the ground within a transition band coarser than the level rule asks (up
+ * to its parent's error), and steps where a band is empty (a box taller than the gap between two merge distances);
+ * a generated tile repeats (the unbounded world does not, but is not drawn yet); the snow map is capped at 2048².
  */
 package org.openworld.engine.terrain;

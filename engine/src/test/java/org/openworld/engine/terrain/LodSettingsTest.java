@@ -20,7 +20,9 @@ class LodSettingsTest {
     void keysAndDefaults() {
         List<String> keys = LodSettings.SETTINGS.keys().stream().map(SettingsGroup.Key::key).toList();
         assertEquals(List.of("lod.patch-vertices", "lod.rule", "lod.pixel-error", "lod.shadow-texel-error",
-                "lod.base-resolution", "lod.mode", "lod.reflection-coarsening", "lod.shadow-coarsening"), keys);
+                "lod.base-resolution", "lod.mode", "lod.reflection-coarsening", "lod.shadow-coarsening", "lod.morph"),
+                keys);
+        assertFalse(LodSettings.DEFAULTS.morph(), "geomorphing is off by default (see LodSettings#morph)");
         assertEquals(32, LodSettings.DEFAULTS.cells());
         assertEquals(LodMode.QUADTREE, LodSettings.DEFAULTS.mode());
         assertEquals(LodRule.SCREEN_ERROR, LodSettings.DEFAULTS.rule());
@@ -28,11 +30,11 @@ class LodSettingsTest {
 
     @Test
     void theReflectionAndShadowPassesAreCoarserByTheirLevels() {
-        LodSettings coarser = new LodSettings(65, LodRule.PAPER, 2, 2, 128, LodMode.QUADTREE, 2, 3);
+        LodSettings coarser = new LodSettings(65, LodRule.PAPER, 2, 2, 128, LodMode.QUADTREE, 2, 3, true);
         assertEquals(128, coarser.baseResolution(Pass.MAIN));
         assertEquals(32, coarser.baseResolution(Pass.REFLECTION));
         assertEquals(16, coarser.baseResolution(Pass.SHADOW));
-        LodSettings none = new LodSettings(65, LodRule.PAPER, 2, 2, 128, LodMode.QUADTREE, 0, 0);
+        LodSettings none = new LodSettings(65, LodRule.PAPER, 2, 2, 128, LodMode.QUADTREE, 0, 0, true);
         assertEquals(128, none.baseResolution(Pass.REFLECTION));
         assertEquals(128, none.baseResolution(Pass.SHADOW));
     }
@@ -44,12 +46,12 @@ class LodSettingsTest {
      */
     @Test
     void eachPassGetsItsOwnLimit() {
-        LodSettings paper = new LodSettings(65, LodRule.PAPER, 2, 3, 128, LodMode.QUADTREE, 1, 2);
+        LodSettings paper = new LodSettings(65, LodRule.PAPER, 2, 3, 128, LodMode.QUADTREE, 1, 2, true);
         ViewCamera box = new ViewCamera(new Matrix4f(), new Matrix4f().ortho(-1024, 1024, -1024, 1024, 0, 500),
                 new Vector3f(), 0, 500);
         assertEquals(DetailLimit.paper(32), paper.limit(Pass.SHADOW, box, 2048, 2048));
         assertEquals(DetailLimit.paper(64), paper.limit(Pass.REFLECTION, box, 2048, 2048));
-        LodSettings screen = new LodSettings(65, LodRule.SCREEN_ERROR, 2, 3, 128, LodMode.QUADTREE, 1, 2);
+        LodSettings screen = new LodSettings(65, LodRule.SCREEN_ERROR, 2, 3, 128, LodMode.QUADTREE, 1, 2, true);
         DetailLimit shadow = screen.limit(Pass.SHADOW, box, 2048, 2048);
         assertTrue(shadow.fineEnough(3, 3, 1));
         assertTrue(shadow.fineEnough(3, 3, 1e5));
@@ -61,12 +63,12 @@ class LodSettingsTest {
 
     @Test
     void onlyThePatchSizesWithPatternsAreAccepted() {
-        assertEquals(32, new LodSettings(33, LodRule.PAPER, 2, 2, 100, LodMode.FLAT_GRID, 1, 1).cells());
+        assertEquals(32, new LodSettings(33, LodRule.PAPER, 2, 2, 100, LodMode.FLAT_GRID, 1, 1, true).cells());
         assertThrows(IllegalArgumentException.class,
-                () -> new LodSettings(48, LodRule.PAPER, 2, 2, 100, LodMode.QUADTREE, 1, 1));
+                () -> new LodSettings(48, LodRule.PAPER, 2, 2, 100, LodMode.QUADTREE, 1, 1, true));
         assertThrows(IllegalArgumentException.class,
-                () -> new LodSettings(65, LodRule.PAPER, 2, 2, 0, LodMode.QUADTREE, 1, 1));
+                () -> new LodSettings(65, LodRule.PAPER, 2, 2, 0, LodMode.QUADTREE, 1, 1, true));
         assertThrows(IllegalArgumentException.class,
-                () -> new LodSettings(65, LodRule.SCREEN_ERROR, 0, 2, 100, LodMode.QUADTREE, 1, 1));
+                () -> new LodSettings(65, LodRule.SCREEN_ERROR, 0, 2, 100, LodMode.QUADTREE, 1, 1, true));
     }
 }
