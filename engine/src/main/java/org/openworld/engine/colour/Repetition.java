@@ -40,12 +40,22 @@ public final class Repetition {
         int w = image.width();
         int h = image.height();
         double[] luma = new double[w * h];
-        double mean = 0;
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
                 luma[y * w + x] = image.luma(x, y);
-                mean += luma[y * w + x];
             }
+        }
+        return peak(luma, w, h, minShift);
+    }
+
+    /**
+     * The same for any field sampled on a grid (a picture's luminance, a height map), row by row: the largest r(T)
+     * over shifts with |T| ≥ {@code minShift} samples and |tx| ≤ width / 2, |ty| ≤ height / 2.
+     */
+    public static double peak(double[] values, int w, int h, double minShift) {
+        double mean = 0;
+        for (double v : values) {
+            mean += v;
         }
         mean /= w * h;
         int pw = 2 * w;
@@ -53,7 +63,7 @@ public final class Repetition {
         double[] a = new double[2 * pw * ph]; // complex, row-major, zero padding
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
-                a[2 * (y * pw + x)] = luma[y * w + x] - mean;
+                a[2 * (y * pw + x)] = values[y * w + x] - mean;
             }
         }
         DoubleFFT_2D fft = new DoubleFFT_2D(ph, pw);
@@ -70,10 +80,10 @@ public final class Repetition {
             return 0;
         }
         double peak = Double.NEGATIVE_INFINITY;
-        long min2 = (long) minShift * minShift;
+        double min2 = minShift * minShift;
         for (int ty = -h / 2; ty <= h / 2; ty++) {
             for (int tx = -w / 2; tx <= w / 2; tx++) {
-                if ((long) tx * tx + (long) ty * ty < min2) {
+                if ((double) tx * tx + (double) ty * ty < min2) {
                     continue;
                 }
                 int overlap = (w - Math.abs(tx)) * (h - Math.abs(ty));

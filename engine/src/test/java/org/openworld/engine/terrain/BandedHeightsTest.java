@@ -7,11 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
 import java.util.stream.IntStream;
-import org.jtransforms.fft.FloatFFT_2D;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.openworld.engine.core.FftThreads;
+import org.openworld.engine.colour.Repetition;
 
 /** The unbounded world made per level: its spectrum, its bands and levels, determinism, and that it does not repeat. */
 class BandedHeightsTest {
@@ -236,41 +235,12 @@ class BandedHeightsTest {
         return ab / Math.sqrt(aa * bb);
     }
 
-    /**
-     * The largest normalised autocorrelation r(T) = Σ h(p) h(p + T) / Σ h(p)² of the mean-free heights over lags
-     * |T| &gt; {@code beyond} metres, by FFT on a zero-padded 2n × 2n grid (so lags do not wrap round).
-     */
+    /** {@link Repetition#peak} of the heights, over shifts of more than {@code beyond} metres. */
     private static double peakAutocorrelation(float[] heights, int n, double spacing, double beyond) {
-        double mean = 0;
-        for (float h : heights) {
-            mean += h;
+        double[] values = new double[heights.length];
+        for (int i = 0; i < heights.length; i++) {
+            values[i] = heights[i];
         }
-        mean /= heights.length;
-        int p = 2 * n;
-        float[] a = new float[2 * p * p]; // complex, interleaved
-        for (int j = 0; j < n; j++) {
-            for (int i = 0; i < n; i++) {
-                a[2 * (j * p + i)] = (float) (heights[j * n + i] - mean);
-            }
-        }
-        FloatFFT_2D fft = new FloatFFT_2D(p, p);
-        FftThreads.pinned(() -> fft.complexForward(a));
-        for (int i = 0; i < p * p; i++) {
-            float re = a[2 * i];
-            float im = a[2 * i + 1];
-            a[2 * i] = re * re + im * im;
-            a[2 * i + 1] = 0;
-        }
-        FftThreads.pinned(() -> fft.complexInverse(a, false));
-        double peak = Double.NEGATIVE_INFINITY;
-        for (int j = 0; j < p; j++) {
-            for (int i = 0; i < p; i++) {
-                double lag = spacing * Math.hypot(i < p / 2 ? i : i - p, j < p / 2 ? j : j - p);
-                if (lag > beyond) {
-                    peak = Math.max(peak, a[2 * (j * p + i)] / a[0]);
-                }
-            }
-        }
-        return peak;
+        return Repetition.peak(values, n, n, beyond / spacing);
     }
 }
