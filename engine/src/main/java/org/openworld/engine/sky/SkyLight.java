@@ -60,7 +60,8 @@ public final class SkyLight {
      * The sky of {@code view} around a sun towards {@code toSun} (world space) and the ground lit by {@code light},
      * of reflectance {@code groundAlbedo}, as {@link SkyIrradiance}: the upper hemisphere by the midpoint rule on
      * {@value #IRRADIANCE_AZIMUTHS} × {@value #IRRADIANCE_ELEVATIONS} directions (each azimuth from the sun's plane
-     * counted on both sides of it), the ground in closed form. A few thousand table reads: run when the sun moved.
+     * counted on both sides of it), the ground in closed form, and the light of the terrain where it hides the sky
+     * (SkyIrradiance#hiddenBy). A few thousand table reads: run when the sun moved.
      */
     public static SkyIrradiance irradiance(SkyView view, SkyLight light, Vector3fc toSun, double groundAlbedo) {
         Vector3d toward = new Vector3d(toSun.x(), 0, toSun.z());
@@ -87,8 +88,12 @@ public final class SkyLight {
                 }
             }
         }
-        Vector3d ground = light.sun().mul(Math.max(toSun.y(), 0)).add(light.ambient()).mul(groundAlbedo / Math.PI);
-        return sky.addLowerHemisphere(ground);
+        Vector3d sunOnGround = light.sun().mul(Math.max(toSun.y(), 0));
+        Vector3d ground = new Vector3d(sunOnGround).add(light.ambient()).mul(groundAlbedo / Math.PI);
+        // the terrain that hides the sky from a place faces that place; seen from all round, half of it faces the
+        // sun: so its light is the open ground's with half the sun's (SkyVisibility, the hidden share)
+        Vector3d hidden = sunOnGround.mul(0.5).add(light.ambient()).mul(groundAlbedo);
+        return sky.addLowerHemisphere(ground).hiddenBy(hidden);
     }
 
     private static Vector3d sunlight(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
