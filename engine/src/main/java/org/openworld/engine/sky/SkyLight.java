@@ -3,13 +3,14 @@ package org.openworld.engine.sky;
 import org.joml.Vector3d;
 import org.joml.Vector3fc;
 import org.openworld.engine.environment.SkyIrradiance;
+import org.openworld.engine.environment.Sun;
 
 /**
  * The light the sky puts on the scene for one sun position, in display units (E / E_sun, linear sRGB): the direct
  * sun and the sky's ambient irradiance.
  * <ul>
  * <li>{@link #sun()}: T(r, μ_s)·1 through the {@link TransmittanceTable}, times the fraction of the solar disc (radius
- *     {@value #SUN_ANGULAR_RADIUS_DEG}°) above the eye's horizon, so the sun fades as it sets instead of switching
+ *     {@value Sun#ANGULAR_RADIUS_DEG}°) above the eye's horizon, so the sun fades as it sets instead of switching
  *     off.</li>
  * <li>{@link #ambient()}: E = ∫_{upper hemisphere} L cosθ dω from the {@link SkyView} table, which stores P = π·L, so
  *     E = 2 ∫₀^π dφ ∫₀^{π/2} (P/π) sin e cos e de (the sky is symmetric about the sun's plane), by the midpoint rule
@@ -21,8 +22,6 @@ import org.openworld.engine.environment.SkyIrradiance;
  */
 public final class SkyLight {
 
-    /** Angular radius of the solar disc, degrees (mean, seen from Earth). */
-    public static final double SUN_ANGULAR_RADIUS_DEG = 0.2666;
     /** Midpoint-rule directions over the azimuth 0..π for the ambient integral. */
     private static final int AMBIENT_AZIMUTHS = 32;
     /** Midpoint-rule directions over the elevation 0..π/2: sin e cos e is smooth, 16 are within 0.2 %. */
@@ -101,7 +100,7 @@ public final class SkyLight {
         double horizonCos = -Math.sqrt(Math.max(1 - Math.pow(Atmosphere.BOTTOM_RADIUS / r, 2), 0));
         double horizonElevation = Math.asin(horizonCos);
         double visible = discFractionAbove((sunElevationRad - horizonElevation)
-                / Math.toRadians(SUN_ANGULAR_RADIUS_DEG));
+                / Math.toRadians(Sun.ANGULAR_RADIUS_DEG));
         if (visible <= 0) {
             return new Vector3d();
         }
