@@ -24,8 +24,9 @@ layout(std140) uniform FrameBlock {
     vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
     vec4 viewerPos;       // xyz: the viewer's eye, world space (m), the same in every pass; w: 0
-    vec4 sky[9];          // rgb: the sky's and the ground's irradiance as factors of order-2 spherical harmonics
-                          // (engine: environment.SkyIrradiance), read by skyIrradiance
+    vec4 sky[10];         // rgb: [0..8] the sky's and the ground's irradiance as factors of order-2 spherical
+                          // harmonics, [9] the light of the terrain where it hides the sky (engine:
+                          // environment.SkyIrradiance), read by skyIrradiance
 } frame;
 
 vec3 cameraPos() { return frame.cameraPosNear.xyz; }
@@ -40,6 +41,12 @@ vec3 skyIrradiance(vec3 n) {
         + frame.sky[4].rgb * (n.x * n.y) + frame.sky[5].rgb * (n.y * n.z)
         + frame.sky[6].rgb * (3.0 * n.y * n.y - 1.0) + frame.sky[7].rgb * (n.x * n.z)
         + frame.sky[8].rgb * (n.x * n.x - n.z * n.z);
+}
+
+// The same where the relief hides part of the sky and leaves `visible` of it (engine: terrain.SkyVisibility): the
+// hidden share sees the terrain instead, lit as the sky system reckons (sky.SkyLight#irradiance).
+vec3 skyIrradiance(vec3 n, float visible) {
+    return mix(frame.sky[9].rgb, skyIrradiance(n), visible);
 }
 
 // The world-space direction of the view ray through a point of the screen (ndc.xy in -1..1), unnormalised. Built

@@ -12,7 +12,10 @@
 //                Scaled by the PCF kernel's reach, since the outer taps read the surface further away
 //   normal offset the point moved along its normal by a fraction of a texel times sin(angle): off the surface, so
 //                the lookup lands where the surface's own depth is behind it
-// The paper's PCF filter averages N x N such tests a texel apart: a soft edge N texels wide. Near the border of a
+// The paper's PCF filter averages N x N such tests a texel apart: a soft edge N texels wide. The sun is a disc, so
+// a real edge blurs with the distance d between caster and ground, by d * 2 tan(0.27 deg) = 0.93 cm per metre
+// (the penumbra); where the caster lies so far that this outgrows the filter, the tests spread (see
+// percentageCloser). Near the border of a
 // cascade the next one is blended in (its filter only where some pixel needs it, see sunVisibility), and at the
 // shadow distance shadows fade out.
 #include "common/frame.glsl"
@@ -24,7 +27,8 @@ layout(std140) uniform ShadowBlock {
     vec4 shadowParams;           // x: cascades (0: no shadow map, everything lit); y: PCF side N; z: margin; w: blend band
     vec4 biasParams;             // x: normal offset (texels); y: slope bias (texels); z: fade start, w: shadow distance
                                  //    (metres from the viewer; w = 0: no fade)
-    vec4 viewerPos;              // xyz: the viewer's eye (the same in every pass, also the mirrored one)
+    vec4 viewerPos;              // xyz: the viewer's eye (the same in every pass, also the mirrored one); w: the
+                                 //    penumbra's growth, metres of soft edge per metre from the caster (0: none)
 } shadow;
 
 uniform sampler2DArrayShadow shadowMap;
@@ -43,10 +47,22 @@ vec3 shadowCoords(int i, vec3 wsPos, vec3 wsNormal, float cosSun) {
     return coords;
 }
 
-// The paper's percentage-closer filter: the mean of N x N depth tests a texel apart around the point.
+// Metres between caster and ground beyond which the penumbra is wider than cascade i's filter of N texels, times
+// 1.5: the middle of the range over which it grows to twice the filter's width.
+float penumbraReach(int i, int n) {
+    return 1.5 * float(n) * shadow.cascadeTexel[i] / max(shadow.viewerPos.w, 1e-6);
+}
+
+// The paper's percentage-closer filter: the mean of N x N depth tests around the point, a texel apart, or two
+// texels apart where the caster lies beyond penumbraReach: one more test at the centre, against a depth that much
+// nearer the sun, tells (1 - its result, so a point in the open or under a near caster keeps the narrow filter).
+// Two texels is as far as the taps spread before the edge shows them as separate steps: the blur grows with the
+// distance to the caster as far as the kernel allows, not to the sun's full penumbra.
 float percentageCloser(int i, vec3 coords) {
     int n = int(shadow.shadowParams.y);
-    float step = 1.0 / float(textureSize(shadowMap, 0).x);
+    float farCaster = 1.0 - texture(shadowMap, vec4(coords.xy, float(i),
+                                                   coords.z - penumbraReach(i, n) / shadow.cascadeDepth[i]));
+    float step = (1.0 + farCaster) / float(textureSize(shadowMap, 0).x);
     vec2 origin = coords.xy - 0.5 * float(n - 1) * step;
     float lit = 0.0;
     for (int y = 0; y < n; y++) {

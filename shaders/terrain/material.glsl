@@ -17,7 +17,8 @@
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
-//   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance),
+//   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance)
+//      where the relief leaves the sky visible, the sunlit ground's light where it hides it (SkyVisibility), a
 //      normalised Blinn-Phong highlight and a Fresnel-weighted reflection of the environment map (the sky
 //      system's), both scaled by the gloss map
 #include "common/frame.glsl"
@@ -31,6 +32,7 @@ uniform int uMatSnowMode;          // MAT_SNOW_MAP or MAT_ALTITUDE_BANDS
 uniform vec2 uMatSnowBand;         // ALTITUDE_BANDS: normalised heights where snow starts and is full (SnowLines)
 uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
 uniform int uMatGlossMap;          // 1: highlight and sky reflection, scaled by the gloss maps
+uniform float uMatSkyOcclusion;    // 1: the relief hides its share of the sky (TerrainSurface.skyVisibility), 0: not
 
 #ifdef TERRAIN_FAR
 // The far terrain's sky reflection, per vertex at two levels of blur, and its sky light (terrain.vert): for the
@@ -40,12 +42,13 @@ in vec3 skyRough;
 in vec3 skyLight;
 #endif
 
-// The sky's and the sunlit ground's light on the normal n (frame.glsl skyIrradiance).
-vec3 matSkyLight(vec3 n) {
+// The light of the sky and of the ground around on the normal n, where the relief leaves `visible` of the sky
+// (engine: SkyVisibility; frame.glsl skyIrradiance); the far ground's comes per vertex, already occluded.
+vec3 matSkyLight(vec3 n, float visible) {
 #ifdef TERRAIN_FAR
     return skyLight;
 #else
-    return skyIrradiance(n);
+    return skyIrradiance(n, mix(1.0, visible, uMatSkyOcclusion));
 #endif
 }
 
@@ -65,6 +68,7 @@ struct TerrainSurface {
     vec3 wsBitangent;  // unit, along +Z tilted with the slope: normalize(vec3(0, dh/dz, 1))
     float height01;    // height normalised over the map's range, 0 = lowest, 1 = highest
     float snow;        // snow-map coverage here, 0..1 (already filtered)
+    float skyVisibility; // share of the sky the relief leaves here, 0..1 (SkyVisibility; the far ground: per vertex)
 };
 
 const float MAT_GRASS = 0.0;         // texture array layers (TerrainTextures.Material order)
@@ -310,7 +314,7 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
     float sunFacing = smoothstep(-0.05, 0.1, dot(n0, l)); // bumps cannot be lit from behind the terrain itself
     sunFacing *= sunVisibility(s.wsPos, n0);
     float nl = max(dot(n, l), 0.0) * sunFacing;
-    vec3 sky = matSkyLight(n); // the sky, and the sunlit ground around: the light in the shadows
+    vec3 sky = matSkyLight(n, s.skyVisibility); // the sky, and the sunlit ground around: the light in the shadows
     vec3 color = m.albedo * (frame.sunColor.rgb * nl + sky);
     if (uMatGlossMap == 1) {
         float gloss = m.gloss;

@@ -18,7 +18,7 @@ flat in int lodLevel;
 out vec4 fragColor;
 
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
-uniform sampler2D snowMap;     // snow coverage 0..1
+uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (SkyVisibility)
 uniform sampler2D farColour;   // baked steps 1-3 of material.glsl (FarMaterial): rgb albedo (sRGB stored), a gloss
 uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5, ba the ground's (dh/dx, dh/dz)
 uniform float extent;          // metres per map tile
@@ -61,9 +61,12 @@ void main() {
     m.slope = farSlopes.rg * 2.0 - 1.0;
     m.height = 0.5;
     m.gloss = far.a;
+    s.skyVisibility = 1.0; // taken into the sky light per vertex (terrain.vert)
   #else
     s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
-    s.snow = texture(snowMap, uv).r;
+    vec2 snowAndSky = texture(snowMap, uv).rg;
+    s.snow = snowAndSky.r;
+    s.skyVisibility = snowAndSky.g;
     float eyeDistance = length(cameraPos() - wsPos);
     m = terrainMaterial(s, eyeDistance, matMacroTint(wsPos.xz));
     float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);

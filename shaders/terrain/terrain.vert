@@ -26,7 +26,9 @@ uniform int cells;          // N, grid cells per patch side
 uniform int periodic;       // 1: the map wraps (generated), 0: it clamps (imported)
 #ifdef TERRAIN_FAR
 uniform sampler2D farSlope; // ba: the ground's (dh/dx, dh/dz) over the tile (FarMaterial), as in terrain.frag
+uniform sampler2D snowMap;  // g: the share of the sky the relief leaves (SkyVisibility), as in terrain.frag
 uniform float extent;       // metres per map tile
+uniform float uMatSkyOcclusion; // material.glsl's switch (materials.sky-occlusion)
 #endif
 
 out vec3 wsPos;
@@ -118,15 +120,18 @@ void main() {
     // The sky's reflection per vertex too, at two levels the pixels blend by their gloss (material.glsl): on the
     // far ground its cube map lookup per pixel was a sixth of the terrain's pixel time on a software rasteriser. The
     // normal is the ground's, read at the level whose texels are as far apart as this patch's vertices.
-    float texelsPerStep = float(patchInfo.z) * float(textureSize(farSlope, 0).x) / float(mapSize);
-    vec2 slope = textureLod(farSlope, wsPos.xz / extent + 0.5, max(log2(texelsPerStep), 0.0)).ba;
+    vec2 uv = wsPos.xz / extent + 0.5;
+    float samplesPerStep = float(patchInfo.z) / float(mapSize);
+    vec2 slope = textureLod(farSlope, uv, max(log2(samplesPerStep * float(textureSize(farSlope, 0).x)), 0.0)).ba;
     vec3 normal = normalize(vec3(-slope.x, 1.0, -slope.y));
     vec3 mirror = reflect(normalize(wsPos - cameraPos()), normal);
     skySharp = environmentRadiance(mirror, ENVIRONMENT_SHARP_LOD);
     skyRough = environmentRadiance(mirror, ENVIRONMENT_ROUGH_LOD);
     // and the sky light on it: per pixel, its nine factors read from the frame block cost the far ground a sixth
-    // of its time on llvmpipe, and it varies as slowly over a far triangle as the reflection does
-    skyLight = skyIrradiance(normal);
+    // of its time on llvmpipe, and it varies as slowly over a far triangle as the reflection does; where the relief
+    // hides part of the sky, the sunlit ground's light stands in for it (as material.glsl's matSkyLight)
+    float visible = textureLod(snowMap, uv, max(log2(samplesPerStep * float(textureSize(snowMap, 0).x)), 0.0)).g;
+    skyLight = skyIrradiance(normal, mix(1.0, visible, uMatSkyOcclusion));
 #endif
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }

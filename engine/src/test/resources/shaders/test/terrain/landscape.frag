@@ -3,6 +3,7 @@
 // org.openworld.engine.terrain.MaterialRenderTest): the height field's normal gives the tangent frame, a made-up
 // snow map puts snow likelier higher up; with uSky = 1 the environment map behind it.
 #include "terrain/material.glsl"
+uniform float uSkyVisibility; // the share of the sky the relief leaves (set to 1: open ground)
 #include "common/fog.glsl"
 #include "common/color.glsl"
 
@@ -30,5 +31,6 @@ void main() {
     s.height01 = clamp(wsPos.y / uTop, 0.0, 1.0);
     float patchy = matValueNoise(wsPos.xz / 180.0) + 0.5 * matValueNoise(wsPos.xz / 60.0);
     s.snow = smoothstep(0.5, 0.62, s.height01 + 0.2 * (patchy - 0.75));
+    s.skyVisibility = uSkyVisibility;
     fragColor = vec4(displayColor(applyFog(shadeTerrain(s), wsPos)), 1.0);
 }

@@ -8,6 +8,7 @@
 // Slopes fall towards the east (+X), facing the morning sun.
 // Every cell covers CELL_METRES of ground around uCentre, where the sun's mirror image is seen from the camera.
 #include "terrain/material.glsl"
+uniform float uSkyVisibility; // the share of the sky the relief leaves (set to 1: open ground)
 #include "common/color.glsl"
 
 uniform vec3 uCentre;          // world point at each cell's centre, on the ground (y = 0)
@@ -23,6 +24,7 @@ TerrainSurface ground(vec2 wsXZ, float gradientX, float height01, float snow) {
     s.wsBitangent = vec3(0.0, 0.0, 1.0);
     s.height01 = height01;
     s.snow = snow;
+    s.skyVisibility = uSkyVisibility;
     return s;
 }
 

@@ -16,7 +16,8 @@ import org.joml.Vector3fc;
  * <p>Harmonics in the world's axes (y up): Y_00 = 0.282095; Y_1m = 0.488603 (y, z, x); Y_2m = 1.092548 xy,
  * 1.092548 yz, 0.315392 (3y² − 1), 1.092548 xz, 0.546274 (x² − z²). Radiance and irradiance are linear RGB in the
  * sun's display units. Built by accumulating {@link #add samples} of the radiance (a quadrature over the sphere) and
- * {@link #addLowerHemisphere uniform ground light}; immutable once handed to a {@link Sun}.
+ * {@link #addLowerHemisphere uniform ground light}, with {@link #hiddenBy the light of the terrain} that stands in
+ * for the sky where the relief hides it; immutable once handed to a {@link Sun}.
  */
 public final class SkyIrradiance {
 
@@ -30,6 +31,8 @@ public final class SkyIrradiance {
 
     /** L_lm, RGB: radiance coefficients. */
     private final double[] radiance = new double[3 * COUNT];
+    /** π × the radiance of the terrain that hides part of the sky, RGB; black until {@link #hiddenBy} sets it. */
+    private final Vector3d hidden = new Vector3d();
 
     /** The polynomial part of each harmonic at the unit direction (x, y, z): Y_lm = NORM · poly. */
     static double[] polynomials(double x, double y, double z, double[] out) {
@@ -90,6 +93,16 @@ public final class SkyIrradiance {
         return this;
     }
 
+    /**
+     * Sets what the terrain hiding part of the sky gives in its place, as the irradiance a surface would get if that
+     * terrain filled its whole hemisphere (π × its radiance); a share 1 − V of the sky hidden then gives
+     * {@code V · E(n) + (1 − V) · e} ({@code frame.glsl}'s two-argument skyIrradiance).
+     */
+    public SkyIrradiance hiddenBy(Vector3dc e) {
+        hidden.set(e);
+        return this;
+    }
+
     /** Radiance coefficient L_lm (index 0..8 in the order of the class comment), RGB. */
     public Vector3d coefficient(int i, Vector3d out) {
         return out.set(radiance[3 * i], radiance[3 * i + 1], radiance[3 * i + 2]);
@@ -109,15 +122,17 @@ public final class SkyIrradiance {
     /**
      * The nine RGB factors a shader multiplies the polynomials by (Â_l · L_lm · NORM_lm), so that E(n) =
      * c0 + c1·y + c2·z + c3·x + c4·xy + c5·yz + c6·(3y² − 1) + c7·xz + c8·(x² − z²): 9 multiply-adds per pixel, no
-     * texture read ({@code shaders/common/frame.glsl}, skyIrradiance).
+     * texture read ({@code shaders/common/frame.glsl}, skyIrradiance); then, tenth, the {@link #hiddenBy hidden
+     * sky's light}.
      */
     public Vector3fc[] shaderFactors() {
-        Vector3fc[] factors = new Vector3fc[COUNT];
+        Vector3fc[] factors = new Vector3fc[COUNT + 1];
         for (int i = 0; i < COUNT; i++) {
             double w = COSINE[i] * NORM[i];
             factors[i] = new Vector3f((float) (radiance[3 * i] * w), (float) (radiance[3 * i + 1] * w),
                     (float) (radiance[3 * i + 2] * w));
         }
+        factors[COUNT] = new Vector3f(hidden);
         return factors;
     }
 

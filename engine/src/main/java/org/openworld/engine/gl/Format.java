@@ -15,6 +15,8 @@ public enum Format {
     SRGB8_ALPHA8(GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE),
     /** One byte per texel, e.g. a coverage mask. */
     R8(GL_R8, GL_RED, GL_UNSIGNED_BYTE),
+    /** Two bytes per texel, e.g. two coverages read by one lookup. */
+    RG8(GL_RG8, GL_RG, GL_UNSIGNED_BYTE),
     /** One float per texel, e.g. heights in metres. */
     R32F(GL_R32F, GL_RED, GL_FLOAT),
     /** One half float per texel, uploaded from floats, e.g. a cloud density field. */

@@ -23,8 +23,11 @@ public final class FrameUniforms implements Labelled {
 
     private static final int MAT4 = 64;
     private static final int VEC4 = 16;
-    /** The sky's irradiance factors (spherical harmonics of order 2), one RGB vector each. */
-    public static final int SKY_FACTORS = 9;
+    /**
+     * The sky's irradiance factors (spherical harmonics of order 2) and the light of the terrain that hides part of
+     * it, one RGB vector each.
+     */
+    public static final int SKY_FACTORS = 10;
     /** 4 matrices, 8 vectors and the sky's factors, bytes. */
     static final int SIZE = 4 * MAT4 + 8 * VEC4 + SKY_FACTORS * VEC4;
 
@@ -33,8 +36,8 @@ public final class FrameUniforms implements Labelled {
      *
      * @param cameraPos the pass camera's eye (the sun's camera in SHADOW, the mirrored eye in REFLECTION)
      * @param viewerPos the viewer's eye, the MAIN camera's, whatever the pass
-     * @param sky       the {@value #SKY_FACTORS} factors of the sky's irradiance for any normal (frame.glsl's
-     *                  skyIrradiance; environment.SkyIrradiance#shaderFactors)
+     * @param sky       the nine factors of the sky's irradiance for any normal and the hidden sky's light
+     *                  (frame.glsl's skyIrradiance; environment.SkyIrradiance#shaderFactors)
      */
     public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
                          Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure,

@@ -15,6 +15,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *                     0.001, 0.01, 0.1; figure 12 uses 0.01. Added to the cascades' own biases too
  * @param kernel       side N of the percentage-closer filter: N × N depth tests a texel apart, averaged; odd. Figure
  *                     11's series is 1, 3, 5, 7
+ * @param penumbra     CASCADES: where the caster lies so far above the ground that the sun's disc blurs the edge
+ *                     wider than the filter, its tests spread to two texels apart (shaders/common/shadow.glsl)
  * @param cascades     maps of the CASCADES method, 1–4, each covering a farther slice of the view
  * @param splitBlend   where the slices are cut, between uniform (0: equal lengths) and logarithmic (1: equal ratios,
  *                     the same texels per pixel in every cascade); the practical scheme of Zhang et al.
@@ -38,6 +40,7 @@ public record ShadowSettings(
         @Setting(doc = "the paper's Z-buffer margin, in depth-buffer units (figure 10)", min = 0, max = 1)
         double margin,
         @Setting(doc = "side N of the N x N percentage-closer filter, odd (figure 11)", min = 1, max = 9) int kernel,
+        @Setting(doc = "CASCADES: softer shadow edges far from their casters (the sun's disc)") boolean penumbra,
         @Setting(doc = "number of cascades of the CASCADES method", min = 1, max = 4) int cascades,
         @Setting(doc = "cascade splits: 0 uniform, 1 logarithmic", min = 0, max = 1) double splitBlend,
         @Setting(doc = "how far from the viewer shadows reach", unit = "m", min = 10, max = 40000) double distance,
@@ -70,7 +73,7 @@ public record ShadowSettings(
         STAGGERED
     }
 
-    public static final ShadowSettings DEFAULTS = new ShadowSettings(Method.CASCADES, 2048, 0, 3, 4, 0.75, 8000,
+    public static final ShadowSettings DEFAULTS = new ShadowSettings(Method.CASCADES, 2048, 0, 3, true, 4, 0.75, 8000,
             1.0, 1.0, Refresh.STAGGERED, 0.05, false);
 
     public static final SettingsGroup<ShadowSettings> SETTINGS =

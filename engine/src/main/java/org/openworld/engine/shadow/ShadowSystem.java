@@ -182,7 +182,9 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         float far = (float) s.distance();
         o = vec4(o, paper ? 0 : (float) s.normalOffset(), paper ? 0 : (float) s.slopeBias(),
                 far * (1 - FADE), paper ? 0 : far);                                     // biasParams
-        vec4(o, viewer.x(), viewer.y(), viewer.z(), 0);                                  // viewerPos
+        // the sun's disc: metres of soft edge per metre between caster and ground (0: the filter's width only)
+        float penumbra = paper || !s.penumbra() ? 0 : (float) (2 * Math.tan(Math.toRadians(Sun.ANGULAR_RADIUS_DEG)));
+        vec4(o, viewer.x(), viewer.y(), viewer.z(), penumbra);                           // viewerPos
         block.update(blockData);
     }
 

@@ -15,7 +15,10 @@
  * 0.01, 0.1), against the surface shadowing itself where one texel's single depth stands for a tilted patch of
  * ground ("acne"), at the price of shadows that come loose from their casters when too large; and
  * <b>percentage-closer filtering</b> (figure 11's 1×1 to 7×7 kernels): the mean of N × N such tests a texel apart,
- * a soft edge N texels wide instead of a jagged one.
+ * a soft edge N texels wide instead of a jagged one. Beyond the paper, the sun's disc (0.53°) blurs an edge by
+ * 0.93 cm per metre between caster and ground: with {@code shadow.penumbra} one more test, against a depth
+ * {@code 1.5 N t / 0.0093} metres nearer the sun (t the texel), finds casters far enough for that blur to outgrow the
+ * filter, and there the N × N tests spread to two texels apart (no further: nearest-texel tests would show as steps).
  *
  * <h2>Why the paper's map fails on a big world, and cascades</h2>
  * One map over everything the camera sees spreads its texels over kilometres: 2048 texels over an 8 km view are 4 m
@@ -65,9 +68,9 @@
  *
  * <h2>Cost and limits</h2>
  * Per frame: one depth-only pass per cascade that moved (the terrain's vertex work again, at a coarser level), and
- * per lit pixel N² depth tests, 2N² in a blend band. Measured on llvmpipe in {@code docs/benchmarks.md} and
+ * per lit pixel N² + 1 depth tests, twice that in a blend band. Measured on llvmpipe in {@code docs/benchmarks.md} and
  * {@code docs/shadows.md}. Limits: a kept map lags the casters that change with the viewer (the terrain's levels, the
- * trees' fade) by the frames it waits; the clouds cast no shadows; shadows are hard-edged at the sun's scale (no penumbra widening with distance from the caster); the sphere
+ * trees' fade) by the frames it waits; the clouds cast no shadows; the penumbra widens an edge by at most twice the filter, into the shadow only; the sphere
  * fit wastes texels on a wide view; a sun within 8° of the zenith turns the maps' "up" to north, so the texel grid
  * turns once when the sun crosses that line; the margin, in depth units, means different metres for different boxes,
  * as it did in the paper.

@@ -3,13 +3,14 @@ package org.openworld.engine.sky;
 import org.joml.Vector3d;
 import org.joml.Vector3fc;
 import org.openworld.engine.environment.SkyIrradiance;
+import org.openworld.engine.environment.Sun;
 
 /**
  * The light the sky puts on the scene for one sun position, in display units (E / E_sun, linear sRGB): the direct
  * sun and the sky's ambient irradiance.
  * <ul>
  * <li>{@link #sun()}: T(r, μ_s)·1 through the {@link TransmittanceTable}, times the fraction of the solar disc (radius
- *     {@value #SUN_ANGULAR_RADIUS_DEG}°) above the eye's horizon, so the sun fades as it sets instead of switching
+ *     {@value Sun#ANGULAR_RADIUS_DEG}°) above the eye's horizon, so the sun fades as it sets instead of switching
  *     off.</li>
  * <li>{@link #ambient()}: E = ∫_{upper hemisphere} L cosθ dω from the {@link SkyView} table, which stores P = π·L, so
  *     E = 2 ∫₀^π dφ ∫₀^{π/2} (P/π) sin e cos e de (the sky is symmetric about the sun's plane), by the midpoint rule
@@ -21,8 +22,6 @@ import org.openworld.engine.environment.SkyIrradiance;
  */
 public final class SkyLight {
 
-    /** Angular radius of the solar disc, degrees (mean, seen from Earth). */
-    public static final double SUN_ANGULAR_RADIUS_DEG = 0.2666;
     /** Midpoint-rule directions over the azimuth 0..π for the ambient integral. */
     private static final int AMBIENT_AZIMUTHS = 32;
     /** Midpoint-rule directions over the elevation 0..π/2: sin e cos e is smooth, 16 are within 0.2 %. */
@@ -60,7 +59,8 @@ public final class SkyLight {
      * The sky of {@code view} around a sun towards {@code toSun} (world space) and the ground lit by {@code light},
      * of reflectance {@code groundAlbedo}, as {@link SkyIrradiance}: the upper hemisphere by the midpoint rule on
      * {@value #IRRADIANCE_AZIMUTHS} × {@value #IRRADIANCE_ELEVATIONS} directions (each azimuth from the sun's plane
-     * counted on both sides of it), the ground in closed form. A few thousand table reads: run when the sun moved.
+     * counted on both sides of it), the ground in closed form, and the light of the terrain where it hides the sky
+     * (SkyIrradiance#hiddenBy). A few thousand table reads: run when the sun moved.
      */
     public static SkyIrradiance irradiance(SkyView view, SkyLight light, Vector3fc toSun, double groundAlbedo) {
         Vector3d toward = new Vector3d(toSun.x(), 0, toSun.z());
@@ -87,8 +87,12 @@ public final class SkyLight {
                 }
             }
         }
-        Vector3d ground = light.sun().mul(Math.max(toSun.y(), 0)).add(light.ambient()).mul(groundAlbedo / Math.PI);
-        return sky.addLowerHemisphere(ground);
+        Vector3d sunOnGround = light.sun().mul(Math.max(toSun.y(), 0));
+        Vector3d ground = new Vector3d(sunOnGround).add(light.ambient()).mul(groundAlbedo / Math.PI);
+        // the terrain that hides the sky from a place faces that place; seen from all round, half of it faces the
+        // sun: so its light is the open ground's with half the sun's (SkyVisibility, the hidden share)
+        Vector3d hidden = sunOnGround.mul(0.5).add(light.ambient()).mul(groundAlbedo);
+        return sky.addLowerHemisphere(ground).hiddenBy(hidden);
     }
 
     private static Vector3d sunlight(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
@@ -96,7 +100,7 @@ public final class SkyLight {
         double horizonCos = -Math.sqrt(Math.max(1 - Math.pow(Atmosphere.BOTTOM_RADIUS / r, 2), 0));
         double horizonElevation = Math.asin(horizonCos);
         double visible = discFractionAbove((sunElevationRad - horizonElevation)
-                / Math.toRadians(SUN_ANGULAR_RADIUS_DEG));
+                / Math.toRadians(Sun.ANGULAR_RADIUS_DEG));
         if (visible <= 0) {
             return new Vector3d();
         }

@@ -12,6 +12,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param snowMode    where snow lies: from the snow map (figure 1b) or above a fixed height (figure 1a)
  * @param normalMap   perturb the normal with the materials' tangent-space normal maps (figure 3, "normal")
  * @param glossMap    add sun highlights and a sky reflection, scaled per texel by the gloss maps (figure 3, "gloss")
+ * @param skyOcclusion let the relief hide its share of the sky's light ({@link SkyVisibility}): valleys and the feet
+ *                    of cliffs darker in the shade, lit by the ground around instead
  * @param detailScale side of the fine texture tile on the ground; the coarse tile that is blended in to hide the
  *                    repetition is {@code shaders/terrain/material.glsl}'s {@code MAT_COARSE_FACTOR} times larger
  * @param farTexels   distance from the eye beyond which the terrain reads the {@link FarMaterial} baked once instead
@@ -26,6 +28,7 @@ public record MaterialSettings(
         SnowMode snowMode,
         @Setting(doc = "tangent-space normal maps on the materials") boolean normalMap,
         @Setting(doc = "gloss maps: sun highlights and sky reflection") boolean glossMap,
+        @Setting(doc = "the relief hides its share of the sky's light (horizon occlusion)") boolean skyOcclusion,
         @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
         @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
                 max = 100000) double farTexels,
@@ -65,6 +68,7 @@ public record MaterialSettings(
 
     public static final MaterialSettings DEFAULTS = new MaterialSettings(
             SnowMode.SNOW_MAP,
+            true,
             true,
             true,
             2.7,    // m: 512 texels over 2.7 m is 5 mm per texel, about one pixel on the ground at a walker's feet

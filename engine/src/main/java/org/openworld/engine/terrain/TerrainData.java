@@ -3,23 +3,25 @@ package org.openworld.engine.terrain;
 import java.nio.file.Path;
 
 /**
- * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5) and the snow
- * map (paper 2.2). Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
+ * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow
+ * map (paper 2.2) and how much sky each place sees (issue 21). Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
  *
  * @param pyramid the heights at every power-of-two resolution, level 0 the full map
  * @param snow    where snow lies
+ * @param sky     the share of the sky the relief leaves each place, for the light in the shadows
  */
-public record TerrainData(HeightPyramid pyramid, SnowMap snow) {
+public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky) {
 
     /** Stage names as {@link StageTimes} records them. */
     public static final String SYNTHESIS = "synthesis";
     public static final String IMPORT = "import";
     public static final String PYRAMID = "pyramid";
     public static final String SNOW_MAP = "snow map";
+    public static final String SKY_VISIBILITY = "sky view";
 
     /**
      * Makes the heights (synthesised from the seed, or imported when {@link TerrainSettings#importFile()} is set),
-     * their pyramid and the snow map, timing each stage into {@code times}.
+     * their pyramid, the snow map and the sky's visibility, timing each stage into {@code times}.
      *
      * @throws HeightImportException if the import file cannot be used
      */
@@ -29,6 +31,7 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow) {
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
-        return new TerrainData(pyramid, snow);
+        SkyVisibility sky = times.time(SKY_VISIBILITY, () -> SkyVisibility.of(pyramid));
+        return new TerrainData(pyramid, snow, sky);
     }
 }

@@ -17,9 +17,11 @@ import org.openworld.engine.gl.Texture2D;
  *   <li>{@code gradients}: (∂h/∂x, ∂h/∂z) of level 0 by central differences, RG16F with box-filtered mips. A
  *       gradient averages correctly under filtering (a normal would not), so distant coarse patches still shade
  *       with the slope of every sample beneath them;</li>
- *   <li>{@code snow}: the snow map's coverage, blurred by {@value #SNOW_BLUR_PASSES} binomial passes (a Gaussian of
- *       σ ≈ 1.7 texels) before upload, R8 with mips: the 0/1 map's texel squares would otherwise show as blocks
- *       close up, and the blur turns them into soft drifts that the material's threshold shapes.</li>
+ *   <li>{@code snow}: r the snow map's coverage, blurred by {@value #SNOW_BLUR_PASSES} binomial passes (a Gaussian
+ *       of σ ≈ 1.7 texels) before upload: the 0/1 map's texel squares would otherwise show as blocks close up, and
+ *       the blur turns them into soft drifts that the material's threshold shapes; g the share of the sky the
+ *       relief leaves each place ({@link SkyVisibility}), resampled to the snow map's grid. RG8 with mips: the
+ *       material reads both with the one lookup it already made for the snow.</li>
  * </ul>
  * Periodic maps repeat; imported ones clamp. Uploads go in strips of rows, so an 8192² map needs a staging buffer
  * of a few megabytes, not of the whole map.
@@ -36,7 +38,7 @@ final class TerrainMaps {
     final Texture2D snow;
 
     /** Makes and fills the three maps, handed to the system's owner as {@code terrain.heights}, ... */
-    TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap) {
+    TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap, SkyVisibility sky) {
         GlContext gl = context.gl();
         HeightMap base = pyramid.base();
         Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
@@ -48,13 +50,18 @@ final class TerrainMaps {
         gradients = context.own("gradients", Texture2D.withMips(gl, base.size(), base.size(), Format.RG16F, wrap));
         uploadGradients(gradients, base);
         gradients.generateMipmaps();
-        snow = context.own("snow", Texture2D.withMips(gl, snowMap.size(), snowMap.size(), Format.R8, wrap));
-        byte[] soft = blur(snowMap.coverage(), snowMap.size(), snowMap.periodic());
-        ByteBuffer coverage = MemoryUtil.memAlloc(soft.length).put(soft).flip();
+        int n = snowMap.size();
+        snow = context.own("snow", Texture2D.withMips(gl, n, n, Format.RG8, wrap));
+        byte[] soft = blur(snowMap.coverage(), n, snowMap.periodic());
+        byte[] visible = sky.resampled(n);
+        ByteBuffer texels = MemoryUtil.memAlloc(2 * soft.length);
         try {
-            snow.upload(0, 0, snowMap.size(), coverage);
+            for (int i = 0; i < soft.length; i++) {
+                texels.put(soft[i]).put(visible[i]);
+            }
+            snow.upload(0, 0, n, texels.flip());
         } finally {
-            MemoryUtil.memFree(coverage);
+            MemoryUtil.memFree(texels);
         }
         snow.generateMipmaps();
     }

@@ -87,6 +87,7 @@ public final class TerrainMaterials implements Labelled {
         if (u.light) {
             u.normalMap.set(settings.normalMap() ? 1 : 0);
             u.glossMap.set(settings.glossMap() ? 1 : 0);
+            u.skyOcclusion.set(settings.skyOcclusion() ? 1 : 0);
         }
     }
 
@@ -104,7 +105,7 @@ public final class TerrainMaterials implements Labelled {
 
     /**
      * The resolved uniform handles of material.glsl in one program: those of the layers (textures, scale, snow) and
-     * of the light (normal and gloss map switches), or of one of the two; the other part's handles are null.
+     * of the light (normal map, gloss map and sky occlusion switches), or of one of the two; the other part's handles are null.
      */
     public static final class Uniforms {
         private final ShaderProgram program;
@@ -117,6 +118,7 @@ public final class TerrainMaterials implements Labelled {
         private final Uniform.Vec2 snowBand;
         private final Uniform.Int normalMap;
         private final Uniform.Int glossMap;
+        private final Uniform.Float skyOcclusion;
 
         private Uniforms(ShaderProgram program, boolean layers, boolean light) {
             this.program = program;
@@ -129,6 +131,7 @@ public final class TerrainMaterials implements Labelled {
             snowBand = layers ? program.vec2("uMatSnowBand") : null;
             normalMap = light ? program.int1("uMatNormalMap") : null;
             glossMap = light ? program.int1("uMatGlossMap") : null;
+            skyOcclusion = light ? program.float1("uMatSkyOcclusion") : null;
         }
     }
 }

@@ -102,6 +102,7 @@ final class TerrainShading {
         ShaderProgram far = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")), base,
                 cells, unitHeights);
         farSamplers(far, unitFar);
+        far.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
         return new Lit(near, TerrainMaterials.lightUniforms(far));
     }
 

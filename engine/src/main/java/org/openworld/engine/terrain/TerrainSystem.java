@@ -117,7 +117,7 @@ public final class TerrainSystem implements EngineSystem {
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
         // 3. the GPU side: maps, the shared patch geometry, the programs and materials
-        maps = new TerrainMaps(context, data.pyramid(), data.snow());
+        maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
         renderer = context.own(new PatchRenderer(context, patterns));
         depthProgram = context.own("depth", context.shaders().program("terrain/terrain.vert", "terrain/depth.frag"));
         setPatchUniforms(depthProgram, base, cells, UNIT_HEIGHTS);

@@ -94,6 +94,14 @@
  * would wash out. Three times the lookups of the near material and the bake; the repetition measure from 100 m
  * drops from 0.95 to 0.15 (docs/terrain.md section 4).
  *
+ * <p><b>The sky the relief hides (issue 21).</b> Shadowed ground is lit by the sky's irradiance for its normal,
+ * E(n) from nine spherical-harmonic factors (the sky system's); {@link org.openworld.engine.terrain.SkyVisibility}
+ * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
+ * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
+ * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. Once at start
+ * (0.3–0.4 s, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
+ * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
+ *
  * <p><b>Near and far materials.</b> Far away the mip maps average most of a material away, so
  * {@link org.openworld.engine.terrain.FarMaterial} bakes it once: steps 1–3 of {@code material.glsl} per texel of two
  * textures over the tile (albedo and gloss, detail slope; 2 m texels by default). Patches are ordered nearest first

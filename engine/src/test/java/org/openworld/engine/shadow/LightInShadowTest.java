@@ -32,6 +32,7 @@ import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.sky.SkyView;
 import org.openworld.engine.sky.SolarPosition;
 import org.openworld.engine.sky.SunTables;
+import org.openworld.engine.terrain.SkyVisibility;
 import org.openworld.engine.terrain.TerrainSystem;
 
 /**
@@ -61,19 +62,25 @@ class LightInShadowTest {
     @TempDir
     static Path dir;
 
-    static Image render(Path wall, boolean shadow) {
+    /** A picture, and the share of the sky the terrain found its relief leaves each place. */
+    record Picture(Image image, SkyVisibility sky) {
+    }
+
+    static Picture render(Path wall, boolean shadow, String... more) {
         List<String> settings = new ArrayList<>(WallWorld.slopedTerrain(wall, SLOPE));
         // the geometric normal only and no sky reflection, so the picture is albedo × irradiance; clear sky
         settings.addAll(List.of("materials.normal-map=false", "materials.gloss-map=false", "clouds.cover=0",
                 "shadow.resolution=1024", "shadow.distance=400"));
+        settings.addAll(List.of(more));
+        TerrainSystem terrain = new TerrainSystem();
         try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings, new CullingSystem(),
-                new TerrainSystem(), new ShadowSystem(), new SkySystem())) {
+                terrain, new ShadowSystem(), new SkySystem())) {
             engine.setEnabled("shadow", shadow);
             engine.world().setResource(new TimeOfDay(HOURS, 0));
             engine.world().resource(Camera.class).setPose(ABOVE);
             engine.update();
             engine.render();
-            return engine.readImage();
+            return new Picture(engine.readImage(), terrain.data().sky());
         }
     }
 
@@ -123,35 +130,46 @@ class LightInShadowTest {
         return sum;
     }
 
-    @Test
-    void shadowedGroundOnASunlitSlopeGetsTheSkysAndTheGroundsLight() throws IOException {
-        Path wall = WallWorld.writeSloped(dir, SLOPE);
-        Image shadowed = render(wall, true);
-        Image lit = render(wall, false);
+    /**
+     * The light the tables predict on the slope, per channel: E_shadow, the sky and the ground's bounce on the
+     * slope's normal; E_sun, the sun's on it; and E_hidden, what the share of the sky the relief hides gives instead,
+     * the light of terrain of the ground's albedo under the sky and half the sun.
+     */
+    record Light(Vector3d inShadow, Vector3d sun, Vector3d hidden, Vector3f toSun) {
 
-        // the light the tables predict, per channel, on the slope's normal
-        SkySettings sky = SkySettings.DEFAULTS;
-        Vector3f toSun = SolarPosition.direction(HOURS, sky.latitude(), sky.declination());
-        double elevation = Math.asin(toSun.y);
-        SunTables tables = SunTables.build(AtmosphereTables.build(AtmosphereSettings.DEFAULTS), elevation,
-                ABOVE.y());
-        SkyLight light = tables.light();
-        double tan = Math.tan(Math.toRadians(SLOPE));
-        Vector3d n = new Vector3d(tan, 1, 0).normalize();
-        double albedo = AtmosphereSettings.DEFAULTS.groundAlbedo();
-        Vector3d ground = light.sun().mul(toSun.y).add(light.ambient()).mul(albedo * (1 - n.y) / 2);
-        Vector3d inShadow = skyIrradiance(tables.view(), toSun, n).add(ground);
-        Vector3d inSun = light.sun().mul(n.dot(toSun.x, toSun.y, toSun.z)).add(inShadow);
-        assertTrue(toSun.x > 0.3 && n.dot(toSun.x, toSun.y, toSun.z) > 0.8, "a morning sun in the east, on the slope");
+        static Light predicted() {
+            SkySettings sky = SkySettings.DEFAULTS;
+            Vector3f toSun = SolarPosition.direction(HOURS, sky.latitude(), sky.declination());
+            double elevation = Math.asin(toSun.y);
+            SunTables tables = SunTables.build(AtmosphereTables.build(AtmosphereSettings.DEFAULTS), elevation,
+                    ABOVE.y());
+            SkyLight light = tables.light();
+            Vector3d n = new Vector3d(Math.tan(Math.toRadians(SLOPE)), 1, 0).normalize();
+            double albedo = AtmosphereSettings.DEFAULTS.groundAlbedo();
+            Vector3d openGround = light.sun().mul(toSun.y).add(light.ambient()).mul(albedo);
+            Vector3d inShadow = skyIrradiance(tables.view(), toSun, n).add(openGround.mul((1 - n.y) / 2));
+            Vector3d sun = light.sun().mul(n.dot(toSun.x, toSun.y, toSun.z));
+            // the terrain that hides the sky: the open ground's light with half the sun's (half of it faces the sun)
+            Vector3d hidden = light.sun().mul(toSun.y / 2).add(light.ambient()).mul(albedo);
+            assertTrue(toSun.x > 0.3 && n.dot(toSun.x, toSun.y, toSun.z) > 0.8, "a morning sun in the east, on the slope");
+            return new Light(inShadow, sun, hidden, toSun);
+        }
 
-        // ground deep in the shadow: the ray to the sun passes the wall's west face (x = -16 m) 15 m below its top
+        /** E_shadow where the relief leaves {@code visible} of the sky: V · E_shadow + (1 − V) · E_hidden. */
+        Vector3d inShadow(double visible) {
+            return new Vector3d(inShadow).mul(visible).fma(1 - visible, hidden);
+        }
+    }
+
+    /** A pixel of ground deep in the wall's shadow: where it is, and at which pixel it shows. */
+    record Shadowed(double x, double z, int px, int py) {
+    }
+
+    /** Ground deep in the shadow: the ray to the sun passes the wall's west face (x = -16 m) 15 m below its top. */
+    static List<Shadowed> deepShadow(Vector3f toSun) {
         Matrix4fc viewProjection = ViewCamera.perspective(ABOVE, (float) W / H, Camera.NEAR, Camera.FAR)
                 .viewProjection();
-        double measured = 0;
-        double predicted = 0;
-        double darkest = Double.MAX_VALUE;
-        double darkestLuma = Double.MAX_VALUE;
-        int count = 0;
+        List<Shadowed> pixels = new ArrayList<>();
         for (double x = -120; x <= -20; x += 1) {
             double t = (-16 - x) / toSun.x;
             double rayAtWall = WallWorld.slopedGround(SLOPE, x) + t * toSun.y;
@@ -163,28 +181,77 @@ class LightInShadowTest {
                         (float) WallWorld.slopedGround(SLOPE, x), (float) z, 1));
                 int px = (int) ((clip.x / clip.w * 0.5 + 0.5) * W);
                 int py = (int) ((0.5 - clip.y / clip.w * 0.5) * H);
-                if (px < 0 || px >= W || py < 0 || py >= H) {
-                    continue;
+                if (px >= 0 && px < W && py >= 0 && py < H) {
+                    pixels.add(new Shadowed(x, z, px, py));
                 }
-                Vector3d sunlit = scene(lit, px, py);
-                double ratio = luminance(scene(shadowed, px, py)) / luminance(sunlit);
-                // the same albedo under the predicted light: the lit pixel's colour times E_shadow / E_lit
-                Vector3d expected = new Vector3d(sunlit).mul(inShadow).div(inSun);
-                double expectedRatio = luminance(expected) / luminance(sunlit);
-                measured += ratio;
-                predicted += expectedRatio;
-                darkest = Math.min(darkest, ratio / expectedRatio);
-                darkestLuma = Math.min(darkestLuma, shadowed.luma(px, py) / lit.luma(px, py));
-                count++;
             }
         }
-        assertTrue(count > 200, "shadowed ground in the picture: " + count + " pixels");
-        measured /= count;
-        predicted /= count;
-        String numbers = "shadow / sunlit over " + count + " pixels: measured " + measured + ", predicted "
+        assertTrue(pixels.size() > 200, "shadowed ground in the picture: " + pixels.size() + " pixels");
+        return pixels;
+    }
+
+    @Test
+    void shadowedGroundOnASunlitSlopeGetsTheSkysAndTheGroundsLight() throws IOException {
+        Path wall = WallWorld.writeSloped(dir, SLOPE);
+        Picture shadowed = render(wall, true);
+        Image lit = render(wall, false).image();
+        Light light = Light.predicted();
+
+        double measured = 0;
+        double predicted = 0;
+        double darkest = Double.MAX_VALUE;
+        double darkestLuma = Double.MAX_VALUE;
+        List<Shadowed> pixels = deepShadow(light.toSun());
+        for (Shadowed p : pixels) {
+            Vector3d sunlit = scene(lit, p.px(), p.py());
+            double ratio = luminance(scene(shadowed.image(), p.px(), p.py())) / luminance(sunlit);
+            // the same albedo under the predicted light: the lit pixel's colour times E_shadow / E_lit, both with
+            // the share of the sky the wall and the slope leave there
+            Vector3d inShadow = light.inShadow(shadowed.sky().visibleAt(p.x(), p.z()));
+            Vector3d expected = new Vector3d(sunlit).mul(inShadow).div(new Vector3d(light.sun()).add(inShadow));
+            double expectedRatio = luminance(expected) / luminance(sunlit);
+            measured += ratio;
+            predicted += expectedRatio;
+            darkest = Math.min(darkest, ratio / expectedRatio);
+            darkestLuma = Math.min(darkestLuma, shadowed.image().luma(p.px(), p.py()) / lit.luma(p.px(), p.py()));
+        }
+        measured /= pixels.size();
+        predicted /= pixels.size();
+        String numbers = "shadow / sunlit over " + pixels.size() + " pixels: measured " + measured + ", predicted "
                 + predicted + " (scene luminance); darkest pixel " + darkest + " of its prediction, "
                 + darkestLuma + " of the sunlit pixel's display luma";
         assertEquals(predicted, measured, 0.2 * predicted, numbers);
         assertTrue(darkest > 0.8, "no dark holes: " + numbers);
+    }
+
+    @Test
+    void theWallHidesItsShareOfTheSky() throws IOException {
+        Path wall = WallWorld.writeSloped(dir, SLOPE);
+        Picture occluded = render(wall, true);
+        Image open = render(wall, true, "materials.sky-occlusion=false").image();
+        Light light = Light.predicted();
+
+        double measured = 0;
+        double predicted = 0;
+        double visible = 0;
+        List<Shadowed> pixels = deepShadow(light.toSun());
+        for (Shadowed p : pixels) {
+            Vector3d unhidden = scene(open, p.px(), p.py());
+            double v = occluded.sky().visibleAt(p.x(), p.z());
+            Vector3d expected = new Vector3d(unhidden).mul(light.inShadow(v)).div(light.inShadow());
+            measured += luminance(scene(occluded.image(), p.px(), p.py())) / luminance(unhidden);
+            predicted += luminance(expected) / luminance(unhidden);
+            visible += v;
+        }
+        measured /= pixels.size();
+        predicted /= pixels.size();
+        visible /= pixels.size();
+        String numbers = "with / without the occlusion over " + pixels.size() + " shadowed pixels: measured "
+                + measured + ", predicted " + predicted + "; mean share of the sky seen " + visible;
+        // the wall and the slope hide a third of the sky, and the terrain's light differs enough from the sky's
+        // that taking it in shows (here it is brighter: the sky it hides is the slope's low eastern sky)
+        assertTrue(visible < 0.8, "the wall hides a good share of the sky: " + numbers);
+        assertTrue(Math.abs(predicted - 1) > 0.03, "the occlusion changes the light: " + numbers);
+        assertEquals(predicted, measured, 0.01, numbers);
     }
 }

@@ -9,6 +9,7 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.environment.SkyIrradiance;
+import org.openworld.engine.environment.Sun;
 
 class SkyLightTest {
 
@@ -47,7 +48,7 @@ class SkyLightTest {
     @Test
     void theSunFadesAsItsDiscSets() {
         double horizon = -Math.acos(Atmosphere.BOTTOM_RADIUS / SkyIntegrator.eyeRadius(ALTITUDE));
-        double radius = Math.toRadians(SkyLight.SUN_ANGULAR_RADIUS_DEG);
+        double radius = Math.toRadians(Sun.ANGULAR_RADIUS_DEG);
         double above = luminance(light(Math.toDegrees(horizon + 0.5 * radius)).sun());
         double half = luminance(light(Math.toDegrees(horizon)).sun());
         double below = luminance(light(Math.toDegrees(horizon - 1.01 * radius)).sun());

@@ -109,6 +109,8 @@ class MaterialRenderTest {
             if (fragment.endsWith("material-cases.frag")) {
                 centre = program.vec3("uCentre");
             }
+            program.use();
+            program.float1("uSkyVisibility").set(1f);
             materials = new TerrainMaterials(context.gl(), textures);
             triangle = GlTestSupport.fullScreenTriangle(context.gl());
         }
@@ -405,6 +407,7 @@ class MaterialRenderTest {
             materials = new TerrainMaterials(context.gl(), textures);
             program.use();
             topUniform.set(top);
+            program.float1("uSkyVisibility").set(1f);
         }
 
         @Override

@@ -1,0 +1,190 @@
+package org.openworld.engine.terrain;
+
+import java.util.stream.IntStream;
+
+/**
+ * How much of its sky each place of the ground sees (issue 21, the light in the shadows): horizon-based ambient
+ * occlusion from the height field, one value per sample of a map as fine as the snow map, computed once on the CPU
+ * when the world is built.
+ *
+ * <p>Along each of {@value #DIRECTIONS} azimuths φ the horizon is the highest elevation at which the ground is seen,
+ * {@code tan h_φ = max_r (H(p + r·φ) − H(p)) / r}, over distances r growing by {@value #STEP_GROWTH} from one sample
+ * to {@value #REACH_METRES} m, each read from the pyramid level whose samples lie about {@code r / 4} apart (a far
+ * peak needs no fine level, and the low-passed level does not alias). The ground's own slope hides nothing that the
+ * sky light does not already leave out for a tilted normal, so only what rises above the tangent plane counts: the
+ * excess angle {@code α_φ = max(0, h_φ − t_φ)}, t_φ the plane's elevation along φ. In one azimuth the sky between
+ * elevations α and 90° gives the share {@code ∫_α^{π/2} sin e cos e de / ∫_0^{π/2} sin e cos e de = cos² α} of a
+ * horizontal surface's irradiance from that azimuth (the cosine of incidence times the solid angle's cos e), so
+ * <pre>  V = (1/N) Σ_φ cos² α_φ</pre>
+ * is 1 on open ground and on a plain slope, about 0.75 at the foot of a long vertical wall, and lower down a narrow
+ * gorge. The material shades with {@code V · E_sky(n) + (1 − V) · E_hidden}: the hidden sky replaced by the light
+ * of the terrain that hides it, {@code E_hidden = albedo · (E_sun · sin(elevation) / 2 + E_up)} (the sky system's
+ * reckoning: terrain lit by the sky and, since half of what surrounds a place faces the sun, by half the sun).
+ *
+ * <p>Cost: {@code N · log(R/d) / log(growth)} bilinear lookups per sample, made on the first pyramid level of at
+ * most {@value #MAX_SIZE}² samples (8 m apart on the default map: occlusion varies over tens of metres) and
+ * resampled to the snow map's grid, whose texture carries it. Limits: eight azimuths miss a narrow notch between them; the tangent plane stands in for the hemisphere
+ * of a tilted surface (exact for a horizontal one); the sky is taken as uniform, so a wall hiding the sun's bright
+ * side of the sky darkens as much as one hiding the dim side; the occluder's light is the same everywhere, so the
+ * shadowed face of the wall that casts a shadow counts as half sunlit.
+ */
+public final class SkyVisibility {
+
+    /** Azimuths at which the horizon is found. */
+    static final int DIRECTIONS = 8;
+    /** How far the horizon is searched, metres: beyond, a 1 km mountain stands under 20° and hides little. */
+    static final double REACH_METRES = 3000;
+    /** Ratio of consecutive search distances. */
+    static final double STEP_GROWTH = 1.4;
+    /** Largest side of the map, samples. */
+    public static final int MAX_SIZE = 512;
+    /** Samples of the level read at distance r are at most r / LEVEL_SPAN apart. */
+    private static final double LEVEL_SPAN = 4;
+
+    private final int size;
+    private final double spacing;
+    private final byte[] values;
+    private final boolean periodic;
+
+    private SkyVisibility(int size, double spacing, byte[] values, boolean periodic) {
+        this.size = size;
+        this.spacing = spacing;
+        this.values = values;
+        this.periodic = periodic;
+    }
+
+    /** The visibility on the first level of the pyramid no larger than {@link #MAX_SIZE}. */
+    public static SkyVisibility of(HeightPyramid pyramid) {
+        int level = 0;
+        while (pyramid.level(level).size() > MAX_SIZE) {
+            level++;
+        }
+        return of(pyramid, level);
+    }
+
+    /** The visibility at the samples of pyramid level {@code level}, with the horizon searched over the pyramid. */
+    static SkyVisibility of(HeightPyramid pyramid, int level) {
+        HeightMap grid = pyramid.level(level);
+        int n = grid.size();
+        byte[] values = new byte[n * n];
+        double[] cos = new double[DIRECTIONS];
+        double[] sin = new double[DIRECTIONS];
+        for (int m = 0; m < DIRECTIONS; m++) {
+            cos[m] = Math.cos(2 * Math.PI * m / DIRECTIONS);
+            sin[m] = Math.sin(2 * Math.PI * m / DIRECTIONS);
+        }
+        double d = grid.spacing();
+        int steps = (int) Math.ceil(Math.log(REACH_METRES / d) / Math.log(STEP_GROWTH)) + 1;
+        double[] distance = new double[steps];
+        HeightMap[] levelAt = new HeightMap[steps];
+        for (int j = 0; j < steps; j++) {
+            distance[j] = d * Math.pow(STEP_GROWTH, j);
+            int k = level;
+            while (k + 1 < pyramid.levelCount() && pyramid.level(k + 1).spacing() <= distance[j] / LEVEL_SPAN) {
+                k++;
+            }
+            levelAt[j] = pyramid.level(k);
+        }
+        IntStream.range(0, n).parallel().forEach(row -> {
+            double z = (row - n / 2.0) * d;
+            for (int col = 0; col < n; col++) {
+                double x = (col - n / 2.0) * d;
+                float h0 = grid.sample(col, row);
+                double gx = (grid.sample(col + 1, row) - grid.sample(col - 1, row)) / (2 * d);
+                double gz = (grid.sample(col, row + 1) - grid.sample(col, row - 1)) / (2 * d);
+                double sum = 0;
+                for (int m = 0; m < DIRECTIONS; m++) {
+                    double horizon = Double.NEGATIVE_INFINITY;
+                    for (int j = 0; j < steps; j++) {
+                        double r = distance[j];
+                        double rise = (bilinear(levelAt[j], x + r * cos[m], z + r * sin[m]) - h0) / r;
+                        horizon = Math.max(horizon, rise);
+                    }
+                    // above the tangent plane, and at most all of the slice (a wall over a steep slope hides more
+                    // than 90° of it from the plane up)
+                    double excess = Math.atan(horizon) - Math.atan(gx * cos[m] + gz * sin[m]);
+                    double c = excess > 0 ? Math.cos(Math.min(excess, Math.PI / 2)) : 1;
+                    sum += c * c;
+                }
+                values[row * n + col] = (byte) Math.round(255 * sum / DIRECTIONS);
+            }
+        });
+        return new SkyVisibility(n, d, values, grid.periodic());
+    }
+
+    /**
+     * The visibility at the samples of a map of the same extent, {@code n} ≥ {@link #size()} samples per side (a
+     * power-of-two multiple), interpolated bilinearly: sample i of the finer map lies at coordinate i / f of this one.
+     */
+    public byte[] resampled(int n) {
+        int f = n / size;
+        if (f * size != n) {
+            throw new IllegalArgumentException("resampling " + size + " samples to " + n);
+        }
+        byte[] out = new byte[n * n];
+        for (int row = 0; row < n; row++) {
+            int r0 = row / f;
+            float fz = (float) (row % f) / f;
+            for (int col = 0; col < n; col++) {
+                int c0 = col / f;
+                float fx = (float) (col % f) / f;
+                float top = raw(c0, r0) + (raw(c0 + 1, r0) - raw(c0, r0)) * fx;
+                float bottom = raw(c0, r0 + 1) + (raw(c0 + 1, r0 + 1) - raw(c0, r0 + 1)) * fx;
+                out[row * n + col] = (byte) Math.round(top + (bottom - top) * fz);
+            }
+        }
+        return out;
+    }
+
+    /** The visibility at world position (x, z), metres, at the nearest sample (as the snow map's texture holds it). */
+    public double visibleAt(double x, double z) {
+        return raw((int) Math.round(x / spacing + size / 2.0), (int) Math.round(z / spacing + size / 2.0)) / 255.0;
+    }
+
+    /** The stored byte at (col, row), wrapped or clamped like the heights. */
+    private int raw(int col, int row) {
+        int c = periodic ? col & (size - 1) : Math.max(0, Math.min(col, size - 1));
+        int r = periodic ? row & (size - 1) : Math.max(0, Math.min(row, size - 1));
+        return values[r * size + c] & 0xFF;
+    }
+
+    /** {@link HeightMap#heightAt}, without its range checks: the search's inner loop, a third of the build's time. */
+    private static float bilinear(HeightMap map, double x, double z) {
+        int n = map.size();
+        float[] h = map.heights();
+        double gx = x / map.spacing() + n / 2.0;
+        double gz = z / map.spacing() + n / 2.0;
+        int x0 = (int) Math.floor(gx);
+        int z0 = (int) Math.floor(gz);
+        float fx = (float) (gx - x0);
+        float fz = (float) (gz - z0);
+        int xa;
+        int xb;
+        int za;
+        int zb;
+        if (map.periodic()) {
+            xa = x0 & (n - 1);
+            xb = (x0 + 1) & (n - 1);
+            za = (z0 & (n - 1)) * n;
+            zb = ((z0 + 1) & (n - 1)) * n;
+        } else {
+            xa = Math.max(0, Math.min(n - 1, x0));
+            xb = Math.max(0, Math.min(n - 1, x0 + 1));
+            za = Math.max(0, Math.min(n - 1, z0)) * n;
+            zb = Math.max(0, Math.min(n - 1, z0 + 1)) * n;
+        }
+        float top = h[za + xa] + (h[za + xb] - h[za + xa]) * fx;
+        float bottom = h[zb + xa] + (h[zb + xb] - h[zb + xa]) * fx;
+        return top + (bottom - top) * fz;
+    }
+
+    public int size() {
+        return size;
+    }
+
+    /** The visibility at sample (col, row), 0..1 (stored in steps of 1/255). */
+    public double at(int col, int row) {
+        return (values[row * size + col] & 0xFF) / 255.0;
+    }
+
+}

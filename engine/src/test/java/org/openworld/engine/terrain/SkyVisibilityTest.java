@@ -1,0 +1,81 @@
+package org.openworld.engine.terrain;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.function.DoubleBinaryOperator;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@link SkyVisibility} against what it must give in closed form: the whole sky on open ground and on a plain slope
+ * (the ground's own tilt hides nothing the normal does not), and at the foot of a cliff the share the cliff hides.
+ */
+class SkyVisibilityTest {
+
+    static final int N = 512;
+    static final double SPACING = 16;
+
+    /** A map of N² samples, not periodic (the edges clamp), with heights f(x, z) in metres. */
+    static HeightPyramid world(DoubleBinaryOperator f) {
+        float[] h = new float[N * N];
+        for (int row = 0; row < N; row++) {
+            for (int col = 0; col < N; col++) {
+                h[row * N + col] = (float) f.applyAsDouble((col - N / 2.0) * SPACING, (row - N / 2.0) * SPACING);
+            }
+        }
+        return HeightPyramid.build(new HeightMap(N, SPACING, h, false));
+    }
+
+    /** The sample index of coordinate x (metres). */
+    static int index(double x) {
+        return (int) Math.round(x / SPACING + N / 2.0);
+    }
+
+    @Test
+    void openGroundSeesTheWholeSky() {
+        SkyVisibility v = SkyVisibility.of(world((x, z) -> 100), 0);
+        assertEquals(1.0, v.at(N / 2, N / 2), 1e-9);
+        assertEquals(1.0, v.at(3, N - 5), 1e-9);
+    }
+
+    @Test
+    void aPlainSlopeHidesNothingBeyondItsOwnTilt() {
+        // 30° rising towards +x: measured from the ground itself, the uphill horizon is 30° high, which the sky
+        // light of the tilted normal already leaves out
+        double tan = Math.tan(Math.toRadians(30));
+        SkyVisibility v = SkyVisibility.of(world((x, z) -> tan * x), 0);
+        for (double x : new double[] {-500, 0, 400}) {
+            assertTrue(v.at(index(x), index(0)) >= 254 / 255.0, "on the slope at x = " + x + ": "
+                    + v.at(index(x), index(0)));
+        }
+        // and not because it ignores the ground: from the flat ground at the slope's foot the slope hides, along
+        // each azimuth φ towards it, the sky below its elevation there, atan(tan 30° · cos φ)
+        SkyVisibility kink = SkyVisibility.of(world((x, z) -> tan * Math.max(x, 0)), 0);
+        double expected = 0;
+        for (int m = 0; m < SkyVisibility.DIRECTIONS; m++) {
+            double c = Math.cos(Math.atan(tan * Math.max(Math.cos(2 * Math.PI * m / SkyVisibility.DIRECTIONS), 0)));
+            expected += c * c / SkyVisibility.DIRECTIONS;
+        }
+        assertEquals(expected, kink.at(index(-32), index(0)), 0.02, "at the foot of the slope");
+        assertTrue(expected < 0.95, "the slope hides a share: " + expected);
+    }
+
+    @Test
+    void theFootOfACliffSeesTheSkyTheCliffLeaves() {
+        double height = 400;
+        SkyVisibility v = SkyVisibility.of(world((x, z) -> x >= 0 ? height : 0), 0);
+        for (double d : new double[] {-96, -192, -400, -800}) {
+            // closed form for the same azimuths: towards the cliff (cos φ > 0) its top stands at atan(H cos φ / d)
+            double expected = 0;
+            for (int m = 0; m < SkyVisibility.DIRECTIONS; m++) {
+                double c = Math.cos(2 * Math.PI * m / SkyVisibility.DIRECTIONS);
+                double rise = c > 1e-9 ? Math.cos(Math.atan(height * c / -d)) : 1;
+                expected += rise * rise / SkyVisibility.DIRECTIONS;
+            }
+            double measured = v.at(index(d), index(0));
+            assertEquals(expected, measured, 0.06, d + " m from the cliff");
+        }
+        assertEquals(1.0, v.at(index(-2500), index(0)), 0.03, "far from the cliff");
+        assertTrue(v.at(index(-96), index(0)) < 0.8, "at its foot: " + v.at(index(-96), index(0)));
+    }
+}
