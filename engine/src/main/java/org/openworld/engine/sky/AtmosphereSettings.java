@@ -107,7 +107,7 @@ public record AtmosphereSettings(
             0.8,    // g: Bruneton's and Hillaire's aerosol anisotropy, a bright halo around the sun
             0.3,    // albedo: grass, rock and some snow
             Fog.AERIAL,
-            20_000); // fog distance: at the default 64 km view range 4 % of a mountain shows through
+            20_000); // fog distance: at 64 km, where the aerial table ends, 4 % of a surface shows through
 
     public static final SettingsGroup<AtmosphereSettings> SETTINGS =
             SettingsGroup.of("atmosphere", AtmosphereSettings.class, DEFAULTS);
