@@ -21,7 +21,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *                      are needed for the colours to settle, because scattering does not blend additively in RGB.
  *                      Up to 32, the reference {@link SkyPicture}'s findings are measured against
  * @param outerSamples  SINGLE mode: points of the outer sum along the view ray (equation 4); the paper found 2
- *                      enough, with physical constants 16 are needed (docs/sky.md); 1 shows why
+ *                      enough, with physical constants 16 are needed, with normalised ones 4 (docs/sky.md); 1
+ *                      shows why
  * @param innerSamples  SINGLE mode: points of the inner sum toward the sun (equation 3's optical depth); as outer
  * @param haze          multiplier of the aerosol (Mie) density: 0 clean air, 1 a clear day, 10+ a hazy one
  * @param ozone         multiplier of the 300 Dobson-unit ozone layer; ozone absorbs orange light and keeps the
