@@ -81,7 +81,7 @@ final class FiguresCommand implements Callable<Integer> {
                     ShotCommand command = (ShotCommand) job.command();
                     ShotCommand.Result shot = command.take();
                     renderer = shot.renderer() + ", " + shot.contextMode();
-                    measured = twilight(job.figure(), command);
+                    measured = twilight(job.figure(), Launch.settings(command.render));
                 }
                 case HEIGHTMAP -> ((HeightmapCommand) job.command()).call();
                 case STRIP -> {
@@ -137,8 +137,8 @@ final class FiguresCommand implements Callable<Integer> {
      * Under figure 9a when its sky has the paper's normalised constants: the zenith's luminance with the sun 4°
      * below the horizon against the default sky's, the issue's check of figure 9's dark dawn ({@code TwilightTest}).
      */
-    private static String twilight(Figure figure, ShotCommand shot) {
-        AtmosphereSettings air = Launch.settings(shot.render).get(AtmosphereSettings.class);
+    static String twilight(Figure figure, Settings settings) {
+        AtmosphereSettings air = settings.get(AtmosphereSettings.class);
         if (!figure.id().equals("9a") || air.constants() != AtmosphereSettings.Constants.NORMALISED) {
             return "";
         }

@@ -13,7 +13,7 @@ import org.openworld.engine.settings.SettingsGroup;
  *                      the paper's figure 9 a and f
  * @param constants     the air's constants: {@code PHYSICAL} (Earth's, in metres: Bruneton 2017) or {@code NORMALISED}
  *                      (the paper's: height normalised by the shell's thickness H0, O'Neil 2005's scale depths and
- *                      K_R, K_M, no ozone; see {@link Atmosphere}). Either scattering model runs on either
+ *                      K_R, K_M, no ozone; see {@link Atmosphere}). Either scattering model runs on either set
  * @param component     which particles scatter light toward the eye (figure 8): {@code BOTH}, {@code RAYLEIGH}
  *                      (molecules, the blue background) or {@code MIE} (aerosols, the glow around the sun).
  *                      Extinction always counts every particle, so only the in-scattering changes
