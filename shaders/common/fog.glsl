@@ -3,6 +3,8 @@
 // sun of the moment (engine: org.openworld.engine.sky.AerialPerspective): per view direction and distance, the
 // light scattered into the ray (display units) and the mean transmittance. Seen colour:
 //   c' = c * transmittance + inScattered
+// With atmosphere.fog=simple the table holds the paper's distance fog instead, transmittance exp(-d/D) and the
+// horizon's colour times 1 - exp(-d/D): the same lookup and blend.
 // Without a sky system the engine binds a neutral table (nothing added, everything transmitted).
 #include "common/frame.glsl"
 #include "sky/atmosphere.glsl"

@@ -13,6 +13,10 @@ import java.util.stream.Collectors;
 import org.openworld.demo.Figure.Tool;
 import org.openworld.engine.Engine;
 import org.openworld.engine.settings.Settings;
+import org.openworld.engine.sky.AtmosphereSettings;
+import org.openworld.engine.sky.AtmosphereTables;
+import org.openworld.engine.sky.SkyPicture;
+import org.openworld.engine.sky.SkyReference;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -74,8 +78,10 @@ final class FiguresCommand implements Callable<Integer> {
             String measured = "";
             switch (job.figure().tool()) {
                 case SHOT -> {
-                    ShotCommand.Result shot = ((ShotCommand) job.command()).take();
+                    ShotCommand command = (ShotCommand) job.command();
+                    ShotCommand.Result shot = command.take();
                     renderer = shot.renderer() + ", " + shot.contextMode();
+                    measured = twilight(job.figure(), Launch.settings(command.render));
                 }
                 case HEIGHTMAP -> ((HeightmapCommand) job.command()).call();
                 case STRIP -> {
@@ -125,6 +131,24 @@ final class FiguresCommand implements Callable<Integer> {
             Launch.settings(((ShotCommand) command).render);
         }
         return new Job(figure, printed, command);
+    }
+
+    /**
+     * Under figure 9a when its sky has the paper's normalised constants: the zenith's luminance with the sun 4°
+     * below the horizon against the default sky's, the issue's check of figure 9's dark dawn ({@code TwilightTest}).
+     */
+    static String twilight(Figure figure, Settings settings) {
+        AtmosphereSettings air = settings.get(AtmosphereSettings.class);
+        if (!figure.id().equals("9a") || air.constants() != AtmosphereSettings.Constants.NORMALISED) {
+            return "";
+        }
+        double sun = Math.toRadians(-4);
+        double self = SkyReference.zenithLuminance(AtmosphereTables.build(air), sun, SkyPicture.EYE_ALTITUDE_M);
+        double reference = SkyReference.zenithLuminance(AtmosphereTables.build(AtmosphereSettings.DEFAULTS), sun,
+                SkyPicture.EYE_ALTITUDE_M);
+        return String.format(Locale.ROOT, "zenith luminance with the sun 4° below the horizon: %.3g in this sky, "
+                + "%.3g in the default one (multiple scattering, physical constants), %.2f times", self, reference,
+                self / reference);
     }
 
     /** The overrides the heightmap command reads (engine.* and terrain.*); the others do not change its maps. */

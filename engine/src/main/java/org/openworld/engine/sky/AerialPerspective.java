@@ -17,9 +17,19 @@ import org.joml.Vector4d;
  * from the eye to d_k in display units (π·L / E_sun, linear sRGB) and the mean of the RGB transmittance over the
  * three channels. Before the first slice the shader fades from (0, 0, 0, 1) at d = 0.
  * <p>
- * One ray per direction is marched slice after slice with {@value #STEPS_PER_SLICE} steps each, in the scattering
- * mode and component of the settings ({@link SkyIntegrator}); beyond the ground or the top of the atmosphere the
- * slices repeat the last value.
+ * {@link AtmosphereSettings#fog()} chooses what fills it:
+ * <ul>
+ * <li>{@code AERIAL}: one ray per direction is marched slice after slice with {@value #STEPS_PER_SLICE} steps each,
+ *     in the scattering mode and component of the settings ({@link SkyIntegrator}); beyond the ground or the top of
+ *     the atmosphere the slices repeat the last value.</li>
+ * <li>{@code SIMPLE}: the paper's distance fog (section 1's "simple fog effect"), OpenGL's classic exponential fog:
+ *     T = e^(−d/D) with D = {@link AtmosphereSettings#fogDistance()}, grey, and in-scattered light
+ *     C_fog·(1 − T), so a surface fades as {@code c·T + C_fog·(1 − T)}. The paper gives neither the formula nor
+ *     the colour; the fog colour C_fog here is the sky's own horizon (elevation 0 in the {@link SkyView}) at each
+ *     azimuth from the sun, so distant ground fades into the sky behind it, orange towards a low sun and blue away
+ *     from it. It ignores altitude and elevation: the fog is as thick looking down as looking along the ground.
+ *     Same table, same shader, no marching.</li>
+ * </ul>
  */
 public final class AerialPerspective {
 
@@ -42,8 +52,40 @@ public final class AerialPerspective {
         this.buildMillis = buildMillis;
     }
 
+    /**
+     * Fills the volume for a sun at {@code sunElevationRad} as the settings' fog asks: the scattering marched
+     * ({@code AERIAL}) or the paper's distance fog towards {@code view}'s horizon ({@code SIMPLE}).
+     */
+    public static AerialPerspective build(AtmosphereTables t, SkyView view, double sunElevationRad,
+                                          double cameraAltitudeM) {
+        return t.settings().fog() == AtmosphereSettings.Fog.SIMPLE
+                ? simpleFog(view, t.settings().fogDistance())
+                : scattered(t, sunElevationRad, cameraAltitudeM);
+    }
+
+    /** The paper's fog: T = e^(−d/D) and the horizon colour of each azimuth times 1 − T, every elevation alike. */
+    static AerialPerspective simpleFog(SkyView view, double fogDistanceM) {
+        long start = System.nanoTime();
+        float[] rgba = new float[WIDTH * HEIGHT * DEPTH * 4];
+        Vector3d horizon = new Vector3d();
+        for (int x = 0; x < WIDTH; x++) {
+            view.sample(Math.PI * x / (WIDTH - 1.0), 0, horizon);
+            for (int z = 0; z < DEPTH; z++) {
+                double transmittance = Math.exp(-sliceEnd(z) / fogDistanceM);
+                for (int y = 0; y < HEIGHT; y++) {
+                    int i = (((z * HEIGHT) + y) * WIDTH + x) * 4;
+                    rgba[i] = (float) (horizon.x * (1 - transmittance));
+                    rgba[i + 1] = (float) (horizon.y * (1 - transmittance));
+                    rgba[i + 2] = (float) (horizon.z * (1 - transmittance));
+                    rgba[i + 3] = (float) transmittance;
+                }
+            }
+        }
+        return new AerialPerspective(rgba, (System.nanoTime() - start) / 1e6);
+    }
+
     /** Marches every direction of the volume for a sun at {@code sunElevationRad}, rows in parallel. */
-    public static AerialPerspective build(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
+    static AerialPerspective scattered(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
         long start = System.nanoTime();
         float[] rgba = new float[WIDTH * HEIGHT * DEPTH * 4];
         IntStream.range(0, HEIGHT).parallel().forEach(y -> {

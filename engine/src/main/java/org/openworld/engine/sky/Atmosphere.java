@@ -1,9 +1,10 @@
 package org.openworld.engine.sky;
 
 /**
- * Earth's atmosphere in SI units for one {@link Spectrum} and {@link AtmosphereSettings}: the particles, their
- * density profiles and their phase functions. The values are Bruneton 2017's ("Precomputed Atmospheric Scattering:
- * a New Implementation", its demo's constants), which Hillaire 2020 uses too.
+ * The atmosphere for one {@link Spectrum} and {@link AtmosphereSettings}: the particles, their density profiles and
+ * their phase functions, in SI units. {@link AtmosphereSettings#constants()} picks one of two sets of constants.
+ * <p>{@code PHYSICAL}: Earth's, Bruneton 2017's ("Precomputed Atmospheric Scattering: a New Implementation", its
+ * demo's constants), which Hillaire 2020 uses too.
  * <ul>
  * <li>Rayleigh (molecules): scattering β_R(λ) = 1.24062·10⁻⁶·(λ / 1 µm)⁻⁴ m⁻¹ at sea level, no absorption,
  *     density e^(−h / 8 km), phase p_R(θ) = 3/(16π)·(1 + cos²θ).</li>
@@ -14,7 +15,14 @@ package org.openworld.engine.sky;
  *     a tent profile (0 at 10 km, 1 at 25 km, 0 at 40 km, integral 15 km) and n_max chosen for 300 Dobson units
  *     (times {@code ozone}). Ozone absorbs around 600 nm: it is why the twilight zenith stays blue.</li>
  * </ul>
- * The planet is a sphere of radius {@value #BOTTOM_RADIUS} m; the atmosphere ends at {@value #TOP_RADIUS} m.
+ * <p>{@code NORMALISED}: the paper's (3.1, after O'Neil 2005, GPU Gems 2 chapter 16). Heights count in units of the
+ * shell's thickness H0 = {@value #TOP_RADIUS} − {@value #BOTTOM_RADIUS} m, so x = h/H0 runs from 0 to 1, and so do
+ * the lengths of the optical depths: t = 4π·K·λ⁻⁴·∫ρ d(s/H0), λ in µm. As coefficients per metre that is
+ * β_R(λ) = 4π·{@value #NORMALISED_K_R}·(λ / 1 µm)⁻⁴ / H0 and β_M = 4π·{@value #NORMALISED_K_M}·{@code haze} / H0
+ * (grey, scattering only), with densities e^(−x / 0.25) and e^(−x / 0.1) (O'Neil's scale depths: 25 km and 10 km
+ * here), the same phase functions, and no ozone. The sun is the same E_sun = 1 as in {@code PHYSICAL}: the exposure
+ * that O'Neil tuned by hand together with his sun intensity is the scene's automatic one.
+ * <p>The planet is a sphere of radius {@value #BOTTOM_RADIUS} m; the atmosphere ends at {@value #TOP_RADIUS} m.
  */
 public final class Atmosphere {
 
@@ -33,6 +41,14 @@ public final class Atmosphere {
     private static final double MIE_EXTINCTION = 4.44e-6;
     /** Mie scale height, m. */
     private static final double MIE_SCALE_HEIGHT = 1200;
+    /** NORMALISED: O'Neil's Rayleigh constant K_R (per unit of normalised length, times λ⁴ in µm⁴). */
+    static final double NORMALISED_K_R = 0.0025;
+    /** NORMALISED: O'Neil's Mie constant K_M (per unit of normalised length). */
+    static final double NORMALISED_K_M = 0.0010;
+    /** NORMALISED: O'Neil's Rayleigh scale depth, a fraction of H0. */
+    private static final double NORMALISED_RAYLEIGH_DEPTH = 0.25;
+    /** NORMALISED: O'Neil's Mie scale depth, a fraction of H0. */
+    private static final double NORMALISED_MIE_DEPTH = 0.1;
     /** Ozone tent: altitude of the density peak, m. */
     private static final double OZONE_PEAK = 25_000;
     /** Ozone tent: half width, m (0 at 10 km and at 40 km). */
@@ -64,6 +80,8 @@ public final class Atmosphere {
     private final double[] ozoneAbsorption;
     private final double mieScattering;
     private final double mieExtinction;
+    private final double rayleighScaleHeight;
+    private final double mieScaleHeight;
 
     public Atmosphere(Spectrum spectrum, AtmosphereSettings settings) {
         this.settings = settings;
@@ -71,6 +89,17 @@ public final class Atmosphere {
         int n = spectrum.count();
         rayleighScattering = new double[n];
         ozoneAbsorption = new double[n];
+        if (settings.constants() == AtmosphereSettings.Constants.NORMALISED) {
+            double perMetre = 4 * Math.PI / thickness();
+            for (int i = 0; i < n; i++) {
+                rayleighScattering[i] = perMetre * NORMALISED_K_R / Math.pow(spectrum.wavelengthNm(i) * 1e-3, 4);
+            }
+            mieScattering = perMetre * NORMALISED_K_M * settings.haze();
+            mieExtinction = mieScattering;
+            rayleighScaleHeight = NORMALISED_RAYLEIGH_DEPTH * thickness();
+            mieScaleHeight = NORMALISED_MIE_DEPTH * thickness();
+            return;
+        }
         // The tent integrates to one half width (15 km): n_max · 15 km = 300 DU.
         double ozonePeakDensity = settings.ozone() * OZONE_COLUMN_DU * DOBSON_UNIT / OZONE_HALF_WIDTH;
         for (int i = 0; i < n; i++) {
@@ -80,6 +109,8 @@ public final class Atmosphere {
         }
         mieScattering = MIE_SCATTERING * settings.haze();
         mieExtinction = MIE_EXTINCTION * settings.haze();
+        rayleighScaleHeight = RAYLEIGH_SCALE_HEIGHT;
+        mieScaleHeight = MIE_SCALE_HEIGHT;
     }
 
     public AtmosphereSettings settings() {
@@ -115,14 +146,14 @@ public final class Atmosphere {
         return ozoneAbsorption[i];
     }
 
-    /** Relative Rayleigh density at an altitude, e^(−h / 8 km). */
-    public static double rayleighDensity(double altitudeM) {
-        return Math.exp(-altitudeM / RAYLEIGH_SCALE_HEIGHT);
+    /** Relative Rayleigh density at an altitude: e^(−h / 8 km), or NORMALISED e^(−(h/H0) / 0.25). */
+    public double rayleighDensity(double altitudeM) {
+        return Math.exp(-altitudeM / rayleighScaleHeight);
     }
 
-    /** Relative Mie density at an altitude, e^(−h / 1.2 km). */
-    public static double mieDensity(double altitudeM) {
-        return Math.exp(-altitudeM / MIE_SCALE_HEIGHT);
+    /** Relative Mie density at an altitude: e^(−h / 1.2 km), or NORMALISED e^(−(h/H0) / 0.1). */
+    public double mieDensity(double altitudeM) {
+        return Math.exp(-altitudeM / mieScaleHeight);
     }
 
     /** Relative ozone density at an altitude: the tent max(0, 1 − |h − 25 km| / 15 km). */

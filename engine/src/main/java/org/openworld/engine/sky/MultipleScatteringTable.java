@@ -73,8 +73,8 @@ public final class MultipleScatteringTable {
                         double rp = Math.sqrt(px * px + py * py + pz * pz);
                         double altitude = rp - Atmosphere.BOTTOM_RADIUS;
                         transmittance.transmittance(rp, (px * sunX + py * muS) / rp, sunT);
-                        double rayleigh = Atmosphere.rayleighDensity(altitude);
-                        double mie = Atmosphere.mieDensity(altitude);
+                        double rayleigh = atmosphere.rayleighDensity(altitude);
+                        double mie = atmosphere.mieDensity(altitude);
                         double ozone = Atmosphere.ozoneDensity(altitude);
                         for (int i = 0; i < n; i++) {
                             double scattering = atmosphere.rayleighScattering(i) * rayleigh

@@ -131,8 +131,8 @@ final class SkyIntegrator {
             double rp = Math.sqrt(px * px + py * py + pz * pz);
             double sunCos = (px * sx + py * sy) / rp;
             double altitude = rp - Atmosphere.BOTTOM_RADIUS;
-            double rayleighDensity = Atmosphere.rayleighDensity(altitude);
-            double mieDensity = Atmosphere.mieDensity(altitude);
+            double rayleighDensity = atmosphere.rayleighDensity(altitude);
+            double mieDensity = atmosphere.mieDensity(altitude);
             double ozoneDensity = Atmosphere.ozoneDensity(altitude);
             if (single) {
                 singleStep(rp, sunCos, rayleighDensity, mieDensity, ozoneDensity, dt);
@@ -184,8 +184,8 @@ final class SkyIntegrator {
             double ds = Spheres.distanceToTop(rp, sunCos) / innerSamples;
             for (int k = 0; k < innerSamples; k++) {
                 double h = Spheres.radiusAt(rp, sunCos, (k + 0.5) * ds) - Atmosphere.BOTTOM_RADIUS;
-                sunRayleigh += Atmosphere.rayleighDensity(h) * ds;
-                sunMie += Atmosphere.mieDensity(h) * ds;
+                sunRayleigh += atmosphere.rayleighDensity(h) * ds;
+                sunMie += atmosphere.mieDensity(h) * ds;
                 sunOzone += Atmosphere.ozoneDensity(h) * ds;
             }
             double rayleighDepth = viewRayleigh + sunRayleigh;

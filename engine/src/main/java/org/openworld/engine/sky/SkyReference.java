@@ -27,6 +27,16 @@ public final class SkyReference {
         return t.spectrum().toDisplayRgb(spectral, new Vector3d());
     }
 
+    /**
+     * Luminance of the zenith, π·L / E_sun weighted 0.2126, 0.7152, 0.0722 over linear sRGB (Rec. 709's Y), for a
+     * sun at {@code sunElevationRad}: how bright the sky overhead is, in the display units the scene exposes.
+     */
+    public static double zenithLuminance(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
+        Vector3d up = radiance(t, new Vector3d(0, 1, 0),
+                new Vector3d(Math.cos(sunElevationRad), Math.sin(sunElevationRad), 0), cameraAltitudeM);
+        return 0.2126 * up.x + 0.7152 * up.y + 0.0722 * up.z;
+    }
+
     /** Angle between the horizontal projections of two directions, [0, π]; 0 when either is vertical. */
     static double azimuthBetween(Vector3dc a, Vector3dc b) {
         double dot = a.x() * b.x() + a.z() * b.z();

@@ -17,7 +17,7 @@ public record SunTables(AtmosphereTables atmosphere, double sunElevation, double
     public static SunTables build(AtmosphereTables atmosphere, double sunElevation, double altitude) {
         long t0 = System.nanoTime();
         SkyView view = SkyView.build(atmosphere, sunElevation, altitude);
-        AerialPerspective air = AerialPerspective.build(atmosphere, sunElevation, altitude);
+        AerialPerspective air = AerialPerspective.build(atmosphere, view, sunElevation, altitude);
         SkyLight light = SkyLight.of(atmosphere, view, sunElevation, altitude);
         return new SunTables(atmosphere, sunElevation, altitude, view, air, light, (System.nanoTime() - t0) / 1e6);
     }

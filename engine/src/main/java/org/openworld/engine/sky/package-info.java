@@ -19,7 +19,21 @@
  *       table adds every higher order as an isotropic source {@code Ψ_ms = L₂ / (1 − f_ms)} (the second order
  *       times the geometric series of the fraction re-scattered), which lights the twilight sky.</li>
  * </ul>
- * All of it is spectral: {@link org.openworld.engine.sky.Spectrum} samples 400–750 nm (the paper found 6 samples the
+ * <p><b>Constants</b> ({@code atmosphere.constants}, {@link org.openworld.engine.sky.Atmosphere}). {@code PHYSICAL}
+ * (default): Earth's, above. {@code NORMALISED}: the paper's, after O'Neil 2005 (GPU Gems 2 chapter 16, the paper's
+ * reference 2): heights and path lengths in units of the shell's thickness H0, x = h/H0 from 0 to 1, densities
+ * e^(−x/0.25) (Rayleigh) and e^(−x/0.1) (Mie), optical depth t = 4π·K·λ⁻⁴·∫ρ d(s/H0) with O'Neil's K_R = 0.0025
+ * (λ in µm) and K_M = 0.0010, no ozone, the same sun E_sun = 1 (O'Neil's hand-tuned sun intensity and exposure
+ * are the scene's automatic exposure here). H0 is OpenWorld's 100 km shell, 1.6 % of the planet's radius rather
+ * than O'Neil's 2.5 %: the paper gives neither, and the one shell keeps every table's geometry. Chosen as O'Neil
+ * published them, untuned: the noon zenith is blue and half as bright as the default's (0.48), the horizon under
+ * a setting sun orange-yellow. What they do not give is figure 9's dark dawn and dusk: with the sun 2°, 4° and 6°
+ * below the horizon the zenith is 4.1, 8.9 and 36 times as bright as the default sky's ({@code TwilightTest}). The
+ * Rayleigh air thins with a 25 km scale height here against Earth's 8 km, so the air above the planet's shadow
+ * (15 km up at the zenith with the sun 4° down) is still dense and lit. The paper's dark twilight must come from
+ * elsewhere, its fixed exposure or an approximation of the sun's optical depth it does not describe; its nested
+ * sums on its own constants do not make it.
+ * <p>All of it is spectral: {@link org.openworld.engine.sky.Spectrum} samples 400–750 nm (the paper found 6 samples the
  * least that works; 8 by default) and integrates them against the CIE 1931 colour-matching functions to XYZ and
  * then linear sRGB, white-balanced to the sun above the air. Mixing three RGB "wavelengths" instead gets the colours
  * wrong, because extinction is not linear in λ (paper 3.1). {@link org.openworld.engine.sky.SkyPicture} measures the
@@ -33,7 +47,9 @@
  * elevation, laid out relative to the sun's azimuth; so the CPU computes, when the sun or the eye moved enough
  * ({@link org.openworld.engine.sky.SunTables#staleFor}): the dome ({@link org.openworld.engine.sky.SkyView}, 192 ×
  * 108 directions, denser at the horizon: the paper's per-vertex dome evaluation), the aerial perspective for the
- * terrain ({@link org.openworld.engine.sky.AerialPerspective}, 32 × 32 directions × 32 distances up to 64 km) and
+ * terrain ({@link org.openworld.engine.sky.AerialPerspective}, 32 × 32 directions × 32 distances up to 64 km; or,
+ * with {@code atmosphere.fog=simple}, the paper's distance fog in the same table: transmittance e^(−d/D) and the
+ * horizon's colour at each azimuth times 1 − e^(−d/D), no marching) and
  * the light ({@link org.openworld.engine.sky.SkyLight}: the sun's colour at the eye from the transmittance, the
  * sky's irradiance on the ground, and on any normal as order-2 spherical harmonics projected from the sky-view table
  * turned to the sun's azimuth, with the sunlit ground below as one bounce: albedo · (sun + sky on level ground) / π

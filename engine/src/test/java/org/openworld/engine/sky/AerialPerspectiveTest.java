@@ -3,6 +3,7 @@ package org.openworld.engine.sky;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.joml.Vector3d;
 import org.joml.Vector4d;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -23,7 +24,7 @@ class AerialPerspectiveTest {
     @Test
     void inscatterGrowsAndTransmittanceFallsWithDistance() {
         for (AtmosphereTables t : new AtmosphereTables[] {multiple, single}) {
-            AerialPerspective ap = AerialPerspective.build(t, Math.toRadians(35), 300);
+            AerialPerspective ap = AerialPerspective.scattered(t, Math.toRadians(35), 300);
             float[] rgba = ap.rgba();
             for (int y = 0; y < AerialPerspective.HEIGHT; y += 5) {
                 for (int x = 0; x < AerialPerspective.WIDTH; x += 7) {
@@ -45,7 +46,7 @@ class AerialPerspectiveTest {
 
     @Test
     void nothingLiesBetweenTheEyeAndItself() {
-        AerialPerspective ap = AerialPerspective.build(multiple, Math.toRadians(35), 300);
+        AerialPerspective ap = AerialPerspective.scattered(multiple, Math.toRadians(35), 300);
         Vector4d zero = ap.sample(1.0, 0.1, 0, new Vector4d());
         assertEquals(0, zero.x, 1e-12);
         assertEquals(1, zero.w, 1e-12);
@@ -60,6 +61,34 @@ class AerialPerspectiveTest {
         assertEquals(AerialPerspective.MAX_DISTANCE / 4, AerialPerspective.sliceEnd(AerialPerspective.DEPTH / 2 - 1),
                 1e-9);
         assertEquals(AerialPerspective.MAX_DISTANCE / (32.0 * 32.0), AerialPerspective.sliceEnd(0), 1e-9);
+    }
+
+    @Test
+    void theSimpleFogIsThePapersDistanceFogTowardsTheHorizon() {
+        double fogDistance = 20_000;
+        AtmosphereTables t = AtmosphereTables.build(AtmosphereSettings.DEFAULTS
+                .withFog(AtmosphereSettings.Fog.SIMPLE, fogDistance));
+        double sun = Math.toRadians(3);
+        SkyView view = SkyView.build(t, sun, 300);
+        float[] rgba = AerialPerspective.build(t, view, sun, 300).rgba();
+        Vector3d horizon = new Vector3d();
+        for (int x = 0; x < AerialPerspective.WIDTH; x += 5) {
+            view.sample(Math.PI * x / (AerialPerspective.WIDTH - 1.0), 0, horizon);
+            for (int z = 0; z < AerialPerspective.DEPTH; z += 3) {
+                double transmittance = Math.exp(-AerialPerspective.sliceEnd(z) / fogDistance);
+                for (int y = 0; y < AerialPerspective.HEIGHT; y += 7) {
+                    int i = index(x, y, z);
+                    assertEquals(transmittance, rgba[i + 3], 1e-6, "e^(-d/D) at " + x + "," + y + "," + z);
+                    assertEquals(horizon.x * (1 - transmittance), rgba[i], 1e-5, "red at " + x + "," + y + "," + z);
+                    assertEquals(horizon.y * (1 - transmittance), rgba[i + 1], 1e-5);
+                    assertEquals(horizon.z * (1 - transmittance), rgba[i + 2], 1e-5);
+                }
+            }
+        }
+        // Towards the low sun the fog takes the redder horizon there, not one colour all round.
+        int toSun = index(0, 0, AerialPerspective.DEPTH - 1);
+        int away = index(AerialPerspective.WIDTH - 1, 0, AerialPerspective.DEPTH - 1);
+        assertTrue(rgba[toSun] / rgba[toSun + 2] > 1.5 * rgba[away] / rgba[away + 2], "fog redder towards the sun");
     }
 
     private static int index(int x, int y, int z) {

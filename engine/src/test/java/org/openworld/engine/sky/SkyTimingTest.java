@@ -18,7 +18,7 @@ class SkyTimingTest {
             for (int round = 0; round < 4; round++) {
                 AtmosphereTables t = AtmosphereTables.build(s);
                 double v = SkyView.build(t, Math.toRadians(20), 100).buildMillis();
-                double a = AerialPerspective.build(t, Math.toRadians(20), 100).buildMillis();
+                double a = AerialPerspective.scattered(t, Math.toRadians(20), 100).buildMillis();
                 if (round > 0) {
                     tables = Math.min(tables, t.buildMillis());
                     view = Math.min(view, v);
