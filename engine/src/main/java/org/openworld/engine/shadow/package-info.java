@@ -15,7 +15,10 @@
  * 0.01, 0.1), against the surface shadowing itself where one texel's single depth stands for a tilted patch of
  * ground ("acne"), at the price of shadows that come loose from their casters when too large; and
  * <b>percentage-closer filtering</b> (figure 11's 1×1 to 7×7 kernels): the mean of N × N such tests a texel apart,
- * a soft edge N texels wide instead of a jagged one.
+ * a soft edge N texels wide instead of a jagged one. The paper's depth buffer has 24 bits
+ * ({@link org.openworld.engine.shadow.ShadowSettings.Depth#FIXED24}); the default stores 32-bit floats, never coarser.
+ * Both span 0 .. 1 over the box's depth, so a margin is the same share of it in both, and the paper's margins are
+ * thousands of 24-bit steps: its acne is a texel's footprint, not rounding.
  *
  * <h2>Why the paper's map fails on a big world, and cascades</h2>
  * One map over everything the camera sees spreads its texels over kilometres: 2048 texels over an 8 km view are 4 m
