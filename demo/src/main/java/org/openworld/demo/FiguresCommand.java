@@ -79,7 +79,7 @@ final class FiguresCommand implements Callable<Integer> {
         // 1. every command parsed, and each shot's settings checked, before the first picture is made: per figure
         // the default picture, then the preset's where the preset changes something it reads
         List<List<Job>> jobsByFigure = figures.stream().map(this::jobs).toList();
-        int jobs = jobsByFigure.stream().mapToInt(List::size).sum();
+        int count = jobsByFigure.stream().mapToInt(List::size).sum();
 
         // 2. the pictures, each by its own command from scratch
         long start = System.nanoTime();
@@ -106,7 +106,7 @@ final class FiguresCommand implements Callable<Integer> {
                 double seconds = (System.nanoTime() - t0) / 1e9;
                 pictures.add(new Gallery.Picture(job.figure(), "openworld " + Gallery.shellLine(job.printed()),
                         measured, seconds));
-                System.out.printf(Locale.ROOT, "figures: %d/%d %s ... %.1f s%n", ++made, jobs, job.figure().id(),
+                System.out.printf(Locale.ROOT, "figures: %d/%d %s ... %.1f s%n", ++made, count, job.figure().id(),
                         seconds);
             }
             plates.add(new Gallery.Plate(figures.get(i), pictures));
@@ -169,7 +169,7 @@ final class FiguresCommand implements Callable<Integer> {
         return new Job(figure, printed, command);
     }
 
-    /** The settings of these the heightmap command reads (engine.* and terrain.*); the others do not change its maps. */
+    /** Those of these settings that the heightmap command reads (engine.*, terrain.*): no other changes its maps. */
     private static List<String> heightmapKeys(List<String> settings) {
         Set<String> keys = new HashSet<>(HeightmapCommand.newSettings().keys());
         return settings.stream().filter(s -> keys.contains(s.substring(0, s.indexOf('=')).trim())).toList();
@@ -179,8 +179,9 @@ final class FiguresCommand implements Callable<Integer> {
     private List<String> heightmapPreset() {
         Settings defaults = Engine.settingsFor(DemoScene.systems());
         Map<String, String> values = Presets.values(preset, defaults);
+        Map<String, String> defaultValues = defaults.asExactText();
         List<String> changed = values.entrySet().stream()
-                .filter(e -> !e.getValue().equals(defaults.asExactText().get(e.getKey())))
+                .filter(e -> !e.getValue().equals(defaultValues.get(e.getKey())))
                 .map(e -> e.getKey() + "=" + e.getValue()).toList();
         List<String> arguments = new ArrayList<>();
         heightmapKeys(changed).forEach(s -> arguments.addAll(List.of("--set", s)));
