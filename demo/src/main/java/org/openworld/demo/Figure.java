@@ -41,6 +41,16 @@ record Figure(String id, int number, String caption, String note, Tool tool, Lis
         arguments = List.copyOf(arguments);
     }
 
+    /**
+     * The same picture under another id (its files' names) with more arguments after its own, e.g. a preset's:
+     * {@code --preset paper} for a shot.
+     */
+    Figure with(String otherId, List<String> moreArguments) {
+        List<String> all = new ArrayList<>(arguments);
+        all.addAll(moreArguments);
+        return new Figure(otherId, number, caption, note, tool, all);
+    }
+
     /** Where the command writes, relative to the gallery's folder: a folder for the maps, else a PNG file. */
     String output() {
         return tool == Tool.HEIGHTMAP ? id : id + ".png";

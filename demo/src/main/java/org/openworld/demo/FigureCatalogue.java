@@ -210,7 +210,7 @@ final class FigureCatalogue {
         list.add(shot("12-cascades", 12, "Figure 12: Shadow mapping with 0.01 Z-buffer margin and 5x5 filter kernel "
                 + "size gives a good trade-off between rendering quality and efficiency",
                 "Not in the paper: the default cascaded maps at the same moment, to set beside 12: sharp near shadows.",
-                "17:00", DEFAULT_POSE));
+                "17:00", DEFAULT_POSE, "shadow.method=cascades"));
 
         // Figure 13: the paper's stencil water (paper 3.3)
         String alpha = "Figure 13: Different alpha values for the water mask determines the transparency and "

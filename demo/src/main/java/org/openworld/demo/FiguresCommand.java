@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
@@ -29,7 +30,9 @@ import picocli.CommandLine.Option;
  * per picture, nothing kept between them, so the command the gallery prints makes the same picture on its own. The
  * price is small: making the 2048² world again takes about 0.15 s of the 1.8 s (median) a 960×540 shot takes on
  * llvmpipe with 2 cores once the JIT is warm; the whole set, 50 pictures, about 95 s, of which figure 7's five, on
- * the CPU, 9 s.
+ * the CPU, 9 s. With {@code --preset NAME} (e.g. {@code paper}, the paper's method) every picture that reads a
+ * setting is made a second time with the preset, and the gallery shows the two side by side: the default, and the
+ * preset's beside it.
  */
 @Command(name = "figures", mixinStandardHelpOptions = true,
         description = "Remake the paper's figures headless into a folder, with an index.html gallery that shows each "
@@ -55,7 +58,15 @@ final class FiguresCommand implements Callable<Integer> {
                     + "Figure 2's maps take only the engine.* and terrain.* keys; figure 7's diagram and strips none.")
     List<String> set = new ArrayList<>();
 
-    /** One picture's command: as the gallery prints it (output relative to the folder) and parsed to run. */
+    @Option(names = "--preset", paramLabel = "NAME",
+            description = "Also make every picture with this preset (assets/presets/NAME.settings), e.g. paper, and "
+                    + "show it beside the default one; each picture's own settings win over the preset.")
+    String preset;
+
+    /**
+     * One picture's command: the figure as made (the preset's picture has the preset's name added to its id, so to
+     * its files), the command as the gallery prints it (output relative to the folder) and parsed to run.
+     */
     private record Job(Figure figure, List<String> printed, Object command) {
     }
 
@@ -63,45 +74,56 @@ final class FiguresCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         List<Figure> figures = chosen();
         Settings every = Engine.settingsFor(DemoScene.systems());
-        set.forEach(every::apply); // an unknown key or a bad value fails here, before any picture
+        if (preset != null) {
+            Presets.apply(preset, every); // an unknown preset fails here, before any picture
+        }
+        set.forEach(every::apply); // an unknown key or a bad value too
         Outputs.folder(out);
 
-        // 1. every command parsed, and each shot's settings checked, before the first picture is made
-        List<Job> jobs = figures.stream().map(this::job).toList();
+        // 1. every command parsed, and each shot's settings checked, before the first picture is made: per figure
+        // the default picture, then the preset's where the preset changes something it reads
+        List<List<Job>> jobsByFigure = figures.stream().map(this::jobs).toList();
+        int count = jobsByFigure.stream().mapToInt(List::size).sum();
 
         // 2. the pictures, each by its own command from scratch
         long start = System.nanoTime();
         String renderer = "no OpenGL: figure 2's maps are made on the CPU";
         List<Gallery.Plate> plates = new ArrayList<>();
-        for (Job job : jobs) {
-            long t0 = System.nanoTime();
-            String measured = "";
-            switch (job.figure().tool()) {
-                case SHOT -> {
-                    ShotCommand command = (ShotCommand) job.command();
-                    ShotCommand.Result shot = command.take();
-                    renderer = shot.renderer() + ", " + shot.contextMode();
-                    measured = twilight(job.figure(), Launch.settings(command.render));
+        int made = 0;
+        for (int i = 0; i < figures.size(); i++) {
+            List<Gallery.Picture> pictures = new ArrayList<>();
+            for (Job job : jobsByFigure.get(i)) {
+                long t0 = System.nanoTime();
+                String measured = "";
+                switch (job.figure().tool()) {
+                    case SHOT -> {
+                        ShotCommand command = (ShotCommand) job.command();
+                        ShotCommand.Result shot = command.take();
+                        renderer = shot.renderer() + ", " + shot.contextMode();
+                        measured = twilight(job.figure(), Launch.settings(command.render));
+                    }
+                    case HEIGHTMAP -> ((HeightmapCommand) job.command()).call();
+                    case STRIP -> {
+                        SkyStripCommand strip = (SkyStripCommand) job.command();
+                        measured = strip.measured(strip.draw());
+                    }
+                    case DIAGRAM -> ((DiagramCommand) job.command()).call();
                 }
-                case HEIGHTMAP -> ((HeightmapCommand) job.command()).call();
-                case STRIP -> {
-                    SkyStripCommand strip = (SkyStripCommand) job.command();
-                    measured = strip.measured(strip.draw());
-                }
-                case DIAGRAM -> ((DiagramCommand) job.command()).call();
+                double seconds = (System.nanoTime() - t0) / 1e9;
+                pictures.add(new Gallery.Picture(job.figure(), "openworld " + Gallery.shellLine(job.printed()),
+                        measured, seconds));
+                System.out.printf(Locale.ROOT, "figures: %d/%d %s ... %.1f s%n", ++made, count, job.figure().id(),
+                        seconds);
             }
-            double seconds = (System.nanoTime() - t0) / 1e9;
-            plates.add(new Gallery.Plate(job.figure(), "openworld " + Gallery.shellLine(job.printed()), measured,
-                    seconds));
-            System.out.printf(Locale.ROOT, "figures: %d/%d %s ... %.1f s%n", plates.size(), jobs.size(),
-                    job.figure().id(), seconds);
+            plates.add(new Gallery.Plate(figures.get(i), pictures));
         }
 
         // 3. the gallery
         double total = (System.nanoTime() - start) / 1e9;
         Path index = Gallery.write(out, new Gallery.Made("openworld " + Gallery.shellLine(invocation()), renderer,
-                ZonedDateTime.now().format(DATE), size, FigureCatalogue.SEED, set, total), plates);
-        System.out.printf(Locale.ROOT, "figures: %d pictures and %s in %.0f s%n", plates.size(), index, total);
+                ZonedDateTime.now().format(DATE), size, FigureCatalogue.SEED, set, preset == null ? "" : preset,
+                total), plates);
+        System.out.printf(Locale.ROOT, "figures: %d pictures and %s in %.0f s%n", made, index, total);
         return 0;
     }
 
@@ -117,10 +139,30 @@ final class FiguresCommand implements Callable<Integer> {
         return FigureCatalogue.all().stream().filter(f -> only.isEmpty() || only.contains(f.number())).toList();
     }
 
+    /**
+     * The figure's default picture and, with {@code --preset}, the preset's: a shot takes {@code --preset} itself,
+     * figure 2's maps the preset's engine.* and terrain.* values (when it has any off their defaults), figure 7's
+     * diagram and strips nothing, so they are made once.
+     */
+    private List<Job> jobs(Figure figure) {
+        List<Job> jobs = new ArrayList<>(List.of(job(figure)));
+        if (preset != null) {
+            List<String> presetArguments = switch (figure.tool()) {
+                case SHOT -> List.of("--preset", preset);
+                case HEIGHTMAP -> heightmapPreset();
+                case STRIP, DIAGRAM -> List.of();
+            };
+            if (!presetArguments.isEmpty()) {
+                jobs.add(job(figure.with(figure.id() + "-" + preset, presetArguments)));
+            }
+        }
+        return jobs;
+    }
+
     private Job job(Figure figure) {
         List<String> overrides = switch (figure.tool()) {
             case SHOT -> set;
-            case HEIGHTMAP -> heightmapOverrides();
+            case HEIGHTMAP -> heightmapKeys(set);
             case STRIP, DIAGRAM -> List.of(); // they take no settings: each strip fixes its own
         };
         List<String> printed = figure.commandLine(figure.output(), size, overrides);
@@ -151,10 +193,23 @@ final class FiguresCommand implements Callable<Integer> {
                 self / reference);
     }
 
-    /** The overrides the heightmap command reads (engine.* and terrain.*); the others do not change its maps. */
-    private List<String> heightmapOverrides() {
+    /** Those of these settings that the heightmap command reads (engine.*, terrain.*): no other changes its maps. */
+    private static List<String> heightmapKeys(List<String> settings) {
         Set<String> keys = new HashSet<>(HeightmapCommand.newSettings().keys());
-        return set.stream().filter(s -> keys.contains(s.substring(0, s.indexOf('=')).trim())).toList();
+        return settings.stream().filter(s -> keys.contains(s.substring(0, s.indexOf('=')).trim())).toList();
+    }
+
+    /** The preset's values that the heightmap command reads and that are off their defaults, as --set arguments. */
+    private List<String> heightmapPreset() {
+        Settings defaults = Engine.settingsFor(DemoScene.systems());
+        Map<String, String> values = Presets.values(preset, defaults);
+        Map<String, String> defaultValues = defaults.asExactText();
+        List<String> changed = values.entrySet().stream()
+                .filter(e -> !e.getValue().equals(defaultValues.get(e.getKey())))
+                .map(e -> e.getKey() + "=" + e.getValue()).toList();
+        List<String> arguments = new ArrayList<>();
+        heightmapKeys(changed).forEach(s -> arguments.addAll(List.of("--set", s)));
+        return arguments;
     }
 
     /** This run's own command line, for the gallery's header. */
@@ -168,6 +223,10 @@ final class FiguresCommand implements Callable<Integer> {
         for (String override : set) {
             words.add("--set");
             words.add(override);
+        }
+        if (preset != null) {
+            words.add("--preset");
+            words.add(preset);
         }
         return words;
     }

@@ -32,14 +32,26 @@ final class Gallery {
      * @param seconds    the whole run's wall time
      */
     record Made(String invocation, String renderer, String date, Size size, int seed, List<String> overrides,
-            double seconds) {
+            String preset, double seconds) {
     }
 
     /**
-     * One picture made: its catalogue entry, the command that made it as a shell line, what it measured (a strip's
-     * ΔE; empty for a picture that measures nothing) and its wall time.
+     * One entry of the gallery: a catalogue entry and its pictures, the default one first and, in a run with a
+     * preset, the preset's beside it (a picture that takes no settings is made once).
      */
-    record Plate(Figure figure, String command, String measured, double seconds) {
+    record Plate(Figure figure, List<Picture> pictures) {
+
+        Plate {
+            pictures = List.copyOf(pictures);
+        }
+    }
+
+    /**
+     * One picture made: the figure as it was made (its id names the files, with the preset's name added for the
+     * preset's picture), the command that made it as a shell line, what it measured (a strip's ΔE; empty for a
+     * picture that measures nothing) and its wall time.
+     */
+    record Picture(Figure made, String command, String measured, double seconds) {
     }
 
     private Gallery() {
@@ -70,6 +82,9 @@ final class Gallery {
                 nav a { margin-right: .6rem; }
                 section { margin-top: 2rem; border-top: 1px solid #ccc; }
                 .plates { display: grid; grid-template-columns: repeat(auto-fill, minmax(26rem, 1fr)); gap: 1.2rem; }
+                .beside .plates { grid-template-columns: repeat(auto-fill, minmax(44rem, 1fr)); }
+                .pictures { display: grid; grid-template-columns: repeat(auto-fit, minmax(20rem, 1fr)); gap: .6rem; }
+                .label { font-weight: bold; margin: .2rem 0; }
                 figure { margin: 0; }
                 figure img { width: 100%; height: auto; border: 1px solid #ddd; display: block; }
                 .id { font-weight: bold; margin-right: .4rem; }
@@ -81,17 +96,23 @@ final class Gallery {
                 .time, .file { color: #777; font-size: .85em; }
                 </style>
                 </head>
-                <body>
-                <header>
-                <h1>OpenWorld: the paper's figures, remade</h1>
                 """);
+        html.append(made.preset().isEmpty() ? "<body>\n" : "<body class=\"beside\">\n")
+                .append("<header>\n<h1>OpenWorld: the paper's figures, remade</h1>\n");
         html.append("<p>Made by <code>").append(escape(made.invocation())).append("</code></p>\n");
         html.append(String.format(Locale.ROOT, "<p>Made %s with %s: %d pictures of %s pixels, world seed %d%s, in "
-                        + "%.0f s.</p>%n", escape(made.date()), escape(made.renderer()), plates.size(),
+                        + "%.0f s.</p>%n", escape(made.date()), escape(made.renderer()),
+                plates.stream().mapToInt(p -> p.pictures().size()).sum(),
                 made.size().width() + "×" + made.size().height(), made.seed(),
                 made.overrides().isEmpty() ? ""
                         : ", with " + escape(String.join(" ", made.overrides())) + " added to every command",
                 made.seconds()));
+        if (!made.preset().isEmpty()) {
+            html.append("<p>Each picture is shown with the defaults and, beside it, with <b>--preset ")
+                    .append(escape(made.preset())).append("</b> (assets/presets/").append(escape(made.preset()))
+                    .append(".settings); a picture's own settings win over the preset. Figure 7's diagram and "
+                            + "strips take no settings and are made once.</p>\n");
+        }
         html.append("<p>Each command writes into the current folder: run it in this folder to remake its picture. "
                 + "The quotes are the paper's caption of each figure, or its sentence that shows it.</p>\n"
                 + "</header>\n<nav>");
@@ -102,33 +123,47 @@ final class Gallery {
         byFigure.forEach((number, group) -> {
             html.append("<section id=\"figure-").append(number).append("\">\n<h2>Figure ").append(number)
                     .append("</h2>\n<div class=\"plates\">\n");
-            group.forEach(plate -> plate(html, plate));
+            group.forEach(plate -> plate(html, plate, made.preset()));
             html.append("</div>\n</section>\n");
         });
         html.append("</body>\n</html>\n");
         return html.toString();
     }
 
-    private static void plate(StringBuilder html, Plate plate) {
+    private static void plate(StringBuilder html, Plate plate, String preset) {
         Figure figure = plate.figure();
-        html.append("<figure id=\"").append(escape(figure.id())).append("\">\n");
-        List<String> files = figure.files();
+        html.append("<figure id=\"").append(escape(figure.id())).append("\">\n<div class=\"pictures\">\n");
+        for (int i = 0; i < plate.pictures().size(); i++) {
+            Picture picture = plate.pictures().get(i);
+            html.append("<div>\n");
+            if (plate.pictures().size() > 1) {
+                html.append("<p class=\"label\">").append(i == 0 ? "default" : "--preset " + escape(preset))
+                        .append("</p>\n");
+            }
+            picture(html, picture);
+            html.append("</div>\n");
+        }
+        html.append("</div>\n<figcaption><span class=\"id\">").append(escape(figure.id())).append("</span>")
+                .append("<blockquote>").append(escape(figure.caption())).append("</blockquote>\n")
+                .append("<p class=\"note\">").append(escape(figure.note())).append("</p>\n")
+                .append("</figcaption>\n</figure>\n");
+    }
+
+    /** One picture's images, what it measured, its command and time. */
+    private static void picture(StringBuilder html, Picture picture) {
+        List<String> files = picture.made().files();
         for (String file : files) {
             String link = escape(file);
             html.append("<a href=\"").append(link).append("\"><img src=\"").append(link).append("\" alt=\"Figure ")
-                    .append(figure.number()).append(", ").append(link).append("\" loading=\"lazy\"></a>\n");
+                    .append(picture.made().number()).append(", ").append(link).append("\" loading=\"lazy\"></a>\n");
             if (files.size() > 1) {
                 html.append("<div class=\"file\">").append(link).append("</div>\n");
             }
         }
-        html.append("<figcaption><span class=\"id\">").append(escape(figure.id())).append("</span>")
-                .append("<blockquote>").append(escape(figure.caption())).append("</blockquote>\n")
-                .append("<p class=\"note\">").append(escape(figure.note())).append("</p>\n")
-                .append(plate.measured().isEmpty() ? ""
-                        : "<p class=\"measured\">Measured: " + escape(plate.measured()) + "</p>\n")
-                .append("<code>").append(escape(plate.command())).append("</code>\n")
-                .append(String.format(Locale.ROOT, "<span class=\"time\">%.1f s</span>", plate.seconds()))
-                .append("</figcaption>\n</figure>\n");
+        html.append(picture.measured().isEmpty() ? ""
+                        : "<p class=\"measured\">Measured: " + escape(picture.measured()) + "</p>\n")
+                .append("<code>").append(escape(picture.command())).append("</code>\n")
+                .append(String.format(Locale.ROOT, "<span class=\"time\">%.1f s</span>\n", picture.seconds()));
     }
 
     /** Text safe inside an HTML element or a double- or single-quoted attribute. */

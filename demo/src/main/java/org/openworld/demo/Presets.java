@@ -10,18 +10,21 @@ import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsFile;
 
 /**
- * The quality presets ({@code --preset NAME}, and the settings panel's "quality preset"): each is a settings file,
- * {@code assets/presets/NAME.settings} on the classpath, in the format {@code --config} reads. {@code default} is
- * the defaults (its file names no key), {@code ultra} spends more time on the picture, {@code low} less.
+ * The presets ({@code --preset NAME}, and the settings panel's "preset"): each is a settings file,
+ * {@code assets/presets/NAME.settings} on the classpath, in the format {@code --config} reads. Three are quality
+ * levels: {@code default} is the defaults (its file names no key), {@code ultra} spends more time on the picture,
+ * {@code low} less. The fourth, {@code paper}, is no quality level but the 2017 paper's method in every system
+ * (docs/paper.md), to set its pictures beside the default ones ({@code openworld figures --preset paper}).
  *
  * <p>A preset sets the keys that some preset moves off its default, the preset keys, and nothing else: choosing one
- * first puts every preset key back to its default, then applies its file. So going from {@code ultra} to
- * {@code default} undoes all of {@code ultra}, and the world (seed, size, an imported height map) stays what it was.
+ * first puts every preset key back to its default, then applies its file. So going from {@code ultra} or
+ * {@code paper} to {@code default} undoes all of it, and the world's seed, size and an imported height map stay what
+ * they were (its shape and snow are preset keys, which {@code paper} sets).
  */
 final class Presets {
 
-    /** Every preset, cheapest first. */
-    static final List<String> NAMES = List.of("low", "default", "ultra");
+    /** Every preset: the quality levels, cheapest first, then the paper's method. */
+    static final List<String> NAMES = List.of("low", "default", "ultra", "paper");
 
     private Presets() {
     }

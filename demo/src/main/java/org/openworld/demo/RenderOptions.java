@@ -34,7 +34,8 @@ final class RenderOptions {
     }
 
     @Option(names = "--preset", paramLabel = "NAME",
-            description = "Quality preset: low, default or ultra (assets/presets/NAME.settings); --config, --seed "
+            description = "Preset: low, default or ultra (quality), or paper (the 2017 paper's method) "
+                    + "(assets/presets/NAME.settings); --config, --seed "
                     + "and --set given too win over it.")
     String preset;
 

@@ -28,7 +28,7 @@ import org.openworld.engine.settings.SettingsFile;
  * {@link PanelEntry}, filed under its group, every change applied at once through {@link Settings#set}. Settings read
  * only when the world is built are marked {@code *}; once one differs from what the world was built with, the panel
  * offers "Rebuild world". "Save" writes every setting to a file that {@code --config} reads; "Load" reads one.
- * "quality preset" chooses one of {@link Presets}, rebuilding the world if it changed a setting read at start.
+ * "preset" chooses one of {@link Presets}, rebuilding the world if it changed a setting read at start.
  */
 final class SettingsPanel {
 
@@ -158,7 +158,7 @@ final class SettingsPanel {
     /** The preset the settings match now, or "custom"; choosing one applies it. */
     private void drawPresets() {
         String current = Presets.matching(presets, settings).orElse("custom");
-        if (ImGui.beginCombo("quality preset", current)) {
+        if (ImGui.beginCombo("preset", current)) {
             for (String name : presets.keySet()) {
                 if (ImGui.selectable(name, name.equals(current))) {
                     choosePreset(name);
@@ -166,7 +166,8 @@ final class SettingsPanel {
             }
             ImGui.endCombo();
         }
-        tooltip(() -> "low, default or ultra (assets/presets/NAME.settings); 'openworld --preset NAME' starts with it");
+        tooltip(() -> "low, default, ultra or the paper's method, paper (assets/presets/NAME.settings); "
+                + "'openworld --preset NAME' starts with it");
     }
 
     /**

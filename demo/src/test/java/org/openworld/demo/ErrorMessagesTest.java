@@ -46,7 +46,7 @@ class ErrorMessagesTest {
 
     @Test
     void anUnknownPresetNamesTheValidOnes() {
-        userMistake("unknown preset 'fast': expected one of low, default, ultra", "settings", "--preset", "fast");
+        userMistake("unknown preset 'fast': expected one of low, default, ultra, paper", "settings", "--preset", "fast");
     }
 
     @Test

@@ -92,6 +92,64 @@ class FiguresCommandTest {
     }
 
     @Test
+    void aPresetMakesEachPictureAgainWithItBesideTheDefaultAndItsCommandsRemakeThem() throws Exception {
+        Path out = dir.resolve("paper");
+        // a 2 km world: the paper's spectrum keeps wavelengths from 512 m, more than a 256² world's tile holds
+        assertEquals(0, Main.execute("figures", "--out", out.toString(), "--only", "2,12", "--preset", "paper",
+                "--size", "320x180", "--set", "terrain.size=1024"), console.stderr());
+
+        // every picture twice: figure 2's maps take the preset's terrain keys, the shots the preset itself
+        Set<String> expected = new HashSet<>();
+        for (Figure figure : FigureCatalogue.all()) {
+            if (figure.number() == 2 || figure.number() == 12) {
+                expected.addAll(figure.files());
+                expected.addAll(figure.with(figure.id() + "-paper", List.of()).files());
+            }
+        }
+        assertEquals(expected, pngsUnder(out));
+        assertTrue(Files.mismatch(out.resolve("2/height.png"), out.resolve("2-paper/height.png")) >= 0,
+                "the paper's spectrum makes another height map");
+        assertTrue(meanDifference(Image.read(out.resolve("12.png")), Image.read(out.resolve("12-paper.png"))) > 5,
+                "the preset changes the shot");
+
+        String html = Files.readString(out.resolve(Gallery.INDEX));
+        Set<String> links = new HashSet<>();
+        Matcher link = LINK.matcher(html);
+        while (link.find()) {
+            links.add(link.group(1));
+        }
+        assertEquals(expected, links);
+        String figure12 = html.substring(html.indexOf("<figure id=\"12\">"),
+                html.indexOf("<figure id=\"12-cascades\">"));
+        assertTrue(figure12.indexOf("src=\"12.png\"") < figure12.indexOf("src=\"12-paper.png\""),
+                "12 and its paper picture in one entry, the default first");
+
+        Matcher maps = Pattern.compile("<code>(openworld heightmap --out 2-paper [^<]*)</code>").matcher(html);
+        assertTrue(maps.find(), html);
+        assertTrue(maps.group(1).contains("--set terrain.beta=1") && !maps.group(1).contains("shadow."),
+                "figure 2 takes the preset's terrain keys alone: " + maps.group(1));
+
+        Matcher command = Pattern.compile("<code>(openworld shot --out 12-paper\\.png [^<]*)</code>").matcher(html);
+        assertTrue(command.find(), html);
+        List<String> words = new ArrayList<>(Arrays.asList(command.group(1).split(" ")));
+        assertTrue(words.contains("--preset") && words.contains("paper"), words.toString());
+        Path again = dir.resolve("again.png");
+        words.set(3, again.toString());
+        assertEquals(0, Main.execute(words.subList(1, words.size()).toArray(String[]::new)), console.stderr());
+        assertEquals(0, meanDifference(Image.read(out.resolve("12-paper.png")), Image.read(again)),
+                "the printed command remakes the preset's picture");
+    }
+
+    @Test
+    void unknownPresetIsAUserErrorBeforeAnyPicture() {
+        Path out = dir.resolve("none");
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("figures", "--out", out.toString(), "--only", "2",
+                "--preset", "papper"));
+        assertTrue(console.stderr().contains("unknown preset 'papper'"), console.stderr());
+        assertFalse(Files.exists(out));
+    }
+
+    @Test
     void unknownFigureIsAUserErrorListingTheFiguresAndMakesNothing() {
         Path out = dir.resolve("none");
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("figures", "--out", out.toString(), "--only", "15"));

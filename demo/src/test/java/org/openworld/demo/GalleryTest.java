@@ -38,13 +38,13 @@ class GalleryTest {
                 List.of("--seed", "1"));
         Figure maps = new Figure("2", 2, "(a) maps", "Height and snow", Tool.HEIGHTMAP, List.of("--seed", "1"));
         Gallery.Made made = new Gallery.Made("openworld figures --out g", "llvmpipe, headless-egl", "2017-06-01 12:00",
-                new Size(320, 180), 1, List.of("terrain.size=256"), 12);
+                new Size(320, 180), 1, List.of("terrain.size=256"), "", 12);
         Figure strip = new Figure("7-samples-noon", 7, "(findings)", "Samples", Tool.STRIP,
                 List.of("--samples", "1"));
         String html = Gallery.html(made, List.of(
-                new Gallery.Plate(maps, "openworld heightmap --out 2 --seed 1", "", 1),
-                new Gallery.Plate(shot, "openworld shot --out 5a.png --set 'a=<b>'", "", 2),
-                new Gallery.Plate(strip, "openworld sky-strip --out 7-samples-noon.png --samples 1", "1: 22.42 <", 3)));
+                plate(maps, "openworld heightmap --out 2 --seed 1", "", 1),
+                plate(shot, "openworld shot --out 5a.png --set 'a=<b>'", "", 2),
+                plate(strip, "openworld sky-strip --out 7-samples-noon.png --samples 1", "1: 22.42 <", 3)));
 
         assertTrue(html.contains("A caption with &lt;tags&gt; &amp; &quot;quotes&quot;"), html);
         assertFalse(html.contains("<tags>"));
@@ -57,6 +57,38 @@ class GalleryTest {
         assertEquals(2, html.split("class=\"measured\"", -1).length, "only the plate that measured shows numbers");
         assertTrue(html.contains("llvmpipe, headless-egl") && html.contains("320×180") && html.contains("seed 1")
                 && html.contains("terrain.size=256"), "the header says how the set was made");
+    }
+
+    @Test
+    void aPresetRunShowsEachPresetPictureBesideTheDefaultOne() {
+        Figure shot = new Figure("13a", 13, "Water", "Alpha 0", Tool.SHOT, List.of("--seed", "1"));
+        Figure paper = shot.with("13a-paper", List.of("--preset", "paper"));
+        Figure strip = new Figure("7-samples-noon", 7, "(findings)", "Samples", Tool.STRIP,
+                List.of("--samples", "1"));
+        Gallery.Made made = new Gallery.Made("openworld figures --out g --preset paper", "llvmpipe", "2017-06-01 12:00",
+                new Size(320, 180), 1, List.of(), "paper", 12);
+        String html = Gallery.html(made, List.of(
+                new Gallery.Plate(strip, List.of(new Gallery.Picture(strip, "openworld sky-strip --out "
+                        + "7-samples-noon.png", "1: 22.42", 1))),
+                new Gallery.Plate(shot, List.of(new Gallery.Picture(shot, "openworld shot --out 13a.png", "", 1),
+                        new Gallery.Picture(paper, "openworld shot --out 13a-paper.png --preset paper", "", 2)))));
+
+        String plate = html.substring(html.indexOf("<figure id=\"13a\">"), html.indexOf("</figure>",
+                html.indexOf("<figure id=\"13a\">")));
+        assertTrue(plate.indexOf(">default<") < plate.indexOf("src=\"13a.png\"")
+                && plate.indexOf("src=\"13a.png\"") < plate.indexOf(">--preset paper<")
+                && plate.indexOf(">--preset paper<") < plate.indexOf("src=\"13a-paper.png\""),
+                "one entry: the default picture, then the preset's, each under its label: " + plate);
+        assertTrue(plate.contains("<code>openworld shot --out 13a-paper.png --preset paper</code>"), plate);
+        assertEquals(1, plate.split("class=\"id\"", -1).length - 1, "one caption for both");
+        String strips = html.substring(html.indexOf("<figure id=\"7-samples-noon\">"),
+                html.indexOf("<figure id=\"13a\">"));
+        assertFalse(strips.contains("class=\"label\""), "a picture made once has no label");
+        assertTrue(html.contains("<body class=\"beside\">") && html.contains("3 pictures"), html);
+    }
+
+    private static Gallery.Plate plate(Figure figure, String command, String measured, double seconds) {
+        return new Gallery.Plate(figure, List.of(new Gallery.Picture(figure, command, measured, seconds)));
     }
 
     /** The words {@code sh} makes of a line, one per printed line. */

@@ -19,7 +19,7 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.settings.Settings;
 import picocli.CommandLine;
 
-/** The quality presets: their files, what choosing one does, and the order of --preset, --config and --set. */
+/** The presets (the quality levels and the paper's): their files, what choosing one does, and the order of --preset, --config and --set. */
 class PresetsTest {
 
     private static final Path FOLDER = Path.of("../assets/presets");
@@ -93,6 +93,28 @@ class PresetsTest {
     }
 
     @Test
+    void thePaperPresetPutsEachSystemOnThePapersMethodAndLeavingItUndoesAll() {
+        Settings defaults = demoSettings();
+        Settings settings = demoSettings();
+        settings.set("engine.seed", "7");
+        Presets.apply("paper", settings);
+        Map<String, String> paper = Map.of("terrain.beta", "1", "terrain.snow-base", "0", "terrain.snow-full", "1",
+                "materials.detail-scale", "1", "lod.mode", "flat-grid", "lod.rule", "paper", "atmosphere.scattering",
+                "single", "atmosphere.wavelengths", "6", "shadow.depth", "fixed24", "water.method", "stencil");
+        paper.forEach((key, value) -> assertEquals(value, settings.text(key), key));
+        assertEquals("7", settings.text("engine.seed"), "the seed is the world's, not the preset's");
+        Map<String, Map<String, String>> all = Presets.all(settings);
+        assertEquals(Optional.of("paper"), Presets.matching(all, settings));
+
+        Presets.apply("low", settings);
+        assertEquals("2.2", settings.text("terrain.beta"), "a quality preset leaves the paper's method");
+        assertEquals("off", settings.text("system.shadow"));
+        Presets.apply("default", settings);
+        settings.set("engine.seed", "1");
+        assertEquals(defaults.asExactText(), settings.asExactText(), "default undoes all of paper and low");
+    }
+
+    @Test
     void thePresetComesFirstThenTheConfigFileThenSeedAndSet() throws IOException {
         assertEquals("full", Launch.settings(options("--preset", "ultra")).text("water.reflection"));
         assertEquals("half", Launch.settings(options("--preset", "ultra", "--set", "water.reflection=half"))
@@ -109,6 +131,6 @@ class PresetsTest {
     @Test
     void anUnknownPresetNamesTheValidOnes() {
         UserError e = assertThrows(UserError.class, () -> Launch.settings(options("--preset", "Ultra")));
-        assertEquals("unknown preset 'Ultra': expected one of low, default, ultra", e.getMessage());
+        assertEquals("unknown preset 'Ultra': expected one of low, default, ultra, paper", e.getMessage());
     }
 }

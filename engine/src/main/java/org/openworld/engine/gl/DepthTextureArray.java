@@ -14,8 +14,11 @@ import org.lwjgl.system.MemoryUtil;
  */
 public final class DepthTextureArray extends GlTexture {
 
-    private DepthTextureArray(GlContext gl, int size, int layers, FloatBuffer depths) {
-        super(gl, GL_TEXTURE_2D_ARRAY, size, size, layers, Format.DEPTH32F, Sampling.NEAREST_BORDER);
+    private DepthTextureArray(GlContext gl, int size, int layers, Format format, FloatBuffer depths) {
+        super(gl, GL_TEXTURE_2D_ARRAY, size, size, layers, format, Sampling.NEAREST_BORDER);
+        if (format != Format.DEPTH32F && format != Format.DEPTH24) {
+            throw new IllegalArgumentException("a shadow map holds depth alone, not " + format);
+        }
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, format().internalFormat(), size, size, layers, 0, format().format(),
                 format().type(), depths);
@@ -26,20 +29,22 @@ public final class DepthTextureArray extends GlTexture {
     }
 
     /**
-     * Storage for {@code layers} maps of {@code size}² 32-bit float depths, to be drawn into.
+     * Storage for {@code layers} maps of {@code size}² depths, to be drawn into.
      *
      * @param size   texels per side
      * @param layers maps, one per cascade
+     * @param format {@link Format#DEPTH32F} (32-bit float) or {@link Format#DEPTH24} (24-bit fixed point, the
+     *               paper's)
      */
-    public static DepthTextureArray of(GlContext gl, int size, int layers) {
-        return new DepthTextureArray(gl, size, layers, null);
+    public static DepthTextureArray of(GlContext gl, int size, int layers, Format format) {
+        return new DepthTextureArray(gl, size, layers, format, null);
     }
 
     /** One texel at the far plane (depth 1): a map with nothing in it, under which everything is lit. */
     public static DepthTextureArray empty(GlContext gl) {
         FloatBuffer far = MemoryUtil.memAllocFloat(1).put(0, 1f);
         try {
-            return new DepthTextureArray(gl, 1, 1, far);
+            return new DepthTextureArray(gl, 1, 1, Format.DEPTH32F, far);
         } finally {
             MemoryUtil.memFree(far);
         }

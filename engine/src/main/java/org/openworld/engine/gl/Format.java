@@ -32,7 +32,12 @@ public enum Format {
     /** 24-bit depth and an 8-bit stencil: the scene's depth, with the water's stencil marks. */
     DEPTH24_STENCIL8(GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8),
     /** 32-bit float depth: shadow maps and depth that is read back. */
-    DEPTH32F(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT);
+    DEPTH32F(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT),
+    /**
+     * 24-bit fixed-point depth, uploaded from floats: 2^24 equal steps over 0 .. 1, the paper's shadow-map depth
+     * ({@code shadow.depth=fixed24}).
+     */
+    DEPTH24(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT);
 
     private final int internalFormat;
     private final int format;

@@ -1,5 +1,6 @@
 package org.openworld.engine.shadow;
 
+import org.openworld.engine.gl.Format;
 import org.openworld.engine.settings.Setting;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -13,6 +14,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param margin       the paper's Z-buffer margin, in depth-buffer units (0 .. 1 over the light box's depth): a point
  *                     is shadowed only when something is nearer the sun by more than this. Figure 10's series is 0,
  *                     0.001, 0.01, 0.1; figure 12 uses 0.01. Added to the cascades' own biases too
+ * @param depth        how the maps store depth: FLOAT32 (the default, 32-bit float) or FIXED24 (the paper's 24-bit
+ *                     depth buffer: 2^24 equal steps over the box's depth). Both are 0 .. 1 over the box's depth, so
+ *                     a margin means the same share of it in both; a float's step is never coarser than 24-bit's
  * @param kernel       side N of the percentage-closer filter: N × N depth tests a texel apart, averaged; odd. Figure
  *                     11's series is 1, 3, 5, 7
  * @param penumbra     CASCADES: where the caster lies so far above the ground that the sun's disc blurs the edge
@@ -39,6 +43,7 @@ public record ShadowSettings(
         @Setting(doc = "texels per side of each shadow map", unit = "texels", min = 64, max = 8192) int resolution,
         @Setting(doc = "the paper's Z-buffer margin, in depth-buffer units (figure 10)", min = 0, max = 1)
         double margin,
+        @Setting(doc = "how the maps store depth: FLOAT32 or FIXED24 (the paper's 24-bit depth buffer)") Depth depth,
         @Setting(doc = "side N of the N x N percentage-closer filter, odd (figure 11)", min = 1, max = 9) int kernel,
         @Setting(doc = "CASCADES: softer shadow edges far from their casters (the sun's disc)") boolean penumbra,
         @Setting(doc = "number of cascades of the CASCADES method", min = 1, max = 4) int cascades,
@@ -60,6 +65,21 @@ public record ShadowSettings(
         PAPER
     }
 
+    /** How the maps store depth. */
+    public enum Depth {
+        /** 32-bit float: finer than 24 bits near the sun (depth 0), as fine near depth 1. */
+        FLOAT32(Format.DEPTH32F),
+        /** 24-bit fixed point, the paper's depth buffer: steps of 1 / (2^24 − 1) of the box's depth everywhere. */
+        FIXED24(Format.DEPTH24);
+
+        /** The texture format of the maps. */
+        public final Format format;
+
+        Depth(Format format) {
+            this.format = format;
+        }
+    }
+
     /** When a map is redrawn; a map not redrawn keeps its depths and its box from the frame that drew it. */
     public enum Refresh {
         /** Every map, every frame. */
@@ -73,15 +93,15 @@ public record ShadowSettings(
         STAGGERED
     }
 
-    public static final ShadowSettings DEFAULTS = new ShadowSettings(Method.CASCADES, 2048, 0, 3, true, 4, 0.75, 8000,
-            1.0, 1.0, Refresh.STAGGERED, 0.05, false);
+    public static final ShadowSettings DEFAULTS = new ShadowSettings(Method.CASCADES, 2048, 0, Depth.FLOAT32, 3,
+            true, 4, 0.75, 8000, 1.0, 1.0, Refresh.STAGGERED, 0.05, false);
 
     public static final SettingsGroup<ShadowSettings> SETTINGS =
             SettingsGroup.of("shadow", ShadowSettings.class, DEFAULTS);
 
     public ShadowSettings {
-        if (method == null || refresh == null) {
-            throw new IllegalArgumentException("shadow method and refresh must be given");
+        if (method == null || depth == null || refresh == null) {
+            throw new IllegalArgumentException("shadow method, depth and refresh must be given");
         }
         if (kernel % 2 == 0) {
             throw new IllegalArgumentException("the filter kernel must be odd (centred on the point), got " + kernel);

@@ -101,14 +101,15 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         fitMaps(context.settings().get(ShadowSettings.class), context.world());
     }
 
-    /** (Re)makes the depth layers when the resolution or the number of maps changed: once, not every frame. */
+    /** (Re)makes the depth layers when their size, number or depth format changed: once, not every frame. */
     private void fitMaps(ShadowSettings s, World world) {
-        if (maps != null && maps.size() == s.resolution() && maps.layers() == s.maps()) {
+        if (maps != null && maps.size() == s.resolution() && maps.layers() == s.maps()
+                && maps.format() == s.depth().format) {
             return;
         }
         layers.forEach(owned::drop);
         layers.clear();
-        maps = owned.replace("maps", maps, DepthTextureArray.of(gl, s.resolution(), s.maps()));
+        maps = owned.replace("maps", maps, DepthTextureArray.of(gl, s.resolution(), s.maps(), s.depth().format));
         for (int i = 0; i < s.maps(); i++) {
             layers.add(owned.own("map" + i, Framebuffer.onLayer(gl, maps, i)));
         }

@@ -15,7 +15,11 @@
  * 0.01, 0.1), against the surface shadowing itself where one texel's single depth stands for a tilted patch of
  * ground ("acne"), at the price of shadows that come loose from their casters when too large; and
  * <b>percentage-closer filtering</b> (figure 11's 1×1 to 7×7 kernels): the mean of N × N such tests a texel apart,
- * a soft edge N texels wide instead of a jagged one. Beyond the paper, the sun's disc (0.53°) blurs an edge by
+ * a soft edge N texels wide instead of a jagged one. The paper's depth buffer has 24 bits
+ * ({@link org.openworld.engine.shadow.ShadowSettings.Depth#FIXED24}); the default stores 32-bit floats, never coarser.
+ * Both span 0 .. 1 over the box's depth, so a margin is the same share of it in both, and the paper's margins are
+ * thousands of 24-bit steps: its acne is a texel's footprint, not rounding.
+ * Beyond the paper, the sun's disc (0.53°) blurs an edge by
  * 0.93 cm per metre between caster and ground: with {@code shadow.penumbra} one more test, against a depth
  * {@code 1.5 N t / 0.0093} metres nearer the sun (t the texel), finds casters far enough for that blur to outgrow the
  * filter, and there the N × N tests spread to two texels apart (no further: nearest-texel tests would show as steps).

@@ -1,7 +1,9 @@
 package org.openworld.engine.shadow;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.lwjgl.opengl.GL30C.*;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -14,6 +16,8 @@ import org.joml.Vector4f;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
@@ -181,20 +185,74 @@ class ShadowRenderTest {
         return (double) dark / all;
     }
 
-    @Test
-    void acneFallsAsTheMarginGrows() {
+    /** Figure 10 at both depths: the acne comes from a texel's footprint, not from rounding, so 24 bits change nothing. */
+    @ParameterizedTest
+    @ValueSource(strings = {"float32", "fixed24"})
+    void acneFallsAsTheMarginGrows(String depth) {
         Image reference = unshadowed();
         double[] margins = {0, 0.001, 0.01, 0.1};
         double[] acne = new double[margins.length];
         for (int i = 0; i < margins.length; i++) {
             acne[i] = acne(render("shadow.method=PAPER", "shadow.kernel=1", "shadow.resolution=256",
-                    "shadow.margin=" + margins[i]), reference);
+                    "shadow.depth=" + depth, "shadow.margin=" + margins[i]), reference);
         }
         String series = java.util.Arrays.toString(acne);
         assertTrue(acne[0] > 0.2, "no margin: the ground shadows itself " + series);
         assertTrue(acne[0] > acne[1] && acne[1] > acne[2], "acne falls with the margin " + series);
         assertTrue(acne[2] < 0.01 && acne[3] < 0.01, "0.01 and above: no acne " + series);
-        assertTrue(acne(render(), reference) < 0.01, "the cascades' slope and normal biases: no acne");
+        assertTrue(acne(render("shadow.depth=" + depth), reference) < 0.01,
+                "the cascades' slope and normal biases: no acne");
+    }
+
+    /** The map's internal format and depth bits as GL reports them. */
+    static int[] formatOf(SunShadow sun) {
+        sun.map().bind(0);
+        return new int[] {glGetTexLevelParameteri(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_INTERNAL_FORMAT),
+            glGetTexLevelParameteri(GL_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_DEPTH_SIZE)};
+    }
+
+    /**
+     * Share of the map's depths below 1/4 that lie on a 24-bit step, k / (2^24 − 1): all of them in a 24-bit map.
+     * Below 1/4 a float's rounding of such a step is under an eighth of a step, so the test is exact there; a float
+     * map's depths fall anywhere between the steps.
+     */
+    static double onTwentyFourBitSteps(float[] depths) {
+        double steps = (1 << 24) - 1;
+        int near = 0;
+        int on = 0;
+        for (float d : depths) {
+            if (d > 0 && d < 0.25f) {
+                near++;
+                double k = d * steps;
+                if (Math.abs(k - Math.rint(k)) < 0.125) {
+                    on++;
+                }
+            }
+        }
+        assertTrue(near > 1000, "only " + near + " depths below 1/4 to look at");
+        return (double) on / near;
+    }
+
+    @Test
+    void theDepthSettingMakesTwentyFourBitMapsAndBack() {
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings("shadow.method=PAPER"),
+                new CullingSystem(), new TerrainSystem(), new ShadowSystem())) {
+            engine.world().setResource(EAST_SUN);
+            engine.world().resource(Camera.class).setPose(ABOVE);
+            engine.update();
+            engine.render();
+            SunShadow floats = engine.world().resource(SunShadow.class);
+            assertArrayEquals(new int[] {GL_DEPTH_COMPONENT32F, 32}, formatOf(floats), "the default: 32-bit float");
+            double floatSteps = onTwentyFourBitSteps(floats.map().read());
+
+            engine.settings().set("shadow.depth", "fixed24");
+            engine.render();
+            SunShadow fixed = engine.world().resource(SunShadow.class);
+            assertArrayEquals(new int[] {GL_DEPTH_COMPONENT24, 24}, formatOf(fixed), "the paper's 24 bits");
+            double fixedSteps = onTwentyFourBitSteps(fixed.map().read());
+            assertTrue(fixedSteps > 0.999 && floatSteps < 0.5, "depths on 24-bit steps: " + fixedSteps
+                    + " of the 24-bit map's, " + floatSteps + " of the float map's");
+        }
     }
 
     /** This frame's maps and boxes, after rendering at a pose. */
