@@ -154,31 +154,34 @@ final class FigureCatalogue {
         list.add(shot("8c", 8, phases, "Mie only: the bright glow around the sun, forward-peaked.",
                 "17:30", WEST_SKY_POSE, "atmosphere.component=mie"));
 
-        // Figure 9: a day, the paper's single scattering, then the default multiple scattering for comparison.
-        // Auto-exposure off and a fixed exposure per time (docs/sky.md), so both rows of a time are shown alike.
-        record Moment(String letter, String caption, String time, String pose, int exposureEv, String look) {
+        // Figure 9: a day, the paper's single scattering at one exposure for every hour (noon's: the paper does not
+        // adapt it, so its dawn and dusk are dark), then the default, multiple scattering at the exposure adapted to
+        // the light of the moment, for comparison (docs/sky.md)
+        record Moment(String letter, String caption, String time, String pose, String look) {
         }
         List<Moment> day = List.of(
                 new Moment("a", "(a) Early dawn, absence of higher order scattering terms obvious", "04:42", DAWN_POSE,
-                        7, "sun 6° below the horizon: a glow in the east and a duller, greyer sky away from it"),
-                new Moment("b", "(b) Just before sunrise", "05:06", DAWN_POSE, 5,
+                        "sun 6° below the horizon: a glow in the east and a duller, greyer sky away from it"),
+                new Moment("b", "(b) Just before sunrise", "05:06", DAWN_POSE,
                         "sun 2° below: orange horizon, the peaks still unlit"),
-                new Moment("c", "(c) Sunrise", "05:24", DAWN_POSE, 3,
+                new Moment("c", "(c) Sunrise", "05:24", DAWN_POSE,
                         "sun 1° up: the first light on the peaks, lit cloud undersides"),
-                new Moment("d", "(d) Daylight backscattering", "12:00", NOON_POSE, 0,
+                new Moment("d", "(d) Daylight backscattering", "12:00", NOON_POSE,
                         "noon, looking away from the sun: deep blue overhead, paler at the horizon"),
-                new Moment("e", "(e) Sunset", "18:36", DUSK_POSE, 3,
+                new Moment("e", "(e) Sunset", "18:36", DUSK_POSE,
                         "sun 1° up in the west: red-yellow light, long shadows"),
-                new Moment("f", "(f) Dusk, absence of higher order scattering terms obvious", "19:18", DUSK_POSE, 7,
+                new Moment("f", "(f) Dusk, absence of higher order scattering terms obvious", "19:18", DUSK_POSE,
                         "sun 6° below: only the western horizon still glows"));
         for (String model : List.of("single", "multiple")) {
             for (Moment m : day) {
                 boolean paper = model.equals("single");
+                List<String> settings = paper
+                        ? List.of("atmosphere.scattering=single", "sky.auto-exposure=off")
+                        : List.of("atmosphere.scattering=multiple");
                 list.add(shot("9" + m.letter() + (paper ? "" : "-multiple"), 9, m.caption(),
-                        (paper ? "Single scattering, the paper's: " : "Multiple scattering (the default), to set "
-                                + "beside 9" + m.letter() + ": ") + m.look() + "; exposure " + m.exposureEv() + " EV.",
-                        m.time(), m.pose(), "atmosphere.scattering=" + model, "sky.auto-exposure=off",
-                        "sky.exposure=" + m.exposureEv()));
+                        (paper ? "Single scattering, the paper's, at noon's exposure: " : "Multiple scattering at the "
+                                + "adapted exposure (the default), to set beside 9" + m.letter() + ": ") + m.look()
+                                + ".", m.time(), m.pose(), settings.toArray(String[]::new)));
             }
         }
 

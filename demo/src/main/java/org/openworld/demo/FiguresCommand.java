@@ -18,6 +18,7 @@ import org.openworld.engine.sky.AtmosphereSettings;
 import org.openworld.engine.sky.AtmosphereTables;
 import org.openworld.engine.sky.SkyPicture;
 import org.openworld.engine.sky.SkyReference;
+import org.openworld.engine.sky.SkySettings;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -176,21 +177,27 @@ final class FiguresCommand implements Callable<Integer> {
     }
 
     /**
-     * Under figure 9a when its sky has the paper's normalised constants: the zenith's luminance with the sun 4°
-     * below the horizon against the default sky's, the issue's check of figure 9's dark dawn ({@code TwilightTest}).
+     * Under figure 9a: the zenith's luminance with the sun 4° below the horizon as the picture shows it (the scene's
+     * luminance times the exposure), in the figure's sky and in the default one (multiple scattering, physical
+     * constants, the exposure adapted to the light): the issue's check of figure 9's dark dawn ({@code TwilightTest}).
      */
     static String twilight(Figure figure, Settings settings) {
-        AtmosphereSettings air = settings.get(AtmosphereSettings.class);
-        if (!figure.id().equals("9a") || air.constants() != AtmosphereSettings.Constants.NORMALISED) {
+        if (!figure.id().equals("9a")) {
             return "";
         }
         double sun = Math.toRadians(-4);
-        double self = SkyReference.zenithLuminance(AtmosphereTables.build(air), sun, SkyPicture.EYE_ALTITUDE_M);
-        double reference = SkyReference.zenithLuminance(AtmosphereTables.build(AtmosphereSettings.DEFAULTS), sun,
+        AtmosphereTables air = AtmosphereTables.build(settings.get(AtmosphereSettings.class));
+        double self = SkyReference.displayedZenith(air, settings.get(SkySettings.class), sun,
                 SkyPicture.EYE_ALTITUDE_M);
-        return String.format(Locale.ROOT, "zenith luminance with the sun 4° below the horizon: %.3g in this sky, "
-                + "%.3g in the default one (multiple scattering, physical constants), %.2f times", self, reference,
-                self / reference);
+        double scene = SkyReference.zenithLuminance(air, sun, SkyPicture.EYE_ALTITUDE_M);
+        AtmosphereTables defaults = AtmosphereTables.build(AtmosphereSettings.DEFAULTS);
+        double reference = SkyReference.displayedZenith(defaults, SkySettings.DEFAULTS, sun,
+                SkyPicture.EYE_ALTITUDE_M);
+        double referenceScene = SkyReference.zenithLuminance(defaults, sun, SkyPicture.EYE_ALTITUDE_M);
+        return String.format(Locale.ROOT, "zenith with the sun 4° below the horizon, as shown (luminance × exposure): "
+                + "%.3g in this sky, %.3g in the default one (multiple scattering, adapted exposure), %.3g times; "
+                + "in the scene, before the exposure: %.3g and %.3g", self, reference, self / reference, scene,
+                referenceScene);
     }
 
     /** Those of these settings that the heightmap command reads (engine.*, terrain.*): no other changes its maps. */

@@ -37,6 +37,18 @@ public final class SkyReference {
         return 0.2126 * up.x + 0.7152 * up.y + 0.0722 * up.z;
     }
 
+    /**
+     * The zenith's luminance as a picture shows it: {@link #zenithLuminance} times the exposure the sky system would
+     * use for that sun ({@code sky.auto-exposure}: adapted to the light of the moment, or noon's; times the
+     * compensation {@code sky.exposure}). A sky darker than another in the scene can show brighter once exposed.
+     */
+    public static double displayedZenith(AtmosphereTables t, SkySettings sky, double sunElevationRad,
+                                         double cameraAltitudeM) {
+        SkyLight light = sky.autoExposure() ? SunTables.build(t, sunElevationRad, cameraAltitudeM).light() : null;
+        return zenithLuminance(t, sunElevationRad, cameraAltitudeM)
+                * SkySystem.exposure(light, Math.sin(sunElevationRad), sky.exposure());
+    }
+
     /** Angle between the horizontal projections of two directions, [0, π]; 0 when either is vertical. */
     static double azimuthBetween(Vector3dc a, Vector3dc b) {
         double dot = a.x() * b.x() + a.z() * b.z();

@@ -15,7 +15,9 @@ import org.openworld.engine.sky.AtmosphereSettings.Scattering;
  * expected the paper's twilight zenith below half the default's; measured, it is several times brighter, because
  * O'Neil's normalised air thins with a 25 km scale height here, so the air above the planet's shadow (15 km up at
  * the zenith with the sun 4° down) is still dense, where Earth's 8 km scale height leaves it thin. With physical
- * constants and the same sums the twilight is as bright as the default's. docs/sky.md gives the numbers.
+ * constants and the same sums the twilight is as bright as the default's. What makes the paper's dawn and dusk dark
+ * is its one exposure for every hour: shown at noon's, its twilight zenith is darker than the default sky shown at
+ * the exposure adapted to the light of the moment. docs/sky.md gives the numbers.
  */
 class TwilightTest {
 
@@ -39,6 +41,28 @@ class TwilightTest {
         assertTrue(zenith(paper, -4) > 4 * d, "the normalised twilight zenith at -4 deg against the default's");
         double p = zenith(physical, -4);
         assertTrue(p > 0.5 * d && p < 2 * d, "with physical constants the same sums give about the default's");
+    }
+
+    @Test
+    void atThePapersOneExposureItsTwilightShowsDarkerThanTheDefaultsAdaptedOne() {
+        // What figure 9 shows: the paper's sky at noon's exposure for every hour (sky.auto-exposure=off, as
+        // --preset paper), the default adapted to the light of the moment, which lifts its twilight 5 to 6 stops
+        AtmosphereTables paper = AtmosphereTables.build(PAPER);
+        AtmosphereTables defaults = AtmosphereTables.build(AtmosphereSettings.DEFAULTS);
+        SkySettings fixed = new SkySettings(46, 10, 0, false);
+        for (double sunDeg : new double[] {-2, -4}) {
+            double sun = Math.toRadians(sunDeg);
+            double shown = SkyReference.displayedZenith(paper, fixed, sun, SkyPicture.EYE_ALTITUDE_M);
+            double adapted = SkyReference.displayedZenith(defaults, SkySettings.DEFAULTS, sun,
+                    SkyPicture.EYE_ALTITUDE_M);
+            System.out.printf(Locale.ROOT, "twilight shown: sun %.0f deg, paper at noon's exposure %.3g, default "
+                    + "adapted %.3g (%.2f times)%n", sunDeg, shown, adapted, shown / adapted);
+            assertTrue(shown < 0.5 * adapted, "sun " + sunDeg + " deg: the paper's zenith shows " + shown
+                    + ", the default's " + adapted);
+            // and the paper's adapted too would not be dark: the darkness is the fixed exposure's
+            assertTrue(SkyReference.displayedZenith(paper, SkySettings.DEFAULTS, sun, SkyPicture.EYE_ALTITUDE_M)
+                    > adapted, "sun " + sunDeg + " deg, both adapted");
+        }
     }
 
     @Test
