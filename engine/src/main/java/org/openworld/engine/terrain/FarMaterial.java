@@ -57,8 +57,8 @@ final class FarMaterial {
 
     /**
      * Makes the textures and the bake programs, one per tiling's {@link MaterialSettings.Tiling#program() program},
-     * handed to the system's owner ({@code terrain.far-material.colour}, {@code terrain.far-material.slope}, {@code terrain.bake},
-     * {@code terrain.bake.stochastic}); nothing is baked until {@link #refresh}.
+     * handed to the system's owner ({@code terrain.far-material.colour}, {@code terrain.far-material.slope},
+     * {@code terrain.bake}, {@code terrain.bake.stochastic}); nothing is baked until {@link #refresh}.
      *
      * @param unitHeights   texture unit the caller binds the height pyramid to before a refresh; then the gradients
      *                      and the snow map on the next two units

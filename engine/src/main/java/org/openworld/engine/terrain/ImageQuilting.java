@@ -39,9 +39,10 @@ import org.openworld.engine.core.FftThreads;
  * right strip) and the last row the first row (its bottom strip), cut the same way; the quilt's last column then
  * continues into its first like any interior pair, and the whole repeats only every FACTOR exemplar sides.
  *
- * <p><b>Cost.</b> Per block four 64² FFTs (three forward, of the mask and the masked features two to a transform, one inverse) and a pass over the candidates: 256 blocks per
- * material at the defaults; {@link TerrainTextures#quilted} reports the time. Deterministic: one seeded random
- * stream per material, FFTs pinned ({@link FftThreads}).
+ * <p><b>Cost.</b> Per block four 64² FFTs (three forward, of the mask and the masked features two to a transform;
+ * one inverse) and a pass over the candidates: 256 blocks per material at the defaults, the three materials in
+ * parallel; the terrain reports the time as its {@code quilting} stage (a few seconds on two busy cores).
+ * Deterministic: one seeded random stream per material, FFTs pinned ({@link FftThreads}).
  *
  * <p><b>Limits.</b> The quilt still repeats, FACTOR times further apart; memory grows with FACTOR² (a 2048² array
  * of three layers, two textures and their mips is 128 MiB). Features larger than a block (the rock's strata, the

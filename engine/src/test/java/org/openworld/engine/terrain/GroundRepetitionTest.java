@@ -31,7 +31,8 @@ import org.openworld.engine.gl.Image;
  * The numbers of today's tiling are in docs/terrain.md; here the measure is shown to see the tiles on a real picture:
  * from 100 m (about 115 m of ground across the picture) the 2.7 m detail tile repeats strongly, and with tiles 50 m
  * wide, fewer than three across, it does not; stochastic tiling ({@code materials.tiling=stochastic}) removes the
- * repeat, and the quilt ({@code quilted}) pushes it out to four tiles. Pictures go to {@code target/test-images/ground-repetition-*.png}.
+ * repeat, and the quilt ({@code quilted}) pushes it out to four tiles. Pictures go to
+ * {@code target/test-images/ground-repetition-*.png}.
  */
 @GlTest
 class GroundRepetitionTest {
