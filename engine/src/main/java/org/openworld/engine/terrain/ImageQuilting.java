@@ -1,6 +1,7 @@
 package org.openworld.engine.terrain;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
 import org.jtransforms.fft.DoubleFFT_2D;
@@ -54,7 +55,7 @@ final class ImageQuilting {
     static final int FACTOR = 4;
     /** Texels from one block to the next: a quarter of the 512 exemplar, 68 cm, more than a rock slab. */
     static final int STEP = 128;
-    /** Texels two neighbouring blocks share, where the seam is cut (the paper's overlap: a sixth of the block). */
+    /** Texels two neighbouring blocks share, where the seam is cut: a fifth of the block (the paper takes a sixth). */
     static final int OVERLAP = 32;
     /** Block side. */
     static final int BLOCK = STEP + OVERLAP;
@@ -93,7 +94,8 @@ final class ImageQuilting {
     private final int[] sourceY;
     private final List<Seam> seams = new ArrayList<>();
 
-    private ImageQuilting(byte[] albedo, byte[] detail, int n) {
+    /** A quilter of this exemplar ({@link #quilt} runs one); nothing is placed yet. */
+    ImageQuilting(byte[] albedo, byte[] detail, int n) {
         if (n % STEP != 0 || n < 2 * BLOCK) {
             throw new IllegalArgumentException("exemplar side " + n + " must be a multiple of " + STEP
                     + " and at least " + 2 * BLOCK);
@@ -142,12 +144,22 @@ final class ImageQuilting {
      */
     static Quilt quilt(byte[] albedo, byte[] detail, int n, SplittableRandom rng) {
         ImageQuilting q = new ImageQuilting(albedo, detail, n);
-        for (int j = 0; j < q.blocks; j++) {
-            for (int i = 0; i < q.blocks; i++) {
-                q.place(i, j, rng);
+        q.placeAll(rng);
+        return q.result();
+    }
+
+    /** Places every block, in rows from the top left. */
+    void placeAll(SplittableRandom rng) {
+        for (int j = 0; j < blocks; j++) {
+            for (int i = 0; i < blocks; i++) {
+                place(i, j, rng);
             }
         }
-        return new Quilt(q.size, q.albedo, q.detail, q.blocks, q.sourceX, q.sourceY, List.copyOf(q.seams));
+    }
+
+    /** The quilt as placed so far. */
+    Quilt result() {
+        return new Quilt(size, albedo, detail, blocks, sourceX, sourceY, List.copyOf(seams));
     }
 
     /** Chooses and places block (i, j), cutting its seams with what is already placed. */
@@ -233,9 +245,9 @@ final class ImageQuilting {
             }
         }
         if (least == Double.POSITIVE_INFINITY) {
-            // the neighbours' sources cover the exemplar between them (possible only for the wrapped corner blocks
-            // of a small exemplar): choose among all
-            java.util.Arrays.fill(allowed, true);
+            // the neighbours' sources cover the exemplar between them (possible only for a block of the last row or
+            // column, which has three or four placed neighbours): choose among all
+            Arrays.fill(allowed, true);
             for (double e : error) {
                 least = Math.min(least, e);
             }
@@ -251,8 +263,11 @@ final class ImageQuilting {
         return near[rng.nextInt(count)];
     }
 
-    /** E(u) for every candidate offset u (the class comment's formula), by FFT on the matching grid. */
-    private double[] overlapError(int i, int j, boolean left, boolean top, boolean right, boolean bottom) {
+    /**
+     * E(u) for every candidate offset u (the class comment's formula; index (v / MATCH) · (n / MATCH) + u / MATCH) of
+     * block (i, j) over the strips named, against the quilt as it is now, by FFT on the matching grid.
+     */
+    double[] overlapError(int i, int j, boolean left, boolean top, boolean right, boolean bottom) {
         int side = BLOCK / MATCH;
         int overlap = OVERLAP / MATCH;
         int step = STEP / MATCH;

@@ -13,8 +13,8 @@ import org.openworld.engine.EngineSettings;
 import org.openworld.engine.terrain.TerrainTextures.Material;
 
 /**
- * Image quilting ({@link ImageQuilting}) on the real exemplars, the synthesised grass, rock and snow: seams cut by
- * minimum error, neighbouring blocks from different parts of the exemplar, the same bytes for the same seed.
+ * Image quilting ({@link ImageQuilting}) on the real exemplar, the synthesised rock: the overlap error by FFT, seams
+ * cut by minimum error, neighbouring blocks from different parts of the exemplar, the same bytes for the same seed.
  */
 class ImageQuiltingTest {
 
@@ -67,6 +67,55 @@ class ImageQuiltingTest {
             }
             assertEquals(best, found, 1e-12);
         }
+    }
+
+    @Test
+    void theOverlapErrorByFftIsTheSumOfSquaredDifferences() {
+        // block (5, 3)'s left and top strips in the finished quilt, against a few candidates summed texel by texel
+        ImageQuilting quilting = new ImageQuilting(exemplars.albedo(Material.ROCK), exemplars.detail(Material.ROCK),
+                exemplars.size());
+        quilting.placeAll(new SplittableRandom(1));
+        ImageQuilting.Quilt quilt = quilting.result();
+        double[] error = quilting.overlapError(5, 3, true, true, false, false);
+        int m = ImageQuilting.MATCH;
+        int n = exemplars.size();
+        int grid = n / m;
+        byte[] albedo = exemplars.albedo(Material.ROCK);
+        byte[] detail = exemplars.detail(Material.ROCK);
+        for (int c : new int[] {0, 77, 1000, grid * grid - 1}) {
+            double sum = 0;
+            for (int cy = 0; cy < ImageQuilting.BLOCK / m; cy++) {
+                for (int cx = 0; cx < ImageQuilting.BLOCK / m; cx++) {
+                    if (cx >= ImageQuilting.OVERLAP / m && cy >= ImageQuilting.OVERLAP / m) {
+                        continue;
+                    }
+                    double[] old = features(quilt.albedo(), quilt.detail(), quilt.size(),
+                            5 * ImageQuilting.STEP + cx * m, 3 * ImageQuilting.STEP + cy * m);
+                    double[] candidate = features(albedo, detail, n, (c % grid + cx) % grid * m,
+                            (c / grid + cy) % grid * m);
+                    for (int k = 0; k < old.length; k++) {
+                        sum += (candidate[k] - old[k]) * (candidate[k] - old[k]);
+                    }
+                }
+            }
+            assertEquals(sum, error[c], 1e-4 * sum, "candidate " + c);
+        }
+    }
+
+    /** The matched features, albedo r, g, b and relief (0..1), averaged over the MATCH² texels at (x, y). */
+    static double[] features(byte[] albedo, byte[] detail, int side, int x, int y) {
+        double[] f = new double[4];
+        int m = ImageQuilting.MATCH;
+        for (int dy = 0; dy < m; dy++) {
+            for (int dx = 0; dx < m; dx++) {
+                int t = 4 * ((y + dy) * side + x + dx);
+                f[0] += (albedo[t] & 0xFF) / (255.0 * m * m);
+                f[1] += (albedo[t + 1] & 0xFF) / (255.0 * m * m);
+                f[2] += (albedo[t + 2] & 0xFF) / (255.0 * m * m);
+                f[3] += (detail[t + 2] & 0xFF) / (255.0 * m * m);
+            }
+        }
+        return f;
     }
 
     @Test
