@@ -12,16 +12,20 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param snowMode    where snow lies: from the snow map (figure 1b) or above a fixed height (figure 1a)
  * @param normalMap   perturb the normal with the materials' tangent-space normal maps (figure 3, "normal")
  * @param glossMap    add sun highlights and a sky reflection, scaled per texel by the gloss maps (figure 3, "gloss")
- * @param skyOcclusion let the relief hide its share of the sky's light ({@link SkyVisibility}): valleys and the feet
- *                    of cliffs darker in the shade, lit by the ground around instead
- * @param detailScale side of the fine texture tile on the ground; the coarse tile that is blended in to hide the
- *                    repetition is {@code shaders/terrain/material.glsl}'s {@code MAT_COARSE_FACTOR} times larger
+ * @param skyOcclusion let the relief hide its share of the sky's light ({@link SkyVisibility}): in valleys and at the
+ *                    feet of cliffs that share is lit by the terrain instead, warmer, and darker under a low sun
+ * @param detailScale side of the fine texture tile (the synthesised exemplar) on the ground; the coarse tile that is
+ *                    blended in to hide the repetition is {@code shaders/terrain/material.glsl}'s
+ *                    {@code MAT_COARSE_FACTOR} times larger; a quilted texture spans {@link ImageQuilting#FACTOR}
+ *                    exemplar tiles at the same texel size
  * @param farTexels   distance from the eye beyond which the terrain reads the {@link FarMaterial} baked once instead
  *                    of every material layer, in texels of that material (2 m each on the default map, 1 m on a
  *                    1 km one), so a coarser bake starts further out; the near material fades into it over the last
  *                    {@link FarMaterial#BLEND_FRACTION} of that distance
- * @param tiling      how the detail textures cover the ground: repeated tiles, or stochastic tiling (Heitz and Neyret
- *                    2018), which hides the repetition at three times the texture lookups of the near material
+ * @param tiling      how the detail textures cover the ground: repeated tiles, textures quilted from them at start-up
+ *                    (Efros and Freeman 2001), which repeat four times further apart at no cost per pixel, or
+ *                    stochastic tiling (Heitz and Neyret 2018), which hides the repetition at three times the texture
+ *                    lookups of the near material
  */
 public record MaterialSettings(
         @Setting(doc = "where snow lies: snow-map (probabilistic map) or altitude-bands (plain height bands)")
@@ -32,7 +36,8 @@ public record MaterialSettings(
         @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
         @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
                 max = 100000) double farTexels,
-        @Setting(doc = "how the detail textures tile: repeat or stochastic (Heitz-Neyret)") Tiling tiling) {
+        @Setting(doc = "how the detail textures tile: repeat, quilted (Efros-Freeman) or stochastic (Heitz-Neyret)")
+        Tiling tiling) {
 
     /** How snow is placed on the terrain. */
     public enum SnowMode {
@@ -43,17 +48,29 @@ public record MaterialSettings(
     }
 
     /**
-     * How the detail textures cover the ground; each is a variant of the near terrain and the bake programs
-     * ({@code MAT_STOCHASTIC} in {@code shaders/terrain/material.glsl}), so neither pays for the other.
+     * How the detail textures cover the ground; the repeated and the stochastic tiles are each a variant of the near
+     * terrain and the bake programs ({@code MAT_STOCHASTIC} in {@code shaders/terrain/material.glsl}), so neither
+     * pays for the other; the quilted textures are drawn by the repeated tiles' programs.
      */
     public enum Tiling {
         /** The tiles repeat: one lookup per scale, visibly periodic from tens of metres up. */
         REPEAT,
         /**
+         * Image quilting (Efros and Freeman 2001), made at start-up: each material's tile cut into blocks and sewn
+         * into a texture four times as wide along minimum-error seams ({@link ImageQuilting}), then repeated like
+         * the tiles; 16 times the texture memory.
+         */
+        QUILTED,
+        /**
          * Histogram-preserving stochastic tiling (Heitz and Neyret 2018), with the mean-and-variance-preserving
          * blend: three randomly shifted lookups per scale, blended over a triangle grid; nothing repeats.
          */
         STOCHASTIC;
+
+        /** The tiling whose programs draw this one: the quilt is sampled like the repeated tiles. */
+        Tiling program() {
+            return this == QUILTED ? REPEAT : this;
+        }
 
         /** The shader defines of the programs for this tiling. */
         List<String> defines() {

@@ -5,7 +5,9 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.Owned;
 import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
 
@@ -33,7 +35,8 @@ import org.openworld.engine.gl.Uniform;
  *
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
  * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and three
- * more for the other tiling ({@link MaterialSettings.Tiling}: the two near programs and the bake come in both).
+ * more for the stochastic tiling ({@link MaterialSettings.Tiling}: the two near programs and the bake come in both;
+ * the quilted textures are drawn by the repeated tiles' programs).
  */
 final class TerrainShading {
 
@@ -49,24 +52,38 @@ final class TerrainShading {
     private final Lit unshadowed;
     private final ShaderProgram tangentSpace;
     private final TerrainMaterials.Uniforms levelsUniforms;
-    private final TerrainMaterials materials;
+    private final GlContext gl;
+    private final Owned owned;
+    private final int seed;
+    private final StageTimes times;
+    /** The synthesised tiles, kept to quilt from when {@code materials.tiling} turns to quilted. */
+    private final TerrainTextures tiles;
+    private TerrainMaterials materials;
+    private boolean quilted;
     private final FarMaterial farMaterial;
     private final int unitMaterials;
     private final int unitFar;
 
     /**
-     * Makes the programs, the materials and the far material, handed to the system's owner, and bakes the far
-     * material with the settings of the start.
+     * Makes the programs, the materials (quilted if the settings of the start ask for it, timed as the
+     * {@code quilting} stage) and the far material, handed to the system's owner, and bakes the far material with
+     * the settings of the start.
      *
      * @param unitHeights   the unit of the height pyramid; the gradients and the snow map take the next two, the
      *                      materials the {@link TerrainMaterials#UNITS} after those, then the far material two
      */
-    TerrainShading(EngineContext context, TerrainMaps maps, HeightMap base, int cells, int seed, int unitHeights) {
+    TerrainShading(EngineContext context, TerrainMaps maps, HeightMap base, int cells, int seed, int unitHeights,
+                   StageTimes times) {
         int unitGradients = unitHeights + 1;
         int unitSnow = unitHeights + 2;
         unitMaterials = unitHeights + 3;
         unitFar = unitMaterials + TerrainMaterials.UNITS; // and the next: colour, slope
-        materials = context.own("materials", new TerrainMaterials(context.gl(), seed));
+        gl = context.gl();
+        owned = context.owned();
+        this.seed = seed;
+        this.times = times;
+        tiles = TerrainTextures.generate(seed);
+        materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         farMaterial = new FarMaterial(context, base, unitHeights);
         shadowed = lit(context, "", List.of(), base, cells, unitHeights);
         unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), base, cells, unitHeights);
@@ -83,6 +100,12 @@ final class TerrainShading {
         farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
     }
 
+    /** The materials' textures for this tiling: the tiles, or a quilt of them made now. */
+    private TerrainMaterials upload(MaterialSettings.Tiling tiling) {
+        quilted = tiling == MaterialSettings.Tiling.QUILTED;
+        return new TerrainMaterials(gl, quilted ? times.time("quilting", () -> tiles.quilted(seed)) : tiles);
+    }
+
     /**
      * The near programs ({@code program}, {@code program.stochastic}) and the far one ({@code program.far}),
      * {@code suffix} on their roles.
@@ -91,6 +114,9 @@ final class TerrainShading {
                     int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
+            if (tiling.program() != tiling) {
+                continue;
+            }
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
                     with(light, tiling.defines()), base, cells, unitHeights);
             p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
@@ -130,12 +156,16 @@ final class TerrainShading {
 
     /**
      * Draws the ordered patches in the colouring asked for, near ones first; the maps are bound to their units.
-     * Bakes the far material again first if a setting it depends on changed. {@code sunShadowed}: the pass has the
+     * Quilts the textures (or goes back to the tiles) first if {@code materials.tiling} turned to or from quilted,
+     * and bakes the far material again if a setting it depends on changed. {@code sunShadowed}: the pass has the
      * sun's shadow maps bound (RenderContext#sunShadowed), else the programs without the lookup draw.
      */
     void draw(PatchList patches, PatchOrder order, float[] copyOffsets, MaterialSettings settings,
               TerrainDebugSettings.Colouring colouring, boolean sunShadowed, PatchRenderer renderer,
               DrawStats stats) {
+        if ((settings.tiling() == MaterialSettings.Tiling.QUILTED) != quilted) {
+            materials = owned.replace("materials", materials, upload(settings.tiling()));
+        }
         farMaterial.refresh(materials, settings, unitMaterials);
         farMaterial.bind(unitFar);
         int all = order.size();
@@ -144,7 +174,7 @@ final class TerrainShading {
                 double farDistance = settings.farTexels() * farMaterial.texelMetres();
                 int nearCount = order.nearerThan(farDistance);
                 Lit lit = sunShadowed ? shadowed : unshadowed;
-                Near near = lit.near().get(settings.tiling());
+                Near near = lit.near().get(settings.tiling().program());
                 materials.bind(near.uniforms(), settings, unitMaterials);
                 near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);

@@ -121,7 +121,7 @@ public final class TerrainSystem implements EngineSystem {
         renderer = context.own(new PatchRenderer(context, patterns));
         depthProgram = context.own("depth", context.shaders().program("terrain/terrain.vert", "terrain/depth.frag"));
         setPatchUniforms(depthProgram, base, cells, UNIT_HEIGHTS);
-        shading = new TerrainShading(context, maps, base, cells, seed, UNIT_HEIGHTS);
+        shading = new TerrainShading(context, maps, base, cells, seed, UNIT_HEIGHTS, times);
     }
 
     /** The vertex stage's uniforms: where the heights are and how the patch grid maps onto them. */

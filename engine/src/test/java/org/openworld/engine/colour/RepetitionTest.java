@@ -8,7 +8,10 @@ import java.util.function.IntBinaryOperator;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.gl.Image;
 
-/** The repetition measure on pictures whose answer is known: a tiled pattern, noise, one colour, a gradient. */
+/**
+ * The repetition measure on pictures whose answer is known: a tiled pattern, noise, one colour, and either under a
+ * strong smooth variation, which is not repetition.
+ */
 class RepetitionTest {
 
     static final int W = 160;
@@ -64,23 +67,48 @@ class RepetitionTest {
 
     @Test
     void shiftsShorterThanTheMinimumAreNotRepeats() {
-        // noise blurred over 9 × 9 pixels: like itself a pixel away, not twenty pixels away
+        // noise blurred over 9 × 9 samples: like itself a sample away, not twenty samples away
         int[] v = noise(5, W * H);
-        Image blurred = grey((x, y) -> {
-            int sum = 0;
-            int n = 0;
-            for (int dy = -4; dy <= 4; dy++) {
-                for (int dx = -4; dx <= 4; dx++) {
-                    int sx = Math.floorMod(x + dx, W);
-                    int sy = Math.floorMod(y + dy, H);
-                    sum += v[sy * W + sx];
-                    n++;
+        double[] blurred = new double[W * H];
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                for (int dy = -4; dy <= 4; dy++) {
+                    for (int dx = -4; dx <= 4; dx++) {
+                        blurred[y * W + x] += v[Math.floorMod(y + dy, H) * W + Math.floorMod(x + dx, W)] / 81.0;
+                    }
                 }
             }
-            return 128 + (sum / n - 128) * 8;
-        });
-        assertTrue(Repetition.peak(blurred, 1) > 0.8, "a one-pixel shift of smooth noise");
-        assertTrue(Repetition.peak(blurred, 20) < 0.25, "twenty pixels away");
+        }
+        assertTrue(Repetition.peak(blurred, W, H, 1) > 0.8, "a one-sample shift of smooth noise");
+        assertTrue(Repetition.peak(blurred, W, H, 20) < 0.25, "twenty samples away");
+    }
+
+    /** A wave 200 pixels long across the picture, 80 levels high: light and shade, or a terrain's large-scale tint. */
+    static int swell(int x, int y) {
+        return (int) Math.round(40 * Math.sin(2 * Math.PI * (x + 0.6 * y) / 200));
+    }
+
+    @Test
+    void aSmoothVariationIsNotRepetition() {
+        // noise at a quarter of the swell's amplitude: the raw luminance correlates with itself at every short shift
+        // through the swell, the picture's detail does not
+        int[] v = noise(6, W * H);
+        Image picture = grey((x, y) -> 128 + swell(x, y) + (v[y * W + x] - 128) / 5);
+        double[] luma = new double[W * H];
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                luma[y * W + x] = picture.luma(x, y);
+            }
+        }
+        assertTrue(Repetition.peak(luma, W, H, 8) > 0.6, "the swell fools the raw autocorrelation");
+        assertTrue(Repetition.peak(picture, 8) < 0.15, "the detail does not repeat: " + Repetition.peak(picture, 8));
+    }
+
+    @Test
+    void aTileUnderASmoothVariationStillRepeats() {
+        int[] tile = noise(7, 24 * 24);
+        Image picture = grey((x, y) -> 128 + swell(x, y) + (tile[(y % 24) * 24 + x % 24] - 128) / 5);
+        assertTrue(Repetition.peak(picture, 8) > 0.9, "a 24-pixel tile: " + Repetition.peak(picture, 8));
     }
 
     @Test

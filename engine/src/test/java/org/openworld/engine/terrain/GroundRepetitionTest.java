@@ -31,7 +31,8 @@ import org.openworld.engine.gl.Image;
  * The numbers of today's tiling are in docs/terrain.md; here the measure is shown to see the tiles on a real picture:
  * from 100 m (about 115 m of ground across the picture) the 2.7 m detail tile repeats strongly, and with tiles 50 m
  * wide, fewer than three across, it does not; stochastic tiling ({@code materials.tiling=stochastic}) removes the
- * repeat. Pictures go to {@code target/test-images/ground-repetition-*.png}.
+ * repeat, and the quilt ({@code quilted}) pushes it out to four tiles. Pictures go to
+ * {@code target/test-images/ground-repetition-*.png}.
  */
 @GlTest
 class GroundRepetitionTest {
@@ -84,19 +85,26 @@ class GroundRepetitionTest {
     }
 
     /**
-     * Issue 21's goal, stochastic tiling at most half the repeated tiles' repetition, as far as the measure can see
-     * it. From 100 m it does (0.95 to 0.15). From 20 m the repeated tiles' peak is a true repeat (0.51, at a shift of
-     * one coarse tile), and the stochastic picture has none: its peak (0.27) lies at the shortest shift counted, where
-     * neighbouring pixels of one blade or one macro patch are alike, so the measure reads 0.53 of repeat, not 0.5.
-     * From 500 m both read 0.8 at the shortest shift: the smooth macro variation fills the picture and hides the
-     * coarse tile's stripes (which the repeat picture shows and the stochastic one does not) from the measure.
+     * Issue 21's goal, at most half the repeated tiles' repetition from 20, 100 and 500 m: stochastic tiling meets it
+     * by far (0.05 to 0.08 against 0.54 to 0.97: nothing in its pictures repeats). The quilt is four tiles wide and
+     * still periodic, so wherever the picture holds two of its periods the measure finds them: from 20 m its peak
+     * lies at one fine quilt (10.8 m), from 100 m at one coarse quilt (68 m), 0.85 and 0.82 of repeat's; from 500 m
+     * its blocks are the picture's sharpest detail and it reads above repeat (0.69 against 0.54). Checked here: the
+     * stochastic goal, and the quilt below repeat where its period is not yet two or more to the picture's half.
      */
     @ParameterizedTest
-    @CsvSource({"20, 0.6", "100, 0.5", "500, 1.0"})
-    void stochasticTilingRepeatsLess(double height, double atMost) throws IOException {
+    @CsvSource({"20, 0.9", "100, 0.9", "500,"})
+    void stochasticTilingRepeatsAtMostHalfAsMuchAndTheQuiltLess(double height, Double quiltAtMost)
+            throws IOException {
         double repeat = repetition(height, "materials.tiling=repeat");
+        double quilted = repetition(height, "materials.tiling=quilted");
         double stochastic = repetition(height, "materials.tiling=stochastic");
-        assertTrue(stochastic <= atMost * repeat,
-                "repetition from " + height + " m: repeat " + repeat + ", stochastic " + stochastic);
+        String all = String.format(java.util.Locale.ROOT, "repetition from %.0f m: repeat %.3f, quilted %.3f, "
+                + "stochastic %.3f", height, repeat, quilted, stochastic);
+        System.out.println(all);
+        assertTrue(stochastic <= 0.5 * repeat, all);
+        if (quiltAtMost != null) {
+            assertTrue(quilted <= quiltAtMost * repeat, all);
+        }
     }
 }
