@@ -83,6 +83,7 @@ final class FiguresCommand implements Callable<Integer> {
                     measured = strip.measured(strip.draw());
                 }
                 case DIAGRAM -> ((DiagramCommand) job.command()).call();
+                case DIFF -> ((DiffCommand) job.command()).call();
             }
             double seconds = (System.nanoTime() - t0) / 1e9;
             plates.add(new Gallery.Plate(job.figure(), "openworld " + Gallery.shellLine(job.printed()), measured,
@@ -115,10 +116,11 @@ final class FiguresCommand implements Callable<Integer> {
         List<String> overrides = switch (figure.tool()) {
             case SHOT -> set;
             case HEIGHTMAP -> heightmapOverrides();
-            case STRIP, DIAGRAM -> List.of(); // they take no settings: each strip fixes its own
+            case STRIP, DIAGRAM, DIFF -> List.of(); // they take no settings: each strip fixes its own
         };
         List<String> printed = figure.commandLine(figure.output(), size, overrides);
-        List<String> run = figure.commandLine(out.resolve(figure.output()).toString(), size, overrides);
+        List<String> run = figure.readingFrom(out).commandLine(out.resolve(figure.output()).toString(), size,
+                overrides);
         CommandLine.ParseResult parsed = new CommandLine(new Main()).parseArgs(run.toArray(String[]::new));
         Object command = parsed.subcommand().commandSpec().userObject();
         if (figure.tool() == Tool.SHOT) {

@@ -89,7 +89,7 @@ public record MaterialSettings(
             150,    // texels (300 m on the default map): nearer, a baked texel spans several pixels of a 720-row view
                     // and the ground looks blurred; 75 (150 m) already shows it on figure 3's mountainside
             Tiling.REPEAT,
-            Cliffs.TRIPLANAR);
+            Cliffs.PLANAR); // triplanar costs about a tenth of the frame on valley.path (docs/terrain.md)
 
     public static final SettingsGroup<MaterialSettings> SETTINGS =
             SettingsGroup.of("materials", MaterialSettings.class, DEFAULTS);
