@@ -12,7 +12,8 @@
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
 //      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6);
-//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats
+//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats;
+//      with MAT_TRIPLANAR (materials.cliffs=triplanar, near terrain only) the rock is also projected along X and Z
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
