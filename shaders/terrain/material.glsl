@@ -257,10 +257,9 @@ MatTexel matSample(float layer, MatCoords c) {
 // Cliffs (materials.cliffs=triplanar, the near program only; MaterialSettings.Cliffs): seen from above, a face of
 // slope a stretches the texture by 1 / cos a down its fall line (2.9 times at 70 degrees). So the rock is also
 // projected along the world's X and Z axes, onto the planes (z, y) and (x, y), and the three projections blend by the
-// geometric normal n with weights w = |n|^k / sum |n|^k, k = MAT_TRIPLANAR_SHARPNESS: each plane shows where the
-// surface faces it, unstretched, and the blend band is narrow (with k = 8 a side plane weighs 5 % at 35 degrees of
-// slope and the top one 5 % at 55). Only rock: grass and snow do not lie on cliffs.
-const float MAT_TRIPLANAR_SHARPNESS = 8.0;
+// geometric normal n with weights w = |n|^k / sum |n|^k, k = 8: each plane shows where the surface faces it (stretched
+// at most sqrt 3 times where it weighs most, 1.06 times on a 70 degree face), and the blend band is narrow (a side
+// plane weighs 5 % at 35 degrees of slope and the top one 5 % at 55). Only rock: grass and snow do not lie on cliffs.
 
 // The rock at s, projected three ways and blended by the normal; top is the projection from above.
 MatTexel matRockTriplanar(TerrainSurface s, MatCoords top) {
