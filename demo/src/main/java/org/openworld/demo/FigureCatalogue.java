@@ -91,8 +91,9 @@ final class FigureCatalogue {
         // the gloss is a sheen of a few levels, hard to see side by side (looking into a low sun too, tried): its
         // ΔE00 against 3a shows where
         list.add(new Figure("3c-diff", 3, detail, "Not in the paper: where 3c differs from 3a (ΔE00; 3a in grey, red "
-                + "to yellow the most changed): the gloss map acts on the rock, most on its sunlit slopes; the snow, "
-                + "near white already, hardly changes.", Tool.DIFF, List.of("3a.png", "3c.png")));
+                + "to yellow the most changed): most on the shaded snow of the right-hand slope, which mirrors the "
+                + "bright sky at a grazing angle, then on the rock; the sunlit snow, near white already, hardly "
+                + "changes.", Tool.DIFF, List.of("3a.png", "3c.png")));
 
         // Figure 4: the tangent frame itself
         list.add(shot("4", 4, "Figure 4: Visualization of the local topology",
