@@ -108,13 +108,11 @@ class CliffTexelsTest {
         double across = 0;
         double down = 0;
         double luma = 0;
-        int n = 0;
         for (int y = y0; y < y0 + H / 2; y++) {
             for (int x = x0; x < x0 + W / 2; x++) {
                 across += Math.abs(image.luma(x + 1, y) - image.luma(x, y));
                 down += Math.abs(image.luma(x, y + 1) - image.luma(x, y));
                 luma += image.luma(x, y);
-                n++;
             }
         }
         return new Density(across / luma, down / luma);
