@@ -12,7 +12,8 @@
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
 //      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6);
-//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats
+//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats;
+//      with MAT_TRIPLANAR (materials.cliffs=triplanar, near terrain only) the rock is also projected along X and Z
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
@@ -223,6 +224,24 @@ vec4 matLookup(sampler2DArray tex, float layer, vec2 uv) {
 }
 #endif
 
+// The texture coordinates at both scales of a point p (metres) in a projection's plane: the fine tile, and the
+// coarse one 6.3 times larger and turned.
+MatCoords matCoords(vec2 p, float coarseWeight) {
+    const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
+    vec2 fine = p / uMatDetailScale;
+    vec2 coarse = turn * fine / MAT_COARSE_FACTOR;
+    MatCoords c;
+#ifdef MAT_STOCHASTIC
+    c.fine = matTiles(fine);
+    c.coarse = matTiles(coarse);
+#else
+    c.fine = fine;
+    c.coarse = coarse;
+#endif
+    c.coarseWeight = coarseWeight;
+    return c;
+}
+
 // One material at both scales: repeated or stochastic tiles (matLookup), the same for albedo and detail.
 MatTexel matSample(float layer, MatCoords c) {
     const mat2 unturn = mat2(0.8253, -0.5646, 0.5646, 0.8253); // rotation by -MAT_COARSE_TURN: coarse slopes to world
@@ -238,6 +257,41 @@ MatTexel matSample(float layer, MatCoords c) {
     return t;
 }
 
+#ifdef MAT_TRIPLANAR
+// Cliffs (materials.cliffs=triplanar, the near program only; MaterialSettings.Cliffs): seen from above, a face of
+// slope a stretches the texture by 1 / cos a down its fall line (2.9 times at 70 degrees). So the rock is also
+// projected along the world's X and Z axes, onto the planes (z, y) and (x, y), and the three projections blend by the
+// geometric normal n with weights w = |n|^k / sum |n|^k, k = 8: each plane shows where the surface faces it (stretched
+// at most sqrt 3 times where it weighs most, 1.06 times on a 70 degree face), and the blend band is narrow (a side
+// plane weighs 5 % at 35 degrees of slope and the top one 5 % at 55). Only rock: grass and snow do not lie on cliffs.
+
+// The rock at s, projected three ways and blended by the normal; top is the projection from above.
+MatTexel matRockTriplanar(TerrainSurface s, MatCoords top) {
+    vec3 n2 = s.wsNormal * s.wsNormal;
+    vec3 n4 = n2 * n2;
+    vec3 w = n4 * n4; // |n|^8 by multiplications: a pow is a log and an exponential per pixel on a rasteriser
+    w /= w.x + w.y + w.z;
+    MatTexel fromTop = matSample(MAT_ROCK, top);
+    MatTexel alongX = matSample(MAT_ROCK, matCoords(s.wsPos.zy, top.coarseWeight));
+    MatTexel alongZ = matSample(MAT_ROCK, matCoords(s.wsPos.xy, top.coarseWeight));
+    // The detail slope is the normal map's tangent-space xy along a projection's texture axes u, v; lightTerrain
+    // reads it along the terrain's frame T (the slope along +X) and B (along +Z). The (z, y) plane's u runs along +Z,
+    // which is B's direction on a face that faces X, and its v runs up, which is T or -T (T rises with the ground
+    // along +X); so its (u, v) is the frame's (y, +-x). Likewise the (x, y) plane's u is T and its v is +-B. Without
+    // this swizzle the bumps on a cliff would be lit from the wrong side.
+    float up = s.wsTangent.y < 0.0 ? -1.0 : 1.0;
+    alongX.slope = vec2(up * alongX.slope.y, alongX.slope.x);
+    up = s.wsBitangent.y < 0.0 ? -1.0 : 1.0;
+    alongZ.slope = vec2(alongZ.slope.x, up * alongZ.slope.y);
+    MatTexel t;
+    t.albedo = w.y * fromTop.albedo + w.x * alongX.albedo + w.z * alongZ.albedo;
+    t.slope = w.y * fromTop.slope + w.x * alongX.slope + w.z * alongZ.slope;
+    t.height = w.y * fromTop.height + w.x * alongX.height + w.z * alongZ.height;
+    t.gloss = w.y * fromTop.gloss + w.x * alongX.gloss + w.z * alongZ.gloss;
+    return t;
+}
+#endif
+
 // Cover of a layer of amount 0..1 over ground whose relief is 0..1: it first fills where relief is low.
 float matCover(float amount, float relief) {
     float s = MAT_LAYER_SOFTNESS;
@@ -249,19 +303,8 @@ float matCover(float amount, float relief) {
 MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint) {
     float n0y = s.wsNormal.y;
 
-    // 1. texture coordinates at two scales, and the macro variation
-    const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
-    vec2 fine = s.wsPos.xz / uMatDetailScale;
-    vec2 coarse = turn * fine / MAT_COARSE_FACTOR;
-    MatCoords c;
-#ifdef MAT_STOCHASTIC
-    c.fine = matTiles(fine);
-    c.coarse = matTiles(coarse);
-#else
-    c.fine = fine;
-    c.coarse = coarse;
-#endif
-    c.coarseWeight = mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance));
+    // 1. texture coordinates at two scales, projected from above, and the macro variation
+    MatCoords c = matCoords(s.wsPos.xz, mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance)));
     float macro = macroTint.x;
     float tint = macroTint.y;
     float edge = (macro - 0.5) * 2.0 * MAT_EDGE_NOISE;
@@ -278,7 +321,11 @@ MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint) {
     // 3. layers: grass, rock over grass (its highest relief first), snow over both (hollows first); a layer that is
     // absent covers nothing (matCover(0, relief) = 0), so every layer is blended without a branch
     MatTexel grass = matSample(MAT_GRASS, c);
+#ifdef MAT_TRIPLANAR
+    MatTexel rock = matRockTriplanar(s, c);
+#else
     MatTexel rock = matSample(MAT_ROCK, c);
+#endif
     MatTexel snow = matSample(MAT_SNOW, c);
     // macro: greener and yellower, lighter and darker patches of meadow
     grass.albedo *= mix(vec3(0.75, 0.85, 0.8), vec3(1.3, 1.15, 0.8), tint) * (0.8 + 0.4 * macro);

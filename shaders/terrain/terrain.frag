@@ -3,7 +3,8 @@
 // materials (terrain/material.glsl), then the shared fog and the display transform.
 // Variants, each its own program (#defines), chosen per patch on the CPU (engine: TerrainShading), so none pays for
 // another's work (a branch on a uniform runs both sides on a software rasteriser):
-//   (none)                 near patches: every material layer, fading into the far material over farBand
+//   (none)                 near patches: every material layer, fading into the far material over farBand;
+//                          with MAT_TRIPLANAR (materials.cliffs=triplanar) the rock projected three ways
 //   TERRAIN_FAR            patches wholly beyond farBand.y: the baked far material and the ground's slope (two
 //                          lookups), the sky's reflection from the vertices (terrain.vert)
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)

@@ -1,5 +1,6 @@
 package org.openworld.demo;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -28,7 +29,12 @@ record Figure(String id, int number, String caption, String note, Tool tool, Lis
         /** {@code openworld sky-strip}: the sky on the CPU at several samplings with their ΔE, {@code ID.png}. */
         STRIP("sky-strip"),
         /** {@code openworld diagram}: figure 7, drawn, {@code ID.png}. */
-        DIAGRAM("diagram");
+        DIAGRAM("diagram"),
+        /**
+         * {@code openworld diff}: where two earlier pictures of the gallery differ (ΔE00), {@code ID.png}; its
+         * arguments are their files, relative to the gallery's folder.
+         */
+        DIFF("diff");
 
         final String command;
 
@@ -49,6 +55,14 @@ record Figure(String id, int number, String caption, String note, Tool tool, Lis
         List<String> all = new ArrayList<>(arguments);
         all.addAll(moreArguments);
         return new Figure(otherId, number, caption, note, tool, all);
+    }
+
+    /** This picture with its arguments' files, which a difference reads, resolved against {@code folder}. */
+    Figure readingFrom(Path folder) {
+        return tool == Tool.DIFF
+                ? new Figure(id, number, caption, note, tool,
+                        arguments.stream().map(a -> folder.resolve(a).toString()).toList())
+                : this;
     }
 
     /** Where the command writes, relative to the gallery's folder: a folder for the maps, else a PNG file. */

@@ -88,6 +88,12 @@ final class FigureCatalogue {
                 "16:30", FACE_POSE, "materials.normal-map=off", "materials.gloss-map=on"));
         list.add(shot("3d", 3, detail, "Both (the default): the lumps of 3b, their sunlit sides a little brighter.",
                 "16:30", FACE_POSE, "materials.normal-map=on", "materials.gloss-map=on"));
+        // the gloss is a sheen of a few levels, hard to see side by side (looking into a low sun too, tried): its
+        // ΔE00 against 3a shows where
+        list.add(new Figure("3c-diff", 3, detail, "Not in the paper: where 3c differs from 3a (ΔE00; 3a in grey, red "
+                + "to yellow the most changed): most on the shaded snow of the right-hand slope, which mirrors the "
+                + "bright sky at a grazing angle, then on the rock; the sunlit snow, near white already, hardly "
+                + "changes.", Tool.DIFF, List.of("3a.png", "3c.png")));
 
         // Figure 4: the tangent frame itself
         list.add(shot("4", 4, "Figure 4: Visualization of the local topology",

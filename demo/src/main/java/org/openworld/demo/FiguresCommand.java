@@ -109,6 +109,7 @@ final class FiguresCommand implements Callable<Integer> {
                         measured = strip.measured(strip.draw());
                     }
                     case DIAGRAM -> ((DiagramCommand) job.command()).call();
+                    case DIFF -> ((DiffCommand) job.command()).call();
                 }
                 double seconds = (System.nanoTime() - t0) / 1e9;
                 pictures.add(new Gallery.Picture(job.figure(), "openworld " + Gallery.shellLine(job.printed()),
@@ -142,19 +143,26 @@ final class FiguresCommand implements Callable<Integer> {
 
     /**
      * The figure's default picture and, with {@code --preset}, the preset's: a shot takes {@code --preset} itself,
-     * figure 2's maps the preset's engine.* and terrain.* values (when it has any off their defaults), figure 7's
-     * diagram and strips nothing, so they are made once.
+     * figure 2's maps the preset's engine.* and terrain.* values (when it has any off their defaults), a difference
+     * the preset's two pictures, figure 7's diagram and strips nothing, so they are made once.
      */
     private List<Job> jobs(Figure figure) {
         List<Job> jobs = new ArrayList<>(List.of(job(figure)));
         if (preset != null) {
+            String id = figure.id() + "-" + preset;
+            if (figure.tool() == Tool.DIFF) {
+                // the difference of the two preset pictures, made just before it
+                jobs.add(job(new Figure(id, figure.number(), figure.caption(), figure.note(), Tool.DIFF,
+                        figure.arguments().stream().map(f -> f.replace(".png", "-" + preset + ".png")).toList())));
+                return jobs;
+            }
             List<String> presetArguments = switch (figure.tool()) {
                 case SHOT -> List.of("--preset", preset);
                 case HEIGHTMAP -> heightmapPreset();
-                case STRIP, DIAGRAM -> List.of();
+                case STRIP, DIAGRAM, DIFF -> List.of();
             };
             if (!presetArguments.isEmpty()) {
-                jobs.add(job(figure.with(figure.id() + "-" + preset, presetArguments)));
+                jobs.add(job(figure.with(id, presetArguments)));
             }
         }
         return jobs;
@@ -164,10 +172,11 @@ final class FiguresCommand implements Callable<Integer> {
         List<String> overrides = switch (figure.tool()) {
             case SHOT -> set;
             case HEIGHTMAP -> heightmapKeys(set);
-            case STRIP, DIAGRAM -> List.of(); // they take no settings: each strip fixes its own
+            case STRIP, DIAGRAM, DIFF -> List.of(); // they take no settings: each strip fixes its own
         };
         List<String> printed = figure.commandLine(figure.output(), size, overrides);
-        List<String> run = figure.commandLine(out.resolve(figure.output()).toString(), size, overrides);
+        List<String> run = figure.readingFrom(out).commandLine(out.resolve(figure.output()).toString(), size,
+                overrides);
         CommandLine.ParseResult parsed = new CommandLine(new Main()).parseArgs(run.toArray(String[]::new));
         Object command = parsed.subcommand().commandSpec().userObject();
         if (figure.tool() == Tool.SHOT) {

@@ -61,6 +61,15 @@ class FigureCatalogueTest {
                 HeightmapCommand maps = (HeightmapCommand) command;
                 assertEquals(FigureCatalogue.SEED, maps.seed, figure.id());
                 assertEquals(figure.output(), maps.out.toString());
+            } else if (figure.tool() == Tool.DIFF) {
+                DiffCommand diff = (DiffCommand) command;
+                assertEquals(figure.output(), diff.out.toString());
+                // it reads two pictures of its own figure that the catalogue makes before it
+                List<String> earlier = FigureCatalogue.all().subList(0, FigureCatalogue.all().indexOf(figure))
+                        .stream().filter(f -> f.number() == figure.number()).flatMap(f -> f.files().stream())
+                        .toList();
+                assertTrue(earlier.contains(diff.first.toString()), figure.id() + " reads " + diff.first);
+                assertTrue(earlier.contains(diff.second.toString()), figure.id() + " reads " + diff.second);
             } else if (figure.tool() == Tool.STRIP) {
                 assertEquals(figure.output(), ((SkyStripCommand) command).out.toString());
             } else {

@@ -20,6 +20,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 
@@ -89,6 +90,24 @@ class FiguresCommandTest {
         Image remade = Image.read(again);
         // same world, pose, time and settings through the same code: the very same pixels
         assertEquals(0, meanDifference(made, remade), "the printed command remakes the picture");
+    }
+
+    /**
+     * Figure 3 shows what the gloss map does: its gloss panel differs noticeably (ΔE00 above 1) from the bare one in
+     * a good share of the pixels, and the difference picture beside them is made from the two.
+     */
+    @Test
+    void figureThreesGlossPanelDiffersFromTheBarePanelAndItsDifferenceIsDrawn() throws Exception {
+        Path out = dir.resolve("three");
+        assertEquals(0, Main.execute("figures", "--out", out.toString(), "--only", "3", "--size", "160x90"),
+                console.stderr());
+        Image bare = Image.read(out.resolve("3a.png"));
+        Image gloss = Image.read(out.resolve("3c.png"));
+        ImageComparison comparison = ImageComparison.of(bare, gloss);
+        double share = (double) comparison.pixelsAbove(1) / comparison.pixels();
+        assertTrue(share > 0.1, "gloss panel against the bare one: " + share);
+        Image drawn = Image.read(out.resolve("3c-diff.png"));
+        assertEquals(0, meanDifference(comparison.differenceImage(1), drawn), "3c-diff is 3a against 3c");
     }
 
     @Test

@@ -35,7 +35,8 @@ import org.openworld.engine.gl.Texture2D;
  * sharper than a texel) is gone, and the mean slope lights like one normal, not like the many it stands for (a
  * rough surface's highlight is wider than that). A generated tile's macro variation is made periodic by fading each
  * edge into the opposite one, so within {@code 2 · MAT_MACRO_SCALE} of a tile edge the far ground's variation is not
- * the near ground's.
+ * the near ground's. The bake projects the rock from above whatever {@code materials.cliffs} says: a texel is a mean,
+ * the same in any projection, and a far cliff gets a texel every {@code texelMetres / cos a} down its fall line.
  */
 final class FarMaterial {
 

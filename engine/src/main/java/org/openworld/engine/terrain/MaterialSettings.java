@@ -26,6 +26,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                    (Efros and Freeman 2001), which repeat four times further apart at no cost per pixel, or
  *                    stochastic tiling (Heitz and Neyret 2018), which hides the repetition at three times the texture
  *                    lookups of the near material
+ * @param cliffs      how rock is projected on steep slopes in the near material: from above only, or from above and
+ *                    along X and Z, blended by the normal (triplanar), so cliffs are not stretched; read when the
+ *                    world is built, since the near programs are compiled with it
  */
 public record MaterialSettings(
         @Setting(doc = "where snow lies: snow-map (probabilistic map) or altitude-bands (plain height bands)")
@@ -37,7 +40,9 @@ public record MaterialSettings(
         @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
                 max = 100000) double farTexels,
         @Setting(doc = "how the detail textures tile: repeat, quilted (Efros-Freeman) or stochastic (Heitz-Neyret)")
-        Tiling tiling) {
+        Tiling tiling,
+        @Setting(doc = "rock on steep slopes: planar (from above, stretched) or triplanar (blended by the normal)",
+                atStart = true) Cliffs cliffs) {
 
     /** How snow is placed on the terrain. */
     public enum SnowMode {
@@ -83,6 +88,19 @@ public record MaterialSettings(
         }
     }
 
+    /** How the near material projects the rock onto the ground ({@code MAT_TRIPLANAR} in material.glsl). */
+    public enum Cliffs {
+        /** From above only: a face of slope a shows the texture stretched by 1 / cos a down its fall line. */
+        PLANAR,
+        /** From above and along X and Z, blended by the normal: twice the rock's lookups, no stretch. */
+        TRIPLANAR;
+
+        /** The near programs' shader defines for this projection. */
+        List<String> defines() {
+            return this == TRIPLANAR ? List.of("MAT_TRIPLANAR") : List.of();
+        }
+    }
+
     public static final MaterialSettings DEFAULTS = new MaterialSettings(
             SnowMode.SNOW_MAP,
             true,
@@ -91,7 +109,8 @@ public record MaterialSettings(
             2.7,    // m: 512 texels over 2.7 m is 5 mm per texel, about one pixel on the ground at a walker's feet
             150,    // texels (300 m on the default map): nearer, a baked texel spans several pixels of a 720-row view
                     // and the ground looks blurred; 75 (150 m) already shows it on figure 3's mountainside
-            Tiling.REPEAT);
+            Tiling.REPEAT,
+            Cliffs.PLANAR); // triplanar costs about a tenth of the frame on valley.path (docs/terrain.md)
 
     public static final SettingsGroup<MaterialSettings> SETTINGS =
             SettingsGroup.of("materials", MaterialSettings.class, DEFAULTS);

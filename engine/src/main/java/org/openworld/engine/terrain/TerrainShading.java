@@ -85,8 +85,9 @@ final class TerrainShading {
         tiles = TerrainTextures.generate(seed);
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         farMaterial = new FarMaterial(context, base, unitHeights);
-        shadowed = lit(context, "", List.of(), base, cells, unitHeights);
-        unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), base, cells, unitHeights);
+        MaterialSettings.Cliffs cliffs = context.settings().get(MaterialSettings.class).cliffs();
+        shadowed = lit(context, "", List.of(), cliffs, base, cells, unitHeights);
+        unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), cliffs, base, cells, unitHeights);
         ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"), base,
                 cells, unitHeights);
         farSamplers(levels, unitFar);
@@ -108,17 +109,17 @@ final class TerrainShading {
 
     /**
      * The near programs ({@code program}, {@code program.stochastic}) and the far one ({@code program.far}),
-     * {@code suffix} on their roles.
+     * {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
      */
-    private Lit lit(EngineContext context, String suffix, List<String> light, HeightMap base, int cells,
-                    int unitHeights) {
+    private Lit lit(EngineContext context, String suffix, List<String> light, MaterialSettings.Cliffs cliffs,
+                    HeightMap base, int cells, int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             if (tiling.program() != tiling) {
                 continue;
             }
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
-                    with(light, tiling.defines()), base, cells, unitHeights);
+                    with(with(light, tiling.defines()), cliffs.defines()), base, cells, unitHeights);
             p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
             p.sampler("snowMap", unitHeights + 2);
             p.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));

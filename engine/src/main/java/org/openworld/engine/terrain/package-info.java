@@ -109,6 +109,19 @@
  * (0.3–0.4 s, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
  * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
  *
+ * <p><b>Cliffs (issue 21).</b> Projected from above, texture coordinates (x, z) stretch a face of slope a by
+ * 1 / cos a down its fall line (2.9 times at 70°). {@code materials.cliffs=triplanar} projects the rock three ways in
+ * the near program, onto (x, z), (z, y) and (x, y), blended by the geometric normal with weights
+ * {@code w_i = |n_i|^8 / Σ_j |n_j|^8}: each plane shows the surface where it faces it (at most √3 stretch where it
+ * weighs most, 1.06 on a 70° face), and the planes mix only between about 35° and 55° of slope. The normal map's
+ * slope is read along each plane's texture axes and swizzled into the terrain's frame T, B: on (z, y) it is
+ * {@code (±s_v, s_u)}, on (x, y) {@code (s_u, ±s_v)}, the sign that of the frame vector's rise, so bumps stay lit from
+ * the sun's side. Cost: 8 more texture reads in the near program (20 instead of 12), about a tenth of the frame on
+ * {@code valley.path} on llvmpipe, so the default stays {@code planar}; the setting is read when the world is built
+ * and compiles the near programs with or without {@code MAT_TRIPLANAR}. Limits: the far material is baked over
+ * (x, z) and keeps a texel every 2 m / cos a down a far cliff; inside the blend band two patches of rock show
+ * through each other.
+ *
  * <p><b>Near and far materials.</b> Far away the mip maps average most of a material away, so
  * {@link org.openworld.engine.terrain.FarMaterial} bakes it once: steps 1–3 of {@code material.glsl} per texel of two
  * textures over the tile (albedo and gloss, detail slope; 2 m texels by default). Patches are ordered nearest first
