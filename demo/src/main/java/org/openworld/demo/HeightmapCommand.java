@@ -149,13 +149,20 @@ final class HeightmapCommand implements Callable<Integer> {
         // 2. the spectrum and its slope
         HeightMap base = data.pyramid().base();
         PowerSpectrum spectrum = PowerSpectrum.of(base);
-        PowerSpectrum.Fit fit = terrain.imports()
-                ? spectrum.fit(0, Double.POSITIVE_INFINITY)
-                : spectrum.fit(terrain);
-        System.out.println(terrain.imports()
-                ? String.format(Locale.ROOT, "spectrum slope: %.2f (power ~ 1/f^%.2f)", fit.slope(), -fit.slope())
-                : String.format(Locale.ROOT, "spectrum slope: %.2f (expected -2 beta = %.2f)", fit.slope(),
-                        -2 * terrain.beta()));
+        // a generated map over the band it was synthesised in, unless the map is too small to hold two of its rings
+        boolean band = !terrain.imports()
+                && spectrum.ringsWithin(1 / terrain.maxWavelength(), 1 / terrain.minWavelength()) >= 2;
+        PowerSpectrum.Fit fit = band ? spectrum.fit(terrain) : spectrum.fit(0, Double.POSITIVE_INFINITY);
+        if (terrain.imports()) {
+            System.out.printf(Locale.ROOT, "spectrum slope: %.2f (power ~ 1/f^%.2f)%n", fit.slope(), -fit.slope());
+        } else if (band) {
+            System.out.printf(Locale.ROOT, "spectrum slope: %.2f (expected -2 beta = %.2f)%n", fit.slope(),
+                    -2 * terrain.beta());
+        } else {
+            System.out.printf(Locale.ROOT, "spectrum slope: %.2f over all rings: the band of %.0f-%.0f m holds fewer "
+                    + "than two rings of this %.0f m map (expected -2 beta = %.2f)%n", fit.slope(),
+                    terrain.minWavelength(), terrain.maxWavelength(), base.extent(), -2 * terrain.beta());
+        }
 
         // 3. the pictures
         writeHeight(base.size(), base.heights(), out.resolve(HEIGHT_PNG));

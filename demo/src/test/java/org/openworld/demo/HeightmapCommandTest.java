@@ -72,7 +72,16 @@ class HeightmapCommandTest {
         assertTrue(console.stdout().contains("run 3/3: snow map"), console.stdout());
         assertTrue(console.stdout().contains("median of 3 runs:"), console.stdout());
         assertTrue(console.stdout().matches("(?s).*median of 3 runs:\\s+synthesis\\s+\\d+ ms\\s+pyramid\\s+\\d+ ms"
-                + "\\s+snow map\\s+\\d+ ms\\s+total\\s+\\d+ ms.*"), console.stdout());
+                + "\\s+snow map\\s+\\d+ ms\\s+sky view\\s+\\d+ ms\\s+total\\s+\\d+ ms.*"), console.stdout());
+    }
+
+    @Test
+    void aBandNarrowerThanTwoRingsIsFittedOverAllRings() {
+        // the paper preset's band, 512-2048 m, on a 1 km map: one ring of its spectrum lies in it
+        assertEquals(0, Main.execute("heightmap", "--out", dir.toString(), "--set", "terrain.size=512",
+                "--set", "terrain.beta=1", "--set", "terrain.min-wavelength=512"), console.stderr());
+        assertTrue(console.stdout().contains("over all rings: the band of 512-2048 m holds fewer than two rings"),
+                console.stdout());
     }
 
     @Test

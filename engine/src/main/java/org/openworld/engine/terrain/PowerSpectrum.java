@@ -112,22 +112,30 @@ public final class PowerSpectrum {
         return bins;
     }
 
+    /** How many rings with power lie wholly inside [lowFrequency, highFrequency]: those {@link #fit} uses. */
+    public int ringsWithin(double lowFrequency, double highFrequency) {
+        return (int) bins.stream().filter(b -> within(b, lowFrequency, highFrequency)).count();
+    }
+
+    private boolean within(Bin b, double lowFrequency, double highFrequency) {
+        double halfRing = 0.5 / extent;
+        return b.frequency() - halfRing >= lowFrequency && b.frequency() + halfRing <= highFrequency && b.power() > 0;
+    }
+
     /**
      * Least-squares line through (log₁₀ f, log₁₀ P) of the rings lying wholly inside [lowFrequency, highFrequency]
      * (cycles per metre): a ring half inside a cut-off would bend the line.
      *
-     * @throws IllegalArgumentException if fewer than two rings lie in the band
+     * @throws IllegalArgumentException if fewer than two rings lie in the band ({@link #ringsWithin})
      */
     public Fit fit(double lowFrequency, double highFrequency) {
-        double halfRing = 0.5 / extent;
         double sx = 0;
         double sy = 0;
         double sxx = 0;
         double sxy = 0;
         int m = 0;
         for (Bin b : bins) {
-            boolean inside = b.frequency() - halfRing >= lowFrequency && b.frequency() + halfRing <= highFrequency;
-            if (inside && b.power() > 0) {
+            if (within(b, lowFrequency, highFrequency)) {
                 double x = Math.log10(b.frequency());
                 double y = Math.log10(b.power());
                 sx += x;
