@@ -101,7 +101,7 @@ final class FiguresCommand implements Callable<Integer> {
                         ShotCommand command = (ShotCommand) job.command();
                         ShotCommand.Result shot = command.take();
                         renderer = shot.renderer() + ", " + shot.contextMode();
-                        measured = twilight(job.figure(), Launch.settings(command.render));
+                        measured = twilight(figures.get(i), Launch.settings(command.render));
                     }
                     case HEIGHTMAP -> ((HeightmapCommand) job.command()).call();
                     case STRIP -> {
@@ -186,9 +186,10 @@ final class FiguresCommand implements Callable<Integer> {
     }
 
     /**
-     * Under figure 9a: the zenith's luminance with the sun 4° below the horizon as the picture shows it (the scene's
-     * luminance times the exposure), in the figure's sky and in the default one (multiple scattering, physical
-     * constants, the exposure adapted to the light): the issue's check of figure 9's dark dawn ({@code TwilightTest}).
+     * Under figure 9a, its default picture and its preset's, each with its own settings: the zenith's luminance with
+     * the sun 4° below the horizon as the picture shows it (the scene's luminance times the exposure), in the
+     * figure's sky and in the default one (multiple scattering, physical constants, the exposure adapted to the
+     * light): the issue's check of figure 9's dark dawn ({@code TwilightTest}).
      */
     static String twilight(Figure figure, Settings settings) {
         if (!figure.id().equals("9a")) {

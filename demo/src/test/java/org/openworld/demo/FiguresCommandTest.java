@@ -66,11 +66,7 @@ class FiguresCommandTest {
 
         // the gallery: every file written linked, every link a file, only the figures made
         String html = Files.readString(out.resolve(Gallery.INDEX));
-        Set<String> links = new HashSet<>();
-        Matcher link = LINK.matcher(html);
-        while (link.find()) {
-            links.add(link.group(1));
-        }
+        Set<String> links = links(html);
         assertEquals(expected, links);
         links.forEach(l -> assertTrue(Files.isRegularFile(out.resolve(l)), l));
         assertTrue(html.contains("id=\"figure-8\"") && !html.contains("id=\"figure-9\""), "only the figures made");
@@ -132,11 +128,7 @@ class FiguresCommandTest {
                 "the preset changes the shot");
 
         String html = Files.readString(out.resolve(Gallery.INDEX));
-        Set<String> links = new HashSet<>();
-        Matcher link = LINK.matcher(html);
-        while (link.find()) {
-            links.add(link.group(1));
-        }
+        Set<String> links = links(html);
         assertEquals(expected, links);
         String figure12 = html.substring(html.indexOf("<figure id=\"12\">"),
                 html.indexOf("<figure id=\"12-cascades\">"));
@@ -220,6 +212,16 @@ class FiguresCommandTest {
             }
         }
         return sum / (3.0 * a.width() * a.height());
+    }
+
+    /** Every file the gallery's page links or shows. */
+    private static Set<String> links(String html) {
+        Set<String> links = new HashSet<>();
+        Matcher link = LINK.matcher(html);
+        while (link.find()) {
+            links.add(link.group(1));
+        }
+        return links;
     }
 
     private static Set<String> pngsUnder(Path root) throws Exception {
