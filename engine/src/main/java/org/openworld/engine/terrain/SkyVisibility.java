@@ -1,5 +1,6 @@
 package org.openworld.engine.terrain;
 
+import java.util.Arrays;
 import java.util.stream.IntStream;
 
 /**
@@ -75,36 +76,48 @@ public final class SkyVisibility {
         }
         double d = grid.spacing();
         int steps = (int) Math.ceil(Math.log(REACH_METRES / d) / Math.log(STEP_GROWTH)) + 1;
-        double[] distance = new double[steps];
+        // per distance: the level read, where this grid's samples fall on it (g = col · scale + shift, in its
+        // samples), and the step along each azimuth in its samples; all fixed, so the loop below only adds
         HeightMap[] levelAt = new HeightMap[steps];
+        double[] scale = new double[steps];
+        double[] shift = new double[steps];
+        double[] inverse = new double[steps];
+        double[][] stepX = new double[steps][DIRECTIONS];
+        double[][] stepZ = new double[steps][DIRECTIONS];
         for (int j = 0; j < steps; j++) {
-            distance[j] = d * Math.pow(STEP_GROWTH, j);
+            double r = d * Math.pow(STEP_GROWTH, j);
             int k = level;
-            while (k + 1 < pyramid.levelCount() && pyramid.level(k + 1).spacing() <= distance[j] / LEVEL_SPAN) {
+            while (k + 1 < pyramid.levelCount() && pyramid.level(k + 1).spacing() <= r / LEVEL_SPAN) {
                 k++;
             }
-            levelAt[j] = pyramid.level(k);
+            HeightMap map = pyramid.level(k);
+            levelAt[j] = map;
+            scale[j] = d / map.spacing();
+            shift[j] = map.size() / 2.0 - n / 2.0 * scale[j];
+            inverse[j] = 1 / r;
+            for (int m = 0; m < DIRECTIONS; m++) {
+                stepX[j][m] = r * cos[m] / map.spacing();
+                stepZ[j][m] = r * sin[m] / map.spacing();
+            }
         }
         IntStream.range(0, n).parallel().forEach(row -> {
-            double z = (row - n / 2.0) * d;
+            double[] horizon = new double[DIRECTIONS];
             for (int col = 0; col < n; col++) {
-                double x = (col - n / 2.0) * d;
                 float h0 = grid.sample(col, row);
                 double gx = (grid.sample(col + 1, row) - grid.sample(col - 1, row)) / (2 * d);
                 double gz = (grid.sample(col, row + 1) - grid.sample(col, row - 1)) / (2 * d);
+                Arrays.fill(horizon, Double.NEGATIVE_INFINITY);
+                for (int j = 0; j < steps; j++) {
+                    double x = col * scale[j] + shift[j];
+                    double z = row * scale[j] + shift[j];
+                    for (int m = 0; m < DIRECTIONS; m++) {
+                        double rise = (bilinear(levelAt[j], x + stepX[j][m], z + stepZ[j][m]) - h0) * inverse[j];
+                        horizon[m] = Math.max(horizon[m], rise);
+                    }
+                }
                 double sum = 0;
                 for (int m = 0; m < DIRECTIONS; m++) {
-                    double horizon = Double.NEGATIVE_INFINITY;
-                    for (int j = 0; j < steps; j++) {
-                        double r = distance[j];
-                        double rise = (bilinear(levelAt[j], x + r * cos[m], z + r * sin[m]) - h0) / r;
-                        horizon = Math.max(horizon, rise);
-                    }
-                    // above the tangent plane, and at most all of the slice (a wall over a steep slope hides more
-                    // than 90° of it from the plane up)
-                    double excess = Math.atan(horizon) - Math.atan(gx * cos[m] + gz * sin[m]);
-                    double c = excess > 0 ? Math.cos(Math.min(excess, Math.PI / 2)) : 1;
-                    sum += c * c;
+                    sum += visibleShare(horizon[m], gx * cos[m] + gz * sin[m]);
                 }
                 values[row * n + col] = (byte) Math.round(255 * sum / DIRECTIONS);
             }
@@ -148,12 +161,23 @@ public final class SkyVisibility {
         return values[r * size + c] & 0xFF;
     }
 
-    /** {@link HeightMap#heightAt}, without its range checks: the search's inner loop, a third of the build's time. */
-    private static float bilinear(HeightMap map, double x, double z) {
+    /**
+     * cos² of the horizon's rise above the tangent plane along one azimuth, the two given as slopes (tangents): for
+     * p = tan h and q = tan t, cos(h − t) = (1 + pq) / √((1 + p²)(1 + q²)), without a trigonometric call; 1 when
+     * the horizon lies below the plane, 0 when it stands more than 90° above it (1 + pq < 0).
+     */
+    static double visibleShare(double horizon, double plane) {
+        if (horizon <= plane) {
+            return 1;
+        }
+        double c = 1 + horizon * plane;
+        return c <= 0 ? 0 : c * c / ((1 + horizon * horizon) * (1 + plane * plane));
+    }
+
+    /** The map's height at grid coordinates (gx, gz), in its samples, bilinearly; wrapped or clamped at its edges. */
+    private static float bilinear(HeightMap map, double gx, double gz) {
         int n = map.size();
         float[] h = map.heights();
-        double gx = x / map.spacing() + n / 2.0;
-        double gz = z / map.spacing() + n / 2.0;
         int x0 = (int) Math.floor(gx);
         int z0 = (int) Math.floor(gz);
         float fx = (float) (gx - x0);

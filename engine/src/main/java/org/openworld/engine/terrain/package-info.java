@@ -106,7 +106,7 @@
  * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
  * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
  * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. Once at start
- * (0.3–0.4 s, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
+ * (about half a second on two cores, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
  * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
  *
  * <p><b>Cliffs (issue 21).</b> Projected from above, texture coordinates (x, z) stretch a face of slope a by

@@ -78,4 +78,15 @@ class SkyVisibilityTest {
         assertEquals(1.0, v.at(index(-2500), index(0)), 0.03, "far from the cliff");
         assertTrue(v.at(index(-96), index(0)) < 0.8, "at its foot: " + v.at(index(-96), index(0)));
     }
+
+    @Test
+    void theShareWithoutTrigonometryIsTheCosineSquaredOfTheRise() {
+        for (double p = -3; p <= 3; p += 0.25) {
+            for (double q = -3; q <= 3; q += 0.25) {
+                double rise = Math.atan(p) - Math.atan(q);
+                double c = rise > 0 ? Math.cos(Math.min(rise, Math.PI / 2)) : 1;
+                assertEquals(c * c, SkyVisibility.visibleShare(p, q), 1e-12, "horizon " + p + ", plane " + q);
+            }
+        }
+    }
 }
