@@ -82,4 +82,21 @@ class CameraPathAssetsTest {
         }
         assertEquals(360, turned, 1e-6);
     }
+
+    @Test
+    void crossingFliesEighteenKilometresDueEastAtThreeHundredMetresASecondFourHundredAboveTheGround()
+            throws CameraPathFormatException {
+        CameraPath crossing = CameraPathParser.parseResource("assets/paths/crossing.path");
+        assertEquals(60, crossing.duration(), 1e-9);
+        HeightField hills = (x, z) -> 300 * Math.sin(x / 700) * Math.cos(z / 900);
+        for (int step = 0; step <= 600; step++) {
+            double t = step * 0.1;
+            CameraPose pose = crossing.sample(t, hills);
+            assertEquals(-9000 + 300 * t, pose.x(), 1e-6, "a straight line at 300 m/s, t=" + t);
+            assertEquals(0, pose.z(), 1e-9);
+            assertEquals(400, pose.y() - hills.heightAt(pose.x(), pose.z()), 1e-6, "400 m above the ground");
+            assertEquals(90, pose.yaw(), 1e-9);
+            assertEquals(-8, pose.pitch(), 1e-9);
+        }
+    }
 }
