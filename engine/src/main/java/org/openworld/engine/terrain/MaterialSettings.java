@@ -38,7 +38,7 @@ public record MaterialSettings(
         @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
         @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
                 max = 100000) double farTexels,
-        @Setting(doc = "how the detail textures tile: repeat, quilted (Efros-Freeman) or stochastic (Heitz-Neyret)")
+        @Setting(doc = "how the detail textures tile: repeat, quilted (Wang tiles) or stochastic (Heitz-Neyret)")
         Tiling tiling,
         @Setting(doc = "rock on steep slopes: planar (from above, stretched) or triplanar (blended by the normal)",
                 atStart = true) Cliffs cliffs) {

@@ -1,5 +1,8 @@
 package org.openworld.engine.terrain;
 
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
 import java.util.SplittableRandom;
 
 /**
@@ -22,6 +25,12 @@ import java.util.SplittableRandom;
  * texel of the tile's edges to its own diamond (except the four corner texels), so the edges stay shared. Albedo
  * and detail are cut together: one seam serves every map.
  *
+ * <p><b>Centres.</b> Four diamonds alone would make every tile a mix of the same four pieces, and a picture of many
+ * tiles would repeat them at each tile's shift half of the time. So each tile also gets its own block,
+ * {@link #CENTRE} of its side, from an offset of the exemplar apart from the diamonds', chosen among
+ * {@link #CANDIDATES} for the least error in its border strips and cut into the diamonds there (as image quilting
+ * sews a block into its neighbours). It stays clear of the edges, which keep their diamonds.
+ *
  * <p><b>Atlas.</b> The 16 tiles are packed 4 × 4 into one texture, columns by (west, east) colour (0,0), (0,1),
  * (1,1), (1,0) and rows likewise by (north, south): each column's east colour is the next one's west, the last
  * one's the first one's, so the atlas is itself a valid periodic Wang tiling and its mip levels, which blend
@@ -29,13 +38,15 @@ import java.util.SplittableRandom;
  * {@code MAT_WANG}) hashes each edge's colour from the integer coordinates of the tile grid and reads the tile
  * at the atlas cell those colours name.
  *
- * <p><b>Cost.</b> 64 cuts per material over a 512² tile quarter's 511 anti-diagonals, and a pass over the atlas:
- * a fraction of a second per material, the three in parallel. Memory: a 4-tile-wide texture, 16 times one tile.
+ * <p><b>Cost.</b> Per material 64 diagonal cuts over a 256² quarter's 510 anti-diagonals, 16 centre blocks of 8
+ * candidates and 4 strip cuts each, and a pass over the 2048² atlas: about half a second for the rock in a test
+ * JVM, the three materials in parallel. Memory: a texture four tiles wide, 16 times one tile. Per pixel: one
+ * lookup per scale as for the repeated tiles, plus four hashes and explicit derivatives.
  *
  * <p><b>Limits.</b> With two colours an edge shows one of two diamonds, so a picture of many tiles still holds
  * each diamond many times, in a random arrangement instead of a grid; more colours (3⁴ = 81 tiles) would thin it
- * at 5 times the memory. The four diamonds meet in a point at the centre and at the corners, where the cut has no
- * room and the seam is straight.
+ * at five times the memory. The four diamonds meet in a point at the corners, where the cut has no room and the
+ * seam is straight for a few texels.
  */
 final class WangTiles {
 
@@ -51,10 +62,12 @@ final class WangTiles {
     static final int CANDIDATES = 8;
 
     /**
-     * The atlas: {@code ATLAS · tile}² RGBA8 albedo and detail texels, and each colour's exemplar offset: index 0, 1
-     * the horizontal edges' colours 0 and 1, index 2, 3 the vertical edges' colours 0 and 1.
+     * The atlas: {@code ATLAS · tile}² RGBA8 albedo and detail texels; each colour's exemplar offset (index 0, 1 the
+     * horizontal edges' colours 0 and 1, index 2, 3 the vertical edges' colours 0 and 1); each tile's centre block's
+     * offset (index row · ATLAS + column); every seam cut.
      */
-    record Atlas(int tile, byte[] albedo, byte[] detail, int[] offsetX, int[] offsetY) {
+    record Atlas(int tile, byte[] albedo, byte[] detail, int[] offsetX, int[] offsetY, int[] centreX, int[] centreY,
+                 List<ImageQuilting.Seam> seams) {
 
         /** Atlas texels per side. */
         int size() {
@@ -98,6 +111,9 @@ final class WangTiles {
         int size = ATLAS * n;
         byte[] outAlbedo = new byte[size * size * 4];
         byte[] outDetail = new byte[size * size * 4];
+        int[] cx = new int[ATLAS * ATLAS];
+        int[] cy = new int[ATLAS * ATLAS];
+        List<ImageQuilting.Seam> seams = new ArrayList<>();
         for (int row = 0; row < ATLAS; row++) {
             for (int col = 0; col < ATLAS; col++) {
                 int[] horizontal = {first(row), second(row)};   // north, south
@@ -105,13 +121,16 @@ final class WangTiles {
                 for (int fy = 0; fy < 2; fy++) {
                     for (int fx = 0; fx < 2; fx++) {
                         quarter(albedo, detail, n, ox, oy, horizontal[fy], vertical[fx], fx == 1, fy == 1,
-                                col * n, row * n, outAlbedo, outDetail, size);
+                                col * n, row * n, outAlbedo, outDetail, size, seams);
                     }
                 }
-                centre(albedo, detail, n, col * n, row * n, outAlbedo, outDetail, size, rng);
+                int[] at = centre(albedo, detail, n, ox, oy, col * n, row * n, outAlbedo, outDetail, size, rng,
+                        seams);
+                cx[row * ATLAS + col] = at[0];
+                cy[row * ATLAS + col] = at[1];
             }
         }
-        return new Atlas(n, outAlbedo, outDetail, ox, oy);
+        return new Atlas(n, outAlbedo, outDetail, ox, oy, cx, cy, List.copyOf(seams));
     }
 
     /**
@@ -121,7 +140,7 @@ final class WangTiles {
      */
     private static void quarter(byte[] albedo, byte[] detail, int n, int[] ox, int[] oy, int top, int side,
                                 boolean flipX, boolean flipY, int x0, int y0, byte[] outAlbedo, byte[] outDetail,
-                                int size) {
+                                int size, List<ImageQuilting.Seam> seams) {
         int h = n / 2;
         int rows = 2 * h - 2; // anti-diagonals d = a + b from 1 to 2h - 2 (d = 0 is the corner texel)
         double[] e = new double[rows * h];
@@ -139,6 +158,11 @@ final class WangTiles {
             }
         }
         int[] cut = ImageQuilting.minimumPath(e, rows, h);
+        int[] diagonal = new int[rows]; // the straight seam: t = (d + 1) / 2, always inside the band
+        for (int d = 1; d <= rows; d++) {
+            diagonal[d - 1] = (d + 1) / 2;
+        }
+        seams.add(new ImageQuilting.Seam(ImageQuilting.cost(e, h, cut), ImageQuilting.cost(e, h, diagonal)));
         for (int b = 0; b < h; b++) {
             for (int a = 0; a < h; a++) {
                 int d = a + b;
@@ -157,25 +181,40 @@ final class WangTiles {
     /**
      * Quilts the tile at (x0, y0) its own centre: a block {@link #CENTRE} of the tile wide, from the candidate offset
      * whose texels differ least from the tile's in the block's four border strips, cut into them along the
-     * minimum-error path of each strip (as ImageQuilting cuts a block into its neighbours). The block stays clear of
-     * the tile's edges, so they keep their diamonds' texels.
+     * minimum-error path of each strip. Candidates within a quarter of the exemplar of a diamond's offset are left
+     * out: the exemplar's own continuation would match a diamond perfectly and rebuild it. The block stays clear of
+     * the tile's edges, so they keep their diamonds' texels. Returns the offset taken.
      */
-    private static void centre(byte[] albedo, byte[] detail, int n, int x0, int y0, byte[] outAlbedo,
-                               byte[] outDetail, int size, SplittableRandom rng) {
+    private static int[] centre(byte[] albedo, byte[] detail, int n, int[] ox, int[] oy, int x0, int y0,
+                                byte[] outAlbedo, byte[] outDetail, int size, SplittableRandom rng,
+                                List<ImageQuilting.Seam> seams) {
         int side = (int) Math.round(CENTRE * n);
         int b0 = (n - side) / 2; // the block's first texel in the tile, along both axes
         int u = 0;
         int v = 0;
         double least = Double.POSITIVE_INFINITY;
         for (int k = 0; k < CANDIDATES; k++) {
-            int cu = rng.nextInt(n);
-            int cv = rng.nextInt(n);
+            int cu;
+            int cv;
+            boolean apart;
+            do {
+                cu = rng.nextInt(n);
+                cv = rng.nextInt(n);
+                apart = true;
+                for (int c = 0; c < 4; c++) {
+                    apart &= Math.abs(centred(cu - ox[c], n)) >= n / 4 || Math.abs(centred(cv - oy[c], n)) >= n / 4;
+                }
+            } while (!apart);
             double error = 0;
             for (int l = 0; l < side; l++) {
                 for (int w = 0; w < OVERLAP; w++) {
-                    for (int[] p : new int[][] {{w, l}, {side - 1 - w, l}, {l, w}, {l, side - 1 - w}}) {
-                        error += placedDifference(albedo, detail, n, outAlbedo, outDetail, size, x0 + b0 + p[0],
-                                y0 + b0 + p[1], cu + b0 + p[0], cv + b0 + p[1]);
+                    // the left, right, top and bottom strips
+                    for (int s = 0; s < 4; s++) {
+                        int across = s % 2 == 0 ? w : side - 1 - w;
+                        int bx = b0 + (s < 2 ? across : l);
+                        int by = b0 + (s < 2 ? l : across);
+                        error += placedDifference(albedo, detail, n, outAlbedo, outDetail, size, x0 + bx, y0 + by,
+                                cu + bx, cv + by);
                     }
                 }
             }
@@ -199,6 +238,13 @@ final class WangTiles {
                 }
             }
             cuts[s] = ImageQuilting.minimumPath(e, side, OVERLAP);
+            double straight = Double.POSITIVE_INFINITY;
+            for (int w = 0; w < OVERLAP; w++) {
+                int[] line = new int[side];
+                Arrays.fill(line, w);
+                straight = Math.min(straight, ImageQuilting.cost(e, OVERLAP, line));
+            }
+            seams.add(new ImageQuilting.Seam(ImageQuilting.cost(e, OVERLAP, cuts[s]), straight));
         }
         int far = side - OVERLAP;
         for (int by = 0; by < side; by++) {
@@ -214,6 +260,7 @@ final class WangTiles {
                 }
             }
         }
+        return new int[] {u, v};
     }
 
     /** e between the atlas texel (x, y) as placed and the exemplar's texel (ex, ey) (wrapped). */

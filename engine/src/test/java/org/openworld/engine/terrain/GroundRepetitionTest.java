@@ -86,8 +86,8 @@ class GroundRepetitionTest {
 
     /**
      * Issue 21's goal, at most half the repeated tiles' repetition from 20, 100 and 500 m: stochastic tiling meets it
-     * by far (0.04 to 0.08 against 0.54 to 0.97: nothing in its pictures repeats), the quilted Wang tiles with
-     * 0.21, 0.31 and 0.15 (0.3 of repeat's): two colours per edge leave each edge one of two diamonds, so some
+     * by far (0.04 to 0.08 against 0.54 to 0.97: nothing in its pictures repeats), the quilted Wang tiles with 0.20,
+     * 0.31 and 0.17 (0.28 to 0.32 of repeat's): two colours per edge leave each edge one of two diamonds, so some
      * likeness at one tile's shift stays, but each tile's own centre block and the random layout break the rest.
      */
     @ParameterizedTest

@@ -16,8 +16,8 @@ import org.openworld.engine.terrain.TerrainTextures.Material;
 
 /**
  * Quilted Wang tiles ({@link WangTiles}) on the real exemplar, the synthesised rock: every edge of one colour holds
- * the same texels in every tile, the atlas is a valid Wang tiling, the 16 tiles differ, the cuts follow the least
- * error, the same bytes for the same seed.
+ * the same texels in every tile, the atlas is a valid Wang tiling, the 16 tiles differ and their pieces come from
+ * apart in the exemplar, the seams are cut where the pieces agree, the same bytes for the same seed.
  */
 class WangTilesTest {
 
@@ -134,6 +134,39 @@ class WangTilesTest {
                 assertTrue(dx >= n / 4 || dy >= n / 4, "diamonds " + a + " and " + b + " overlap in the exemplar");
             }
         }
+    }
+
+    @Test
+    void eachTilesCentreIsItsOwnBlockFromApartFromTheDiamonds() {
+        int side = (int) Math.round(WangTiles.CENTRE * n);
+        int middle = n / 2; // the block's middle, which no strip's cut reaches
+        for (int k = 0; k < WangTiles.ATLAS * WangTiles.ATLAS; k++) {
+            for (int c = 0; c < 4; c++) {
+                int dx = Math.abs(Math.floorMod(rock.centreX()[k] - rock.offsetX()[c] + n / 2, n) - n / 2);
+                int dy = Math.abs(Math.floorMod(rock.centreY()[k] - rock.offsetY()[c] + n / 2, n) - n / 2);
+                assertTrue(dx >= n / 4 || dy >= n / 4, "tile " + k + "'s centre overlaps diamond " + c);
+            }
+            for (int y = middle - side / 4; y < middle + side / 4; y += 13) {
+                for (int x = middle - side / 4; x < middle + side / 4; x += 13) {
+                    assertArrayEquals(exemplar(x + rock.centreX()[k], y + rock.centreY()[k]),
+                            texel(rock, k % WangTiles.ATLAS, k / WangTiles.ATLAS, x, y), "tile " + k);
+                }
+            }
+        }
+    }
+
+    @Test
+    void seamsAreCutWhereThePiecesAgree() {
+        double cut = 0;
+        double straight = 0;
+        for (ImageQuilting.Seam seam : rock.seams()) {
+            assertTrue(seam.cut() <= seam.straight() + 1e-9, "a straight seam is one of the paths: " + seam);
+            cut += seam.cut();
+            straight += seam.straight();
+        }
+        // 16 tiles: four diagonal cuts and four strips around the centre each
+        assertEquals(16 * 8, rock.seams().size());
+        assertTrue(cut < 0.5 * straight, "the cuts' cost " + cut + " against straight seams' " + straight);
     }
 
     @Test
