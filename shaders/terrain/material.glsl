@@ -12,7 +12,8 @@
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
 //      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6);
-//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, so neither repeats;
+//      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, with MAT_WANG
+//      (materials.tiling=quilted) each is laid with quilted Wang tiles, so neither repeats;
 //      with MAT_TRIPLANAR (materials.cliffs=triplanar, near terrain only) the rock is also projected along X and Z
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
 //      with noise-bent edges; snow slides off steep slopes
@@ -210,6 +211,46 @@ struct MatCoords {
     MatTiles coarse;
     float coarseWeight;
 };
+#elif defined(MAT_WANG)
+// Quilted Wang tiles (Cohen et al. 2003, materials.tiling=quilted; engine: WangTiles): the textures are an atlas of
+// 4 x 4 tiles, one per choice of two colours on each edge, with the same texels along every edge of one colour. Each
+// cell of the tile grid (one tile per unit of uv) takes the colour of each of its edges from a hash of the edge's
+// integer coordinates, so a cell and its neighbour agree on the edge they share and the ground is seamless, with no
+// period. Atlas column by (west, east) colour: (0,0), (0,1), (1,1), (1,0), so column = 2 west + (west xor east);
+// rows likewise by (north, south).
+const float MAT_WANG_ATLAS = 4.0; // tiles along the atlas's side (WangTiles.ATLAS)
+
+// Where to read a cell's tile: the atlas coordinates and the derivatives of the continuous uv.
+struct MatCell {
+    vec2 uv;
+    vec2 dx; // explicit: the atlas coordinates jump at cell edges, and implicit derivatives there would pick the
+    vec2 dy; // coarsest mip (a seam of blur)
+};
+
+MatCell matCell(vec2 uv) {
+    vec2 cell = floor(uv);
+    // a horizontal edge's colour from one hash, a vertical edge's from another (offset lattice)
+    float north = step(0.5, matHash(cell));
+    float south = step(0.5, matHash(cell + vec2(0.0, 1.0)));
+    float west = step(0.5, matHash(cell + vec2(517.0, 211.0)));
+    float east = step(0.5, matHash(cell + vec2(518.0, 211.0)));
+    vec2 tile = vec2(2.0 * west + abs(west - east), 2.0 * north + abs(north - south));
+    MatCell c;
+    c.uv = (tile + (uv - cell)) / MAT_WANG_ATLAS;
+    c.dx = dFdx(uv) / MAT_WANG_ATLAS;
+    c.dy = dFdy(uv) / MAT_WANG_ATLAS;
+    return c;
+}
+
+vec4 matLookup(sampler2DArray tex, float layer, MatCell c) {
+    return textureGrad(tex, vec3(c.uv, layer), c.dx, c.dy);
+}
+
+struct MatCoords {
+    MatCell fine;
+    MatCell coarse;
+    float coarseWeight;
+};
 #else
 struct MatCoords {
     vec2 fine;
@@ -234,6 +275,9 @@ MatCoords matCoords(vec2 p, float coarseWeight) {
 #ifdef MAT_STOCHASTIC
     c.fine = matTiles(fine);
     c.coarse = matTiles(coarse);
+#elif defined(MAT_WANG)
+    c.fine = matCell(fine);
+    c.coarse = matCell(coarse);
 #else
     c.fine = fine;
     c.coarse = coarse;
@@ -242,7 +286,7 @@ MatCoords matCoords(vec2 p, float coarseWeight) {
     return c;
 }
 
-// One material at both scales: repeated or stochastic tiles (matLookup), the same for albedo and detail.
+// One material at both scales: repeated, Wang or stochastic tiles (matLookup), the same for albedo and detail.
 MatTexel matSample(float layer, MatCoords c) {
     const mat2 unturn = mat2(0.8253, -0.5646, 0.5646, 0.8253); // rotation by -MAT_COARSE_TURN: coarse slopes to world
     vec4 albedoFine = matLookup(uMatAlbedo, layer, c.fine);

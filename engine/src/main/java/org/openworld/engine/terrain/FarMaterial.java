@@ -57,9 +57,9 @@ final class FarMaterial {
     private MaterialSettings.Tiling bakedTiling;
 
     /**
-     * Makes the textures and the bake programs, one per tiling's {@link MaterialSettings.Tiling#program() program},
-     * handed to the system's owner ({@code terrain.far-material.colour}, {@code terrain.far-material.slope},
-     * {@code terrain.bake}, {@code terrain.bake.stochastic}); nothing is baked until {@link #refresh}.
+     * Makes the textures and the bake programs, one per {@link MaterialSettings.Tiling tiling}, handed to the
+     * system's owner ({@code terrain.far-material.colour}, {@code terrain.far-material.slope}, {@code terrain.bake},
+     * {@code terrain.bake.quilted}, {@code terrain.bake.stochastic}); nothing is baked until {@link #refresh}.
      *
      * @param unitHeights   texture unit the caller binds the height pyramid to before a refresh; then the gradients
      *                      and the snow map on the next two units
@@ -73,9 +73,6 @@ final class FarMaterial {
         slope = context.own("far-material.slope", Texture2D.withMips(gl, size, size, Format.RGBA16F, wrap));
         triangle = context.own(Mesh.fullScreenTriangle(gl));
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
-            if (tiling.program() != tiling) {
-                continue;
-            }
             ShaderProgram program = context.own("bake" + tiling.roleSuffix(),
                     context.shaders().program(tiling.defines(), "terrain/bake.vert", "terrain/bake.frag"));
             bakes.put(tiling, bakeUniforms(program, base, size, unitHeights));
@@ -121,7 +118,7 @@ final class FarMaterial {
                 && settings.tiling() == bakedTiling) {
             return;
         }
-        materials.bind(bakes.get(settings.tiling().program()), settings, materialUnit);
+        materials.bind(bakes.get(settings.tiling()), settings, materialUnit);
         int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
         int[] viewport = new int[4];
         glGetIntegerv(GL_VIEWPORT, viewport);

@@ -16,14 +16,13 @@ import org.openworld.engine.settings.SettingsGroup;
  *                    feet of cliffs that share is lit by the terrain instead, warmer, and darker under a low sun
  * @param detailScale side of the fine texture tile (the synthesised exemplar) on the ground; the coarse tile that is
  *                    blended in to hide the repetition is {@code shaders/terrain/material.glsl}'s
- *                    {@code MAT_COARSE_FACTOR} times larger; a quilted texture spans {@link ImageQuilting#FACTOR}
- *                    exemplar tiles at the same texel size
+ *                    {@code MAT_COARSE_FACTOR} times larger; each quilted Wang tile is one such tile
  * @param farTexels   distance from the eye beyond which the terrain reads the {@link FarMaterial} baked once instead
  *                    of every material layer, in texels of that material (2 m each on the default map, 1 m on a
  *                    1 km one), so a coarser bake starts further out; the near material fades into it over the last
  *                    {@link FarMaterial#BLEND_FRACTION} of that distance
- * @param tiling      how the detail textures cover the ground: repeated tiles, textures quilted from them at start-up
- *                    (Efros and Freeman 2001), which repeat four times further apart at no cost per pixel, or
+ * @param tiling      how the detail textures cover the ground: repeated tiles, 16 Wang tiles quilted from them at
+ *                    start-up (Cohen et al. 2003), laid aperiodically by a hash at one lookup per scale, or
  *                    stochastic tiling (Heitz and Neyret 2018), which hides the repetition at three times the texture
  *                    lookups of the near material
  * @param cliffs      how rock is projected on steep slopes in the near material: from above only, or from above and
@@ -39,7 +38,7 @@ public record MaterialSettings(
         @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
         @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
                 max = 100000) double farTexels,
-        @Setting(doc = "how the detail textures tile: repeat, quilted (Efros-Freeman) or stochastic (Heitz-Neyret)")
+        @Setting(doc = "how the detail textures tile: repeat, quilted (Wang tiles) or stochastic (Heitz-Neyret)")
         Tiling tiling,
         @Setting(doc = "rock on steep slopes: planar (from above, stretched) or triplanar (blended by the normal)",
                 atStart = true) Cliffs cliffs) {
@@ -53,17 +52,17 @@ public record MaterialSettings(
     }
 
     /**
-     * How the detail textures cover the ground; the repeated and the stochastic tiles are each a variant of the near
-     * terrain and the bake programs ({@code MAT_STOCHASTIC} in {@code shaders/terrain/material.glsl}), so neither
-     * pays for the other; the quilted textures are drawn by the repeated tiles' programs.
+     * How the detail textures cover the ground; each tiling is a variant of the near terrain and the bake programs
+     * ({@code MAT_WANG} and {@code MAT_STOCHASTIC} in {@code shaders/terrain/material.glsl}), so none pays for
+     * another.
      */
     public enum Tiling {
         /** The tiles repeat: one lookup per scale, visibly periodic from tens of metres up. */
         REPEAT,
         /**
-         * Image quilting (Efros and Freeman 2001), made at start-up: each material's tile cut into blocks and sewn
-         * into a texture four times as wide along minimum-error seams ({@link ImageQuilting}), then repeated like
-         * the tiles; 16 times the texture memory.
+         * Quilted Wang tiles (Cohen, Shade, Hiller and Deussen 2003), made at start-up: 16 tiles cut from each
+         * material's tile along minimum-error seams ({@link WangTiles}), laid by a hash of the tile grid so that
+         * touching edges match and no grid repeats; one lookup per scale, 16 times the texture memory.
          */
         QUILTED,
         /**
@@ -72,19 +71,18 @@ public record MaterialSettings(
          */
         STOCHASTIC;
 
-        /** The tiling whose programs draw this one: the quilt is sampled like the repeated tiles. */
-        Tiling program() {
-            return this == QUILTED ? REPEAT : this;
-        }
-
         /** The shader defines of the programs for this tiling. */
         List<String> defines() {
-            return this == STOCHASTIC ? List.of("MAT_STOCHASTIC") : List.of();
+            return switch (this) {
+                case REPEAT -> List.of();
+                case QUILTED -> List.of("MAT_WANG");
+                case STOCHASTIC -> List.of("MAT_STOCHASTIC");
+            };
         }
 
         /** What this tiling's programs add to their GL labels: nothing for the repeated tiles. */
         String roleSuffix() {
-            return this == STOCHASTIC ? ".stochastic" : "";
+            return this == REPEAT ? "" : "." + name().toLowerCase(java.util.Locale.ROOT);
         }
     }
 

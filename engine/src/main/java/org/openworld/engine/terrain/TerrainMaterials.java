@@ -29,16 +29,13 @@ public final class TerrainMaterials implements Labelled {
     private final Owned arrays = new Owned();
     private final TextureArray albedo;
     private final TextureArray detail;
-    /** Exemplar tiles along a texture's side: 1 for the synthesised tiles, {@link ImageQuilting#FACTOR} for a quilt. */
-    private final int span;
 
     /**
-     * Uploads textures synthesised beforehand, e.g. on a worker thread: the tiles, or a quilt of them
-     * ({@link TerrainTextures#quilted}), which is laid over as many tiles' ground as it is tiles wide.
+     * Uploads textures synthesised beforehand, e.g. on a worker thread: the tiles, or the atlas of Wang tiles cut
+     * from them ({@link TerrainTextures#quilted}), whose cells are each one tile's ground wide.
      */
     public TerrainMaterials(GlContext gl, TerrainTextures textures) {
         int n = textures.size();
-        span = n / TerrainTextures.SIZE;
         List<Material> layers = List.of(Material.values());
         try {
             albedo = arrays.own(TextureArray.repeatingMipmapped(gl, n, n, Format.SRGB8_ALPHA8,
@@ -77,7 +74,7 @@ public final class TerrainMaterials implements Labelled {
             detail.bind(firstUnit + 1);
             u.albedo.set(firstUnit);
             u.detail.set(firstUnit + 1);
-            u.detailScale.set((float) (settings.detailScale() * span));
+            u.detailScale.set((float) (settings.detailScale()));
             u.snowMode.set(switch (settings.snowMode()) { // material.glsl's MAT_SNOW_MAP and MAT_ALTITUDE_BANDS
                 case SNOW_MAP -> 0;
                 case ALTITUDE_BANDS -> 1;

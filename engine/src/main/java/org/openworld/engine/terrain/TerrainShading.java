@@ -35,8 +35,8 @@ import org.openworld.engine.gl.Uniform;
  *
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
  * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and three
- * more for the stochastic tiling ({@link MaterialSettings.Tiling}: the two near programs and the bake come in both;
- * the quilted textures are drawn by the repeated tiles' programs).
+ * more for each of the quilted and the stochastic tilings ({@link MaterialSettings.Tiling}: the two near programs and
+ * the bake come in each).
  */
 final class TerrainShading {
 
@@ -101,23 +101,20 @@ final class TerrainShading {
         farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
     }
 
-    /** The materials' textures for this tiling: the tiles, or a quilt of them made now. */
+    /** The materials' textures for this tiling: the tiles, or the Wang tiles quilted from them now. */
     private TerrainMaterials upload(MaterialSettings.Tiling tiling) {
         quilted = tiling == MaterialSettings.Tiling.QUILTED;
         return new TerrainMaterials(gl, quilted ? times.time("quilting", () -> tiles.quilted(seed)) : tiles);
     }
 
     /**
-     * The near programs ({@code program}, {@code program.stochastic}) and the far one ({@code program.far}),
-     * {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
+     * The near programs ({@code program}, {@code program.quilted}, {@code program.stochastic}) and the far one
+     * ({@code program.far}), {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
      */
     private Lit lit(EngineContext context, String suffix, List<String> light, MaterialSettings.Cliffs cliffs,
                     HeightMap base, int cells, int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
-            if (tiling.program() != tiling) {
-                continue;
-            }
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
                     with(with(light, tiling.defines()), cliffs.defines()), base, cells, unitHeights);
             p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
@@ -175,7 +172,7 @@ final class TerrainShading {
                 double farDistance = settings.farTexels() * farMaterial.texelMetres();
                 int nearCount = order.nearerThan(farDistance);
                 Lit lit = sunShadowed ? shadowed : unshadowed;
-                Near near = lit.near().get(settings.tiling().program());
+                Near near = lit.near().get(settings.tiling());
                 materials.bind(near.uniforms(), settings, unitMaterials);
                 near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);

@@ -34,7 +34,7 @@ import java.util.SplittableRandom;
  * {@link TerrainMaterials#TerrainMaterials(org.openworld.engine.gl.GlContext, TerrainTextures)}.
  *
  * <p><b>Limits.</b> One tile per material, repeated: the terrain shader samples it at two scales to hide that, and
- * {@link #quilted} makes textures four times as wide from it for {@code materials.tiling=quilted}. A
+ * {@link #quilted} cuts 16 Wang tiles from it for {@code materials.tiling=quilted}, laid aperiodically. A
  * texel is 5 mm at the default tile, so nothing larger than the tile's 2.7 m (a boulder field, a snow cornice) is in
  * the textures; the terrain's own relief and snow map carry those.
  */
@@ -78,18 +78,18 @@ public final class TerrainTextures {
     }
 
     /**
-     * The three materials {@link ImageQuilting quilted} into textures {@link ImageQuilting#FACTOR} times as wide (each
-     * from its own random stream of {@code seed}, in parallel), so they repeat that much further apart: the same seed
-     * gives the same texels.
+     * The three materials as {@link WangTiles quilted Wang tiles}: each an atlas of 16 tiles
+     * {@link WangTiles#ATLAS} tiles wide, cut from its tile (each from its own random stream of {@code seed}, in
+     * parallel); the same seed gives the same texels.
      */
     public TerrainTextures quilted(int seed) {
-        TerrainTextures t = new TerrainTextures(ImageQuilting.FACTOR * size);
-        List<ImageQuilting.Quilt> quilts = Arrays.stream(Material.values()).parallel().map(m -> ImageQuilting.quilt(
+        TerrainTextures t = new TerrainTextures(WangTiles.ATLAS * size);
+        List<WangTiles.Atlas> atlases = Arrays.stream(Material.values()).parallel().map(m -> WangTiles.build(
                 albedo.get(m), detail.get(m), size, new SplittableRandom(seed * 0x632BE59BD9B4E019L + m.ordinal())))
                 .toList();
         for (Material m : Material.values()) {
-            t.albedo.put(m, quilts.get(m.ordinal()).albedo());
-            t.detail.put(m, quilts.get(m.ordinal()).detail());
+            t.albedo.put(m, atlases.get(m.ordinal()).albedo());
+            t.detail.put(m, atlases.get(m.ordinal()).detail());
         }
         return t;
     }

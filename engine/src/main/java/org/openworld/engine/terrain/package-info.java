@@ -88,14 +88,16 @@
  * carries normal and gloss maps (figure 3) and is shown by {@code terrain-debug.colouring=tangent-space} (figure 4).
  * All textures are synthesised by {@link org.openworld.engine.terrain.TerrainTextures} (periodic noise, a recipe per
  * material, the packing into RGBA8); two scales are blended to hide the tiling the paper complains of in section 6.
- * {@code materials.tiling=quilted} does what the paper proposes, image quilting (Efros and Freeman 2001,
- * {@link org.openworld.engine.terrain.ImageQuilting}): at start-up each 512² tile is sewn into a periodic 2048² texture
- * of 160-texel blocks overlapping by 32, each drawn at random among the source offsets whose overlap error
- * {@code E(u) = Σ M (X(p + u) − T(p))²} (all offsets at once by FFT) is within 10 % of the least, its seams cut along
- * the minimum-error path through each overlap (dynamic programming), albedo and detail maps with one cut. Nothing per
- * pixel, 16 times the texture memory (128 MiB), a few seconds at start; the quilt still repeats, four tiles apart, and
- * the repetition measure still finds it where a picture holds two periods (0.59 / 0.79 / 0.69 from 20 / 100 / 500 m
- * against the tiles' 0.69 / 0.97 / 0.54). {@code materials.tiling=stochastic} removes the repeat (Heitz and Neyret
+ * {@code materials.tiling=quilted} does what the paper proposes, image quilting (Efros and Freeman 2001), made
+ * aperiodic as quilted Wang tiles (Cohen et al. 2003, {@link org.openworld.engine.terrain.WangTiles}): at start-up 16
+ * tiles are cut from each 512² tile, one per choice of two colours on each edge; each colour is a diamond of the
+ * exemplar straddling the edge, so tiles that share an edge colour share its texels; inside a tile the diamonds meet
+ * along minimum-error cuts of the diagonals ({@link org.openworld.engine.terrain.ImageQuilting}, dynamic
+ * programming), and a centre block of its own is sewn in along cuts of its border strips. The shader hashes each
+ * edge's colour from the tile grid and reads the tile from a 4 × 4 atlas that is itself a valid Wang tiling (so its
+ * mips agree across tile edges): one lookup per scale, 16 times the texture memory (128 MiB), about a second at
+ * start; the repetition measure reads 0.20 / 0.31 / 0.17 from 20 / 100 / 500 m
+ * (against the tiles' 0.69 / 0.97 / 0.54). {@code materials.tiling=stochastic} removes the repeat (Heitz and Neyret
  * 2018): a triangle grid in skewed space, each corner shifting the texture by a hash of its lattice point, the three
  * lookups blended by barycentric weights w around the texture's mean m as {@code m + Σ w_i (x_i − m) / sqrt(Σ w_i²)},
  * which keeps the contrast a plain blend would wash out. Three times the lookups of the near material and the bake;
