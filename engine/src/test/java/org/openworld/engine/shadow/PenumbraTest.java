@@ -3,9 +3,6 @@ package org.openworld.engine.shadow;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -18,6 +15,7 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.ViewCamera;
@@ -51,14 +49,8 @@ class PenumbraTest {
 
     /** Ground at −20 m; a wall from x = −16 to 0 m, {@link #TALL} high for z < 0 and {@link #LOW} for z ≥ 0. */
     static Path world() throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                double wall = x >= 120 && x < 128 ? (z < SAMPLES / 2 ? TALL : LOW) : 0;
-                bytes.putFloat((float) (wall / TALL));
-            }
-        }
-        return Files.write(dir.resolve("two-walls.raw"), bytes.array());
+        return ImportedWorld.write(dir.resolve("two-walls.raw"), SAMPLES,
+                (x, z) -> (float) ((x >= 120 && x < 128 ? (z < SAMPLES / 2 ? TALL : LOW) : 0) / TALL));
     }
 
     /** Where the shadow of a wall of this height ends on the ground west of it. */

@@ -14,9 +14,6 @@ import static org.lwjgl.opengl.GL30C.GL_DRAW_FRAMEBUFFER_BINDING;
 import static org.lwjgl.opengl.GL30C.GL_READ_FRAMEBUFFER_BINDING;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -30,6 +27,7 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
@@ -70,14 +68,9 @@ class ShadowProbeTest {
 
     @BeforeAll
     static void writeWorld() throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                // an imported map must have some relief to be scaled: one sample, at the corner behind the camera
-                bytes.putFloat(x == SAMPLES - 1 && z == SAMPLES - 1 ? 1f : 0f);
-            }
-        }
-        plain = Files.write(dir.resolve("plain.raw"), bytes.array());
+        // an imported map must have some relief to be scaled: one sample, at the corner behind the camera
+        plain = ImportedWorld.write(dir.resolve("plain.raw"), SAMPLES,
+                (x, z) -> x == SAMPLES - 1 && z == SAMPLES - 1 ? 1f : 0f);
     }
 
     /** The paper's single map, 256 texels, one depth test per point: the setting most prone to acne. */

@@ -1,12 +1,10 @@
 package org.openworld.engine.shadow;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.joml.Vector3f;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.environment.Sun;
 
 /**
@@ -29,13 +27,7 @@ public final class WallWorld {
 
     /** Writes the world as a raw float32 height map into {@code dir}. */
     public static Path write(Path dir) throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                bytes.putFloat(x >= 120 && x < 128 ? 1f : 0f);
-            }
-        }
-        return Files.write(dir.resolve("wall.raw"), bytes.array());
+        return ImportedWorld.write(dir.resolve("wall.raw"), SAMPLES, (x, z) -> x >= 120 && x < 128 ? 1f : 0f);
     }
 
     /**
@@ -43,14 +35,8 @@ public final class WallWorld {
      * ground at {@link #slopedGround}, the wall 100 m above it. Import with {@link #slopedTerrain}.
      */
     public static Path writeSloped(Path dir, double slopeDeg) throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                double height = slopedGround(slopeDeg, 2.0 * (x - SAMPLES / 2)) + (x >= 120 && x < 128 ? 100 : 0);
-                bytes.putFloat((float) height);
-            }
-        }
-        return Files.write(dir.resolve("sloped-wall.raw"), bytes.array());
+        return ImportedWorld.write(dir.resolve("sloped-wall.raw"), SAMPLES,
+                (x, z) -> (float) (slopedGround(slopeDeg, 2.0 * (x - SAMPLES / 2)) + (x >= 120 && x < 128 ? 100 : 0)));
     }
 
     /** Height of the sloped ground at x (metres east of the centre): {@link #GROUND} at x = 0. */

@@ -3,9 +3,6 @@ package org.openworld.engine.terrain;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -17,6 +14,7 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.culling.CullingSystem;
@@ -56,15 +54,11 @@ class CliffTexelsTest {
     /** 256 m square, 1 m between samples; the face runs north-south. */
     @BeforeAll
     static void writeWorld() throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                double metres = x - SAMPLES / 2.0;
-                double h = Math.min(FACE_TOP, Math.max(0, (metres + 20) * Math.tan(SLOPE)));
-                bytes.putFloat((float) (x == 0 && z == 0 ? PEAK : h));
-            }
-        }
-        cliff = Files.write(dir.resolve("cliff.raw"), bytes.array());
+        cliff = ImportedWorld.write(dir.resolve("cliff.raw"), SAMPLES, (x, z) -> {
+            double metres = x - SAMPLES / 2.0;
+            double h = Math.min(FACE_TOP, Math.max(0, (metres + 20) * Math.tan(SLOPE)));
+            return (float) (x == 0 && z == 0 ? PEAK : h);
+        });
     }
 
     /** Texel density of one picture: mean luma steps along the rows and down the columns, over the mean luma. */

@@ -3,9 +3,6 @@ package org.openworld.engine.terrain;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -19,6 +16,7 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.colour.Repetition;
@@ -51,11 +49,7 @@ class GroundRepetitionTest {
     /** A flat world 2 km wide, 4 m between samples (one raised corner sample, which the import needs for a range). */
     @BeforeAll
     static void writeWorld() throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int i = 0; i < SAMPLES * SAMPLES; i++) {
-            bytes.putFloat(i == 0 ? 1f : 0f);
-        }
-        flat = Files.write(dir.resolve("flat.raw"), bytes.array());
+        flat = ImportedWorld.write(dir.resolve("flat.raw"), SAMPLES, (x, z) -> x == 0 && z == 0 ? 1f : 0f);
     }
 
     /** The repetition of the ground seen straight down from {@code height} metres, with more settings. */

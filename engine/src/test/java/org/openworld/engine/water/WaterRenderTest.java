@@ -6,9 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -23,6 +20,7 @@ import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
@@ -61,18 +59,8 @@ class WaterRenderTest {
                 : z >= 150 && z < 190 ? 0.18f : 0f);
     }
 
-    interface Height {
-        float at(int x, int z);
-    }
-
-    static Path write(String name, Height height) throws IOException {
-        ByteBuffer bytes = ByteBuffer.allocate(4 * SAMPLES * SAMPLES).order(ByteOrder.LITTLE_ENDIAN);
-        for (int z = 0; z < SAMPLES; z++) {
-            for (int x = 0; x < SAMPLES; x++) {
-                bytes.putFloat(height.at(x, z));
-            }
-        }
-        return Files.write(dir.resolve(name), bytes.array());
+    static Path write(String name, ImportedWorld.Height height) throws IOException {
+        return ImportedWorld.write(dir.resolve(name), SAMPLES, height);
     }
 
     static List<String> settings(Path world, String... more) {
