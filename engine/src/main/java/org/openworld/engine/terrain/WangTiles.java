@@ -266,18 +266,8 @@ final class WangTiles {
     /** e between the atlas texel (x, y) as placed and the exemplar's texel (ex, ey) (wrapped). */
     private static double placedDifference(byte[] albedo, byte[] detail, int n, byte[] outAlbedo, byte[] outDetail,
                                            int size, int x, int y, int ex, int ey) {
-        int p = 4 * (y * size + x);
-        int q = 4 * (Math.floorMod(ey, n) * n + Math.floorMod(ex, n));
-        double sum = 0;
-        for (int c = 0; c < 4; c++) {
-            if (c < 3) {
-                double d = ((outAlbedo[p + c] & 0xFF) - (albedo[q + c] & 0xFF)) / 255.0;
-                sum += d * d;
-            }
-            double d = ((outDetail[p + c] & 0xFF) - (detail[q + c] & 0xFF)) / 255.0;
-            sum += d * d;
-        }
-        return sum;
+        return squared(outAlbedo, outDetail, 4 * (y * size + x), albedo, detail,
+                4 * (Math.floorMod(ey, n) * n + Math.floorMod(ex, n)));
     }
 
     /**
@@ -295,15 +285,22 @@ final class WangTiles {
 
     /** e: the squared difference of the seven channels of two exemplar texels (wrapped). */
     private static double difference(byte[] albedo, byte[] detail, int n, int x1, int y1, int x2, int y2) {
-        int p = 4 * (Math.floorMod(y1, n) * n + Math.floorMod(x1, n));
-        int q = 4 * (Math.floorMod(y2, n) * n + Math.floorMod(x2, n));
+        return squared(albedo, detail, 4 * (Math.floorMod(y1, n) * n + Math.floorMod(x1, n)), albedo, detail,
+                4 * (Math.floorMod(y2, n) * n + Math.floorMod(x2, n)));
+    }
+
+    /**
+     * The squared difference over the seven channels (albedo rgb, detail rgba; 0..1 each) of texel p of one pair of
+     * maps and texel q of another (byte offsets of RGBA8 texels).
+     */
+    private static double squared(byte[] albedoA, byte[] detailA, int p, byte[] albedoB, byte[] detailB, int q) {
         double sum = 0;
         for (int c = 0; c < 4; c++) {
             if (c < 3) {
-                double d = ((albedo[p + c] & 0xFF) - (albedo[q + c] & 0xFF)) / 255.0;
+                double d = ((albedoA[p + c] & 0xFF) - (albedoB[q + c] & 0xFF)) / 255.0;
                 sum += d * d;
             }
-            double d = ((detail[p + c] & 0xFF) - (detail[q + c] & 0xFF)) / 255.0;
+            double d = ((detailA[p + c] & 0xFF) - (detailB[q + c] & 0xFF)) / 255.0;
             sum += d * d;
         }
         return sum;
