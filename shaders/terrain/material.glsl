@@ -20,7 +20,7 @@
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
 //   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance)
-//      where the relief leaves the sky visible, the sunlit ground's light where it hides it (SkyVisibility), a
+//      where the relief leaves the sky visible, the light of the terrain where it hides it (SkyVisibility), a
 //      normalised Blinn-Phong highlight and a Fresnel-weighted reflection of the environment map (the sky
 //      system's), both scaled by the gloss map
 #include "common/frame.glsl"
