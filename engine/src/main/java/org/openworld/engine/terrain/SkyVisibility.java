@@ -127,7 +127,7 @@ public final class SkyVisibility {
     }
 
     /**
-     * The visibility at the samples of a map of the same extent, {@code n} ≥ {@link #size()} samples per side (a
+     * The visibility at the samples of a map of the same extent, {@code n} at least this map's samples per side (a
      * power-of-two multiple), interpolated bilinearly: sample i of the finer map lies at coordinate i / f of this one.
      */
     public byte[] resampled(int n) {
@@ -150,7 +150,7 @@ public final class SkyVisibility {
         return out;
     }
 
-    /** The visibility at world position (x, z), metres, at the nearest sample (as the snow map's texture holds it). */
+    /** The visibility at world position (x, z), metres, 0..1 in steps of 1/255, at the nearest sample. */
     public double visibleAt(double x, double z) {
         return raw((int) Math.round(x / spacing + size / 2.0), (int) Math.round(z / spacing + size / 2.0)) / 255.0;
     }
@@ -201,15 +201,6 @@ public final class SkyVisibility {
         float top = h[za + xa] + (h[za + xb] - h[za + xa]) * fx;
         float bottom = h[zb + xa] + (h[zb + xb] - h[zb + xa]) * fx;
         return top + (bottom - top) * fz;
-    }
-
-    public int size() {
-        return size;
-    }
-
-    /** The visibility at sample (col, row), 0..1 (stored in steps of 1/255). */
-    public double at(int col, int row) {
-        return (values[row * size + col] & 0xFF) / 255.0;
     }
 
 }

@@ -26,16 +26,11 @@ class SkyVisibilityTest {
         return HeightPyramid.build(new HeightMap(N, SPACING, h, false));
     }
 
-    /** The sample index of coordinate x (metres). */
-    static int index(double x) {
-        return (int) Math.round(x / SPACING + N / 2.0);
-    }
-
     @Test
     void openGroundSeesTheWholeSky() {
         SkyVisibility v = SkyVisibility.of(world((x, z) -> 100), 0);
-        assertEquals(1.0, v.at(N / 2, N / 2), 1e-9);
-        assertEquals(1.0, v.at(3, N - 5), 1e-9);
+        assertEquals(1.0, v.visibleAt(0, 0), 1e-9);
+        assertEquals(1.0, v.visibleAt((3 - N / 2.0) * SPACING, (N / 2.0 - 5) * SPACING), 1e-9);
     }
 
     @Test
@@ -45,8 +40,8 @@ class SkyVisibilityTest {
         double tan = Math.tan(Math.toRadians(30));
         SkyVisibility v = SkyVisibility.of(world((x, z) -> tan * x), 0);
         for (double x : new double[] {-500, 0, 400}) {
-            assertTrue(v.at(index(x), index(0)) >= 254 / 255.0, "on the slope at x = " + x + ": "
-                    + v.at(index(x), index(0)));
+            assertTrue(v.visibleAt(x, 0) >= 254 / 255.0, "on the slope at x = " + x + ": "
+                    + v.visibleAt(x, 0));
         }
         // and not because it ignores the ground: from the flat ground at the slope's foot the slope hides, along
         // each azimuth φ towards it, the sky below its elevation there, atan(tan 30° · cos φ)
@@ -56,7 +51,7 @@ class SkyVisibilityTest {
             double c = Math.cos(Math.atan(tan * Math.max(Math.cos(2 * Math.PI * m / SkyVisibility.DIRECTIONS), 0)));
             expected += c * c / SkyVisibility.DIRECTIONS;
         }
-        assertEquals(expected, kink.at(index(-32), index(0)), 0.02, "at the foot of the slope");
+        assertEquals(expected, kink.visibleAt(-32, 0), 0.02, "at the foot of the slope");
         assertTrue(expected < 0.95, "the slope hides a share: " + expected);
     }
 
@@ -72,11 +67,11 @@ class SkyVisibilityTest {
                 double rise = c > 1e-9 ? Math.cos(Math.atan(height * c / -d)) : 1;
                 expected += rise * rise / SkyVisibility.DIRECTIONS;
             }
-            double measured = v.at(index(d), index(0));
+            double measured = v.visibleAt(d, 0);
             assertEquals(expected, measured, 0.06, d + " m from the cliff");
         }
-        assertEquals(1.0, v.at(index(-2500), index(0)), 0.03, "far from the cliff");
-        assertTrue(v.at(index(-96), index(0)) < 0.8, "at its foot: " + v.at(index(-96), index(0)));
+        assertEquals(1.0, v.visibleAt(-2500, 0), 0.03, "far from the cliff");
+        assertTrue(v.visibleAt(-96, 0) < 0.8, "at its foot: " + v.visibleAt(-96, 0));
     }
 
     @Test
