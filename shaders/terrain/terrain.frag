@@ -9,6 +9,9 @@
 //                          lookups), the sky's reflection from the vertices (terrain.vert)
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
 //   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
+//   TERRAIN_CLIPMAP        the unbounded world (terrain.world=unbounded): the slope from the streamed clipmap's
+//                          layer of the patch's level, every patch near (no baked far material, no snow map: snow
+//                          by altitude band; the whole sky seen)
 #include "common/frame.glsl"
 #include "common/color.glsl"
 #include "terrain/material.glsl"
@@ -18,11 +21,16 @@ in vec4 air;                   // the air to this point, per vertex (terrain.ver
 flat in int lodLevel;
 out vec4 fragColor;
 
+#ifdef TERRAIN_CLIPMAP
+uniform sampler2DArray slopes; // (dh/dx, dh/dz) of each level's window around the camera, wrapping (HeightClipmap)
+uniform float clipExtent;      // metres across level 0's window: clipSize · spacing
+#else
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
 uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (SkyVisibility)
 uniform sampler2D farColour;   // baked steps 1-3 of material.glsl (FarMaterial): rgb albedo (sRGB stored), a gloss
 uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5, ba the ground's (dh/dx, dh/dz)
 uniform float extent;          // metres per map tile
+#endif
 uniform vec2 heightRange;      // lowest height, 1 / (highest - lowest), metres
 uniform vec2 farBand;          // metres from the eye: the near material fades into the far one from x to y
 
@@ -35,14 +43,22 @@ vec3 levelColour(int level) {
 }
 
 void main() {
+#ifdef TERRAIN_CLIPMAP
+    // level L's sample i lies at x = i · d_L and is texel i mod clipSize, whose centre is at (i + 0.5) / clipSize:
+    // wrapping bilinear filtering then reads the window as if it were the whole world
+    float levelExtent = clipExtent * exp2(float(lodLevel));
+    vec2 slope = texture(slopes, vec3(wsPos.xz / levelExtent + 0.5 / float(textureSize(slopes, 0).x),
+                                      float(lodLevel))).xy;
+#else
     vec2 uv = wsPos.xz / extent + 0.5;
-#ifdef TERRAIN_FAR
+  #ifdef TERRAIN_FAR
     // the far ground's gradient baked beside its detail slope: one lookup fewer (the gradient map itself is finer
     // only on maps over FarMaterial.MAX_SIZE samples, whose far ground reads coarse mips of it anyway)
     vec4 farSlopes = texture(farSlope, uv);
     vec2 slope = farSlopes.ba;
-#else
+  #else
     vec2 slope = texture(gradients, uv).xy;
+  #endif
 #endif
     TerrainSurface s;
     s.wsPos = wsPos;
@@ -55,15 +71,21 @@ void main() {
     vec3 color = 0.5 + 0.5 * vec3(s.wsTangent.y, s.wsNormal.y, s.wsBitangent.y);
     color = color * color;
 #else
-    vec4 far = texture(farColour, uv);
     MatTexel m;
-  #ifdef TERRAIN_FAR
+  #ifdef TERRAIN_CLIPMAP
+    s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
+    s.snow = 0.0;          // no snow map streams yet: the materials take snow from the altitude band
+    s.skyVisibility = 1.0; // nor the horizon's occlusion
+    m = terrainMaterial(s, length(cameraPos() - wsPos), matMacroTint(wsPos.xz));
+  #elif defined(TERRAIN_FAR)
+    vec4 far = texture(farColour, uv);
     m.albedo = far.rgb;
     m.slope = farSlopes.rg * 2.0 - 1.0;
     m.height = 0.5;
     m.gloss = far.a;
     s.skyVisibility = 1.0; // taken into the sky light per vertex (terrain.vert)
   #else
+    vec4 far = texture(farColour, uv);
     s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
     vec2 snowAndSky = texture(snowMap, uv).rg;
     s.snow = snowAndSky.r;

@@ -1,7 +1,9 @@
 #version 330 core
 // Geomipmapped terrain patches (engine: org.openworld.engine.terrain.PatchRenderer). Every patch is the same grid
 // of (N+1)² vertices; the instance says where it lies, how far apart its vertices are and which pyramid level each
-// of its vertices reads. Heights come from the R32F pyramid texture, level L = pyramid level L, read exactly.
+// of its vertices reads. Heights come from the R32F pyramid texture, level L = pyramid level L, read exactly; with
+// TERRAIN_CLIPMAP (terrain.world=unbounded) from layer L of the streamed clipmap (HeightClipmap), whose window
+// around the camera holds world sample i of level L at texel i mod clipSize.
 #include "common/frame.glsl"
 #include "common/fog.glsl"
 #ifdef TERRAIN_FAR
@@ -19,11 +21,17 @@ layout(location = 7) in vec4 sideMorphSW;     // south, west
 layout(location = 8) in vec4 cornerMorphN;    // north-west, north-east diagonal's range at the corner's level
 layout(location = 9) in vec4 cornerMorphS;    // south-east, south-west
 
-uniform sampler2D heights;
-uniform int mapSize;        // level-0 samples per side
+uniform int mapSize;        // level-0 samples per side of the tile (of a root of the unbounded world)
 uniform float spacing;      // metres between level-0 samples
 uniform int cells;          // N, grid cells per patch side
+#ifdef TERRAIN_CLIPMAP
+uniform sampler2DArray heights;
+uniform int clipSize;       // samples per side of every level's window, a power of two
+ivec2 worldOrigin;          // world sample index of this instance's root's north-west corner, set by main
+#else
+uniform sampler2D heights;
 uniform int periodic;       // 1: the map wraps (generated), 0: it clamps (imported)
+#endif
 #ifdef TERRAIN_FAR
 uniform sampler2D farSlope; // ba: the ground's (dh/dx, dh/dz) over the tile (FarMaterial), as in terrain.frag
 uniform sampler2D snowMap;  // g: the share of the sky the relief leaves (SkyVisibility), as in terrain.frag
@@ -56,10 +64,15 @@ int vertexLevel(ivec2 g) {
 }
 
 float heightAt(ivec2 sampleIndex, int level) {
+#ifdef TERRAIN_CLIPMAP
+    // >> on a negative int keeps the sign (floor division), & the power-of-two modulo of two's complement
+    return texelFetch(heights, ivec3(((sampleIndex + worldOrigin) >> level) & (clipSize - 1), level), 0).r;
+#else
     int n = mapSize >> level;
     ivec2 texel = sampleIndex >> level;
     texel = periodic == 1 ? (texel & (n - 1)) : clamp(texel, ivec2(0), ivec2(n - 1));
     return texelFetch(heights, texel, level).r;
+#endif
 }
 
 // Geomorphing (QuadtreeLod explains it): k = 0 at the range's start, 1 at its end; a range with start = end steps.
@@ -101,6 +114,10 @@ float coarserHeight(ivec2 sampleIndex, int level) {
 }
 
 void main() {
+#ifdef TERRAIN_CLIPMAP
+    // roots lie on a lattice of their own side, so their offset in samples is an integer exactly
+    worldOrigin = ivec2(round(copyOffset / spacing)) - ivec2(mapSize / 2);
+#endif
     ivec2 g = ivec2(gridPos);
     ivec2 sampleIndex = patchInfo.xy + g * patchInfo.z;
     vec2 xz = (vec2(sampleIndex) - 0.5 * float(mapSize)) * spacing + copyOffset;

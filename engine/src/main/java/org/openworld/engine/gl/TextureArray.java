@@ -3,6 +3,7 @@ package org.openworld.engine.gl;
 import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.ByteBuffer;
+import java.nio.FloatBuffer;
 import java.util.List;
 import java.util.Locale;
 import org.lwjgl.opengl.GL;
@@ -13,7 +14,7 @@ import org.lwjgl.system.MemoryUtil;
  * A 2D texture array ({@code GL_TEXTURE_2D_ARRAY}): equal-sized layers sampled in GLSL as
  * {@code texture(sampler2DArray, vec3(uv, layer))}, so one texture unit holds a whole family of images, e.g. the
  * terrain materials. Made with {@link #repeatingMipmapped}: uploaded once, mipmapped by {@code glGenerateMipmap},
- * sampled {@link Sampling#TRILINEAR_REPEAT}.
+ * sampled {@link Sampling#TRILINEAR_REPEAT}; or {@link #empty} and filled piece by piece.
  */
 public final class TextureArray extends GlTexture {
 
@@ -26,8 +27,30 @@ public final class TextureArray extends GlTexture {
     private static final int GL_TEXTURE_MAX_ANISOTROPY = 0x84FE;
     private static final int GL_MAX_TEXTURE_MAX_ANISOTROPY = 0x84FF;
 
-    private TextureArray(GlContext gl, int width, int height, int layers, Format format) {
-        super(gl, GL_TEXTURE_2D_ARRAY, width, height, layers, format, Sampling.TRILINEAR_REPEAT);
+    private TextureArray(GlContext gl, int width, int height, int layers, Format format, Sampling sampling) {
+        super(gl, GL_TEXTURE_2D_ARRAY, width, height, layers, format, sampling);
+    }
+
+    /**
+     * Storage for equal layers without data or mips, filled a rectangle at a time with {@link #upload}: e.g. the
+     * levels of a clipmap, streamed piece by piece.
+     */
+    public static TextureArray empty(GlContext gl, int width, int height, int layers, Format format,
+                                     Sampling sampling) {
+        TextureArray t = new TextureArray(gl, width, height, layers, format, sampling);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, format.internalFormat(), width, height, layers, 0, format.format(),
+                format.type(), (ByteBuffer) null);
+        t.setLevels(1);
+        return t;
+    }
+
+    /** Writes a rectangle of one layer; {@code data} holds its rows in this texture's format and type (floats). */
+    public void upload(int layer, int x, int y, int width, int height, FloatBuffer data) {
+        bindForUpdate();
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, x, y, layer, width, height, 1, format().format(), format().type(),
+                data);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     }
 
     /**
@@ -42,7 +65,7 @@ public final class TextureArray extends GlTexture {
         if (texels.isEmpty()) {
             throw new IllegalArgumentException("texture array needs a layer, got none");
         }
-        TextureArray t = new TextureArray(gl, width, height, texels.size(), format);
+        TextureArray t = new TextureArray(gl, width, height, texels.size(), format, Sampling.TRILINEAR_REPEAT);
         int layerBytes = 4 * width * height;
         ByteBuffer all = MemoryUtil.memAlloc(layerBytes * texels.size());
         try {

@@ -52,10 +52,16 @@ public final class BandedHeights implements HeightField {
     /** Below this many samples per side a window's rows are filled on the calling thread. */
     private static final int PARALLEL_MIN_SIZE = 128;
 
+    /** Random places at which {@link #levelErrors} measures each level's error. */
+    static final int ERROR_SAMPLES = 20_000;
+    /** The measured largest error is raised by this margin: the world's largest lies beyond any finite sample. */
+    static final double ERROR_MARGIN = 1.25;
+
     private final OctaveBand[] bands;
     private final double spacing;
     private final double metresPerUnit;
     private final double base;
+    private final double reach;
 
     /** The world of these settings (spacing, relief, sea fraction, β, cut-offs) and seed; terrain.size is unused. */
     public BandedHeights(TerrainSettings s, int seed) {
@@ -73,6 +79,66 @@ public final class BandedHeights implements HeightField {
         }
         metresPerUnit = s.relief() / (RELIEF_SIGMAS * Math.sqrt(variance));
         base = s.relief() * (0.5 - s.seaFraction());
+        double r = 0;
+        for (OctaveBand band : bands) {
+            r += band == null ? 0 : metresPerUnit * band.bound();
+        }
+        reach = r;
+    }
+
+    /** No height of any level lies below this, metres: the mean less every band's largest magnitude. */
+    public double lowest() {
+        return base - reach;
+    }
+
+    /** No height of any level lies above this, metres. */
+    public double highest() {
+        return base + reach;
+    }
+
+    /**
+     * How far the surface drawn from each level's samples lies from the finest heights, metres, for levels
+     * 0 .. count − 1 (0 for level 0): the triangles of a patch of level L (cells cut along their (−,−) to (+,+)
+     * diagonal, as {@link PatchPatterns} cuts them) against level 0, the largest difference at
+     * {@value #ERROR_SAMPLES} random places (the same places for every seed), raised by {@value #ERROR_MARGIN}.
+     * The world is statistically the same everywhere, so one figure per level stands for every node of that level;
+     * it is an estimate, not a bound: somewhere in an unbounded world a larger error exists. Levels beyond the
+     * bands have the coarsest band's error plus nothing finer: they are drawn only as the coarsest band.
+     */
+    public float[] levelErrors(int count) {
+        float[] errors = new float[count];
+        SplittableRandom random = new SplittableRandom(STREAM);
+        double[] xs = new double[ERROR_SAMPLES];
+        double[] zs = new double[ERROR_SAMPLES];
+        double span = Math.scalb(spacing, bands.length) * OctaveBand.TILE;
+        for (int i = 0; i < ERROR_SAMPLES; i++) {
+            xs[i] = (random.nextDouble() - 0.5) * span;
+            zs[i] = (random.nextDouble() - 0.5) * span;
+        }
+        IntStream.range(1, count).parallel().forEach(level -> {
+            int l = Math.min(level, bands.length - 1);
+            double d = spacing(l);
+            double worst = 0;
+            for (int i = 0; i < ERROR_SAMPLES; i++) {
+                double fx = Math.floor(xs[i] / d);
+                double fz = Math.floor(zs[i] / d);
+                double tx = xs[i] / d - fx;
+                double tz = zs[i] / d - fz;
+                double h00 = height(l, fx * d, fz * d);
+                double h11 = height(l, (fx + 1) * d, (fz + 1) * d);
+                double drawn;
+                if (tx >= tz) { // the triangle (0,0) (1,0) (1,1)
+                    double h10 = height(l, (fx + 1) * d, fz * d);
+                    drawn = h00 + tx * (h10 - h00) + tz * (h11 - h10);
+                } else {        // the triangle (0,0) (0,1) (1,1)
+                    double h01 = height(l, fx * d, (fz + 1) * d);
+                    drawn = h00 + tz * (h01 - h00) + tx * (h11 - h01);
+                }
+                worst = Math.max(worst, Math.abs(height(0, xs[i], zs[i]) - drawn));
+            }
+            errors[level] = (float) (ERROR_MARGIN * worst);
+        });
+        return errors;
     }
 
     /** The number of bands, and of levels with a band of their own: level L holds bands L .. levels() − 1. */

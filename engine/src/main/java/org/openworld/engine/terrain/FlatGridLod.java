@@ -43,7 +43,7 @@ final class FlatGridLod implements LodScheme {
 
     @Override
     public void select(Vector3fc camera, float[] offsets, DetailLimit limit, Visibility visibility, PatchList out) {
-        lattice.update(offsets, tree.pyramid().base().extent());
+        lattice.update(offsets, tree.extent());
         this.camera = camera;
         this.limit = limit;
         this.visibility = visibility;

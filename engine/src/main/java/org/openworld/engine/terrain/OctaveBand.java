@@ -110,6 +110,18 @@ final class OctaveBand {
         return variance;
     }
 
+    /**
+     * No value of the band exceeds this in magnitude: the largest |coefficient|, since a value is a convex
+     * combination of sixteen coefficients (the cubic B-spline's weights are positive and sum to 1). Raw units.
+     */
+    double bound() {
+        double m = 0;
+        for (float c : coefficients) {
+            m = Math.max(m, Math.abs(c));
+        }
+        return m;
+    }
+
     /** The band at world position (x, z), metres; raw units (the world scales them to metres). */
     double value(double x, double z) {
         double u = (cos * x + sin * z) / spacing + offsetX;

@@ -13,14 +13,28 @@ public final class PatchSelection {
 
     private final TerrainQuadtree tree;
     private final QuadtreeLod quadtree;
+    /** The paper's flat grid, over a tile made whole only: null for a streamed world. */
     private final FlatGridLod flatGrid;
     private LodScheme last;
     private int visible;
 
+    /** Patches over a tile whose heights are all on the GPU. */
     public PatchSelection(TerrainQuadtree tree) {
         this.tree = tree;
-        this.quadtree = new QuadtreeLod(tree);
+        this.quadtree = new QuadtreeLod(tree, Residency.ALL);
         this.flatGrid = new FlatGridLod(tree);
+        this.last = quadtree;
+    }
+
+    /**
+     * Patches over a streamed world, whose nodes are drawn only once {@code residency} has them. The paper's flat
+     * grid puts every leaf of every copy in its cut, a tile's worth of work for each root of the unbounded world and
+     * all at the finest streamed level: the quadtree stands in for it ({@link LodMode#FLAT_GRID} draws the quadtree).
+     */
+    PatchSelection(TerrainQuadtree tree, Residency residency) {
+        this.tree = tree;
+        this.quadtree = new QuadtreeLod(tree, residency);
+        this.flatGrid = null;
         this.last = quadtree;
     }
 
@@ -46,7 +60,7 @@ public final class PatchSelection {
         }
         last = switch (mode) {
             case QUADTREE -> quadtree;
-            case FLAT_GRID -> flatGrid;
+            case FLAT_GRID -> flatGrid != null ? flatGrid : quadtree;
         };
         last.select(camera, offsets, limit, visibility, out);
         visible = out.size();

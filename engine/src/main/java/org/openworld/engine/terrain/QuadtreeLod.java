@@ -9,7 +9,7 @@ import org.openworld.engine.culling.Visibility.Containment;
 
 /**
  * A {@link TerrainQuadtree} cut: starting at the root, a node is split while the {@link DetailLimit} finds it not
- * fine enough; the nodes not split form the cut, a partition of the tile into patches whose size grows with
+ * fine enough and its children's heights are {@linkplain Residency resident}; the nodes not split form the cut, a partition of the tile into patches whose size grows with
  * distance. With the paper's rule (L_B(D) = ⌊log2(D / B)⌋, {@link LodRule#level}) a node of level L is split while
  * D < B · 2^L, and over a world of side S the cut holds a constant number of patches per distance octave, so it grows
  * like log S: equation 1 with R(D) ∝ 1/D². With the screen-error rule a node is split while its geometric error
@@ -69,6 +69,7 @@ final class QuadtreeLod implements LodScheme {
     private static final Corner[] CORNERS = Corner.values();
 
     private final TerrainQuadtree tree;
+    private final Residency residency;
     private final BoundsTree bounds;
     private final int nodeCount;
     private final CopyLattice lattice = new CopyLattice();
@@ -98,16 +99,17 @@ final class QuadtreeLod implements LodScheme {
     private int visited;
     private int forcedSplits;
 
-    QuadtreeLod(TerrainQuadtree tree) {
+    /** @param residency which nodes may be split into: only those whose children are all drawable */
+    QuadtreeLod(TerrainQuadtree tree, Residency residency) {
         this.tree = tree;
+        this.residency = residency;
         this.bounds = tree.bounds();
         this.nodeCount = tree.nodeCount();
     }
 
     @Override
     public void select(Vector3fc camera, float[] offsets, DetailLimit limit, Visibility visibility, PatchList out) {
-        HeightMap base = tree.pyramid().base();
-        lattice.update(offsets, base.extent());
+        lattice.update(offsets, tree.extent());
         int copies = lattice.copies();
         if (stamp.length < copies * nodeCount) {
             stamp = new int[copies * nodeCount];
@@ -178,7 +180,8 @@ final class QuadtreeLod implements LodScheme {
     private void descend(int copy, int node, Containment containment) {
         visited++;
         int level = tree.level(node);
-        if (level > 0 && !limit.fineEnough(level, tree.error(node), boxDistance(copy, node))) {
+        if (level > 0 && !limit.fineEnough(level, tree.error(node), boxDistance(copy, node))
+                && childrenDrawable(copy, node)) {
             int first = bounds.firstChild(node);
             for (int child = first; child < first + 4; child++) {
                 descend(copy, child, containment == null ? null : visibility.of(copy, child, containment));
@@ -186,6 +189,16 @@ final class QuadtreeLod implements LodScheme {
         } else {
             addToCut(copy, node, containment);
         }
+    }
+
+    private boolean childrenDrawable(int copy, int node) {
+        int first = bounds.firstChild(node);
+        for (int child = first; child < first + 4; child++) {
+            if (!residency.drawable(child, lattice.offsetX(copy), lattice.offsetZ(copy))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Distance from the camera to the nearest point of the node's box in a copy, metres. */

@@ -32,14 +32,21 @@ public final class SnowLines {
 
     /** The snow line of the chosen rule over this height map. */
     public static SnowLine of(HeightMap map, TerrainSettings terrain, SnowMode mode) {
+        return of(map.min(), map.max(), mode, terrain);
+    }
+
+    /** The snow line of the chosen rule over heights normalised from {@code lowest} (0) to {@code highest} (1). */
+    static SnowLine of(double lowest, double highest, SnowMode mode, TerrainSettings terrain) {
         return switch (mode) {
-            case SNOW_MAP -> new SnowLine(metres(map, terrain.snowBase()), metres(map, terrain.snowFull()));
-            case ALTITUDE_BANDS -> new SnowLine(metres(map, BAND_LINE - BAND_EDGE), metres(map, BAND_LINE + BAND_EDGE));
+            case SNOW_MAP -> new SnowLine(metres(lowest, highest, terrain.snowBase()),
+                    metres(lowest, highest, terrain.snowFull()));
+            case ALTITUDE_BANDS -> new SnowLine(metres(lowest, highest, BAND_LINE - BAND_EDGE),
+                    metres(lowest, highest, BAND_LINE + BAND_EDGE));
         };
     }
 
-    /** A normalised height (0 the map's lowest sample, 1 its highest) in metres. */
-    static double metres(HeightMap map, double normalised) {
-        return map.min() + normalised * ((double) map.max() - map.min());
+    /** A normalised height (0 at {@code lowest}, 1 at {@code highest}) in metres. */
+    static double metres(double lowest, double highest, double normalised) {
+        return lowest + normalised * (highest - lowest);
     }
 }

@@ -22,42 +22,112 @@ import org.openworld.engine.core.BoundsTree;
  */
 public final class TerrainQuadtree {
 
-    private final HeightPyramid pyramid;
+    private final int size;
+    private final double spacing;
     private final int cells;
     private final int cellsLog2;
     private final int rootLevel;
     private final int[] level;
     private final int[] sampleX;
     private final int[] sampleZ;
+    private final int[] firstChild;
     private final BoundsTree bounds;
     /** Per level 0 .. max(root level, log2 N), per leaf (row-major): the leaf's error at that level, metres. */
     private final float[][] leafError;
     private final float[] error;
 
     /**
+     * The quadtree over a tile of heights: boxes and errors measured on the pyramid, node by node.
+     *
      * @param pyramid the heights; needs levels 0 .. max(root level, log2 N), the coarsest levels any patch samples
      * @param cells   N, the cells per patch side: a power of two, at most the map size
      */
     public TerrainQuadtree(HeightPyramid pyramid, int cells) {
-        int size = pyramid.base().size();
-        if (cells < 2 || Integer.bitCount(cells) != 1 || cells > size) {
-            throw new IllegalArgumentException("cells per patch side must be a power of two in 2.." + size
-                    + ", got " + cells);
-        }
-        this.pyramid = pyramid;
-        this.cells = cells;
-        this.cellsLog2 = Integer.numberOfTrailingZeros(cells);
-        this.rootLevel = Integer.numberOfTrailingZeros(size / cells);
+        this(pyramid.base().size(), pyramid.base().spacing(), cells);
         int needed = Math.max(rootLevel, cellsLog2) + 1;
         if (pyramid.levelCount() < needed) {
             throw new IllegalArgumentException("a " + size + "² map with " + cells + "-cell patches needs "
                     + needed + " pyramid levels, got " + pyramid.levelCount());
         }
+        float[][] errors = GeometricError.ofLeaves(pyramid, cells, needed);
+        System.arraycopy(errors, 0, leafError, 0, needed);
+        float[] boxes = bounds.boxes();
+        float[] range = new float[2];
+        int coarsest = pyramid.levelCount() - 1;
+        // Deepest first, so a parent can take the union of its children's finished boxes.
+        for (int node = level.length - 1; node >= 0; node--) {
+            int lvl = level[node];
+            int span = cells << lvl;
+            range[0] = Float.POSITIVE_INFINITY;
+            range[1] = Float.NEGATIVE_INFINITY;
+            if (lvl == 0) {
+                for (int k = 0; k <= Math.min(cellsLog2, coarsest); k++) {
+                    widenByLevel(pyramid, range, k, sampleX[node], sampleZ[node], span);
+                }
+            } else {
+                for (int c = firstChild[node]; c < firstChild[node] + 4; c++) {
+                    range[0] = Math.min(range[0], boxes[6 * c + 1]);
+                    range[1] = Math.max(range[1], boxes[6 * c + 4]);
+                }
+                // The children cover levels lvl − 1 .. lvl − 1 + log2 N; the parent also draws lvl + log2 N.
+                if (lvl + cellsLog2 <= coarsest) {
+                    widenByLevel(pyramid, range, lvl + cellsLog2, sampleX[node], sampleZ[node], span);
+                }
+            }
+            boxes[6 * node + 1] = range[0];
+            boxes[6 * node + 4] = range[1];
+        }
+        measureNodeErrors();
+    }
+
+    /**
+     * The quadtree over one root of a statistically uniform world (the unbounded world's, {@link BandedHeights}),
+     * whose heights are not all known when it is made: every node of a level gets that level's error, every box the
+     * world's height bounds.
+     *
+     * @param size       level-0 samples per root side: N · 2^root level
+     * @param spacing    metres between level-0 samples
+     * @param cells      N, the cells per patch side
+     * @param levelError per level 0 .. max(root level, log2 N): how far that level's surface lies from the finest
+     *                   heights, metres (0 for level 0)
+     * @param lowest     no height of any level lies below this, metres
+     * @param highest    nor above this
+     */
+    static TerrainQuadtree uniform(int size, double spacing, int cells, float[] levelError, float lowest,
+                                   float highest) {
+        TerrainQuadtree tree = new TerrainQuadtree(size, spacing, cells);
+        if (levelError.length < tree.leafError.length) {
+            throw new IllegalArgumentException("errors for " + levelError.length + " levels, need "
+                    + tree.leafError.length);
+        }
+        for (int l = 0; l < tree.leafError.length; l++) {
+            java.util.Arrays.fill(tree.leafError[l], levelError[l]);
+        }
+        float[] boxes = tree.bounds.boxes();
+        for (int node = 0; node < tree.level.length; node++) {
+            boxes[6 * node + 1] = lowest;
+            boxes[6 * node + 4] = highest;
+        }
+        tree.measureNodeErrors();
+        return tree;
+    }
+
+    /** The nodes, their horizontal boxes and room for the leaves' errors; heights and errors are filled in after. */
+    private TerrainQuadtree(int size, double spacing, int cells) {
+        if (cells < 2 || Integer.bitCount(cells) != 1 || cells > size) {
+            throw new IllegalArgumentException("cells per patch side must be a power of two in 2.." + size
+                    + ", got " + cells);
+        }
+        this.size = size;
+        this.spacing = spacing;
+        this.cells = cells;
+        this.cellsLog2 = Integer.numberOfTrailingZeros(cells);
+        this.rootLevel = Integer.numberOfTrailingZeros(size / cells);
         int nodes = depthOffset(rootLevel + 1);
         this.level = new int[nodes];
         this.sampleX = new int[nodes];
         this.sampleZ = new int[nodes];
-        int[] firstChild = new int[nodes];
+        this.firstChild = new int[nodes];
         int[] childCount = new int[nodes];
         for (int depth = 0; depth <= rootLevel; depth++) {
             int lvl = rootLevel - depth;
@@ -73,11 +143,16 @@ public final class TerrainQuadtree {
                 }
             }
         }
-        this.bounds = new BoundsTree(boxes(firstChild), firstChild, childCount);
-        this.leafError = GeometricError.ofLeaves(pyramid, cells, needed);
+        this.bounds = new BoundsTree(horizontalBoxes(), firstChild, childCount);
+        int leaves = 1 << rootLevel;
+        this.leafError = new float[Math.max(rootLevel, cellsLog2) + 1][leaves * leaves];
         this.error = new float[nodes];
+    }
+
+    /** Each node's error: the worst of its leaves' errors at the node's level. */
+    private void measureNodeErrors() {
         int leaves = nodesPerSide(0);
-        for (int node = 0; node < nodes; node++) {
+        for (int node = 0; node < level.length; node++) {
             int span = 1 << level[node];
             int column = sampleX[node] / cells;
             int row = sampleZ[node] / cells;
@@ -91,8 +166,9 @@ public final class TerrainQuadtree {
         }
     }
 
-    public HeightPyramid pyramid() {
-        return pyramid;
+    /** Side of the tile (or root), metres. */
+    public double extent() {
+        return size * spacing;
     }
 
     /** N, the cells per patch side. */
@@ -131,9 +207,9 @@ public final class TerrainQuadtree {
         return leafError[level][row(leaf) * nodesPerSide(0) + column(leaf)];
     }
 
-    /** Height samples per tile side (the pyramid's level 0). */
+    /** Height samples per tile (or root) side at level 0. */
     public int size() {
-        return pyramid.base().size();
+        return size;
     }
 
     /** Level of a node: 0 for a leaf; the pyramid level its interior samples. */
@@ -206,38 +282,15 @@ public final class TerrainQuadtree {
         return (m | (m >>> 8)) & 0x0000FFFF;
     }
 
-    private float[] boxes(int[] firstChild) {
-        HeightMap base = pyramid.base();
-        double spacing = base.spacing();
-        double half = base.size() / 2.0;
-        int coarsest = pyramid.levelCount() - 1;
+    /** Every node's box with its x and z spans set (world metres, the tile centred on the origin), heights 0. */
+    private float[] horizontalBoxes() {
+        double half = size / 2.0;
         float[] boxes = new float[6 * level.length];
-        float[] range = new float[2];
-        // Deepest first, so a parent can take the union of its children's finished boxes.
-        for (int node = level.length - 1; node >= 0; node--) {
-            int lvl = level[node];
-            int span = cells << lvl;
-            range[0] = Float.POSITIVE_INFINITY;
-            range[1] = Float.NEGATIVE_INFINITY;
-            if (lvl == 0) {
-                for (int k = 0; k <= Math.min(cellsLog2, coarsest); k++) {
-                    widenByLevel(range, k, sampleX[node], sampleZ[node], span);
-                }
-            } else {
-                for (int c = firstChild[node]; c < firstChild[node] + 4; c++) {
-                    range[0] = Math.min(range[0], boxes[6 * c + 1]);
-                    range[1] = Math.max(range[1], boxes[6 * c + 4]);
-                }
-                // The children cover levels lvl − 1 .. lvl − 1 + log2 N; the parent also draws lvl + log2 N.
-                if (lvl + cellsLog2 <= coarsest) {
-                    widenByLevel(range, lvl + cellsLog2, sampleX[node], sampleZ[node], span);
-                }
-            }
+        for (int node = 0; node < level.length; node++) {
+            int span = cells << level[node];
             boxes[6 * node] = (float) ((sampleX[node] - half) * spacing);
-            boxes[6 * node + 1] = range[0];
             boxes[6 * node + 2] = (float) ((sampleZ[node] - half) * spacing);
             boxes[6 * node + 3] = (float) ((sampleX[node] + span - half) * spacing);
-            boxes[6 * node + 4] = range[1];
             boxes[6 * node + 5] = (float) ((sampleZ[node] + span - half) * spacing);
         }
         return boxes;
@@ -247,7 +300,7 @@ public final class TerrainQuadtree {
      * Widens {min, max} by the heights of pyramid level k over level-0 samples x0 .. x0 + span (and z likewise),
      * plus one level-k sample each side.
      */
-    private void widenByLevel(float[] range, int k, int x0, int z0, int span) {
+    private static void widenByLevel(HeightPyramid pyramid, float[] range, int k, int x0, int z0, int span) {
         HeightMap map = pyramid.level(k);
         for (int z = (z0 >> k) - 1; z <= ((z0 + span) >> k) + 1; z++) {
             for (int x = (x0 >> k) - 1; x <= ((x0 + span) >> k) + 1; x++) {

@@ -23,6 +23,10 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       from 0
  * @param snowFull       normalised height at which snow is certain; p(h) = clamp((h − base)/(full − base), 0, 1)
  * @param snowMorphology radius of the opening and the closing that clean up the random snow map, in snow map pixels
+ * @param world          {@link World#TILE}: one map, repeated if generated (the paper's); {@link World#UNBOUNDED}: the
+ *                       heights made per level ({@link BandedHeights}) and streamed around the camera, never repeating
+ * @param memoryBudget   the unbounded world's GPU memory for streamed heights and slopes, MiB: it sets how many
+ *                       samples each level keeps around the camera ({@link HeightClipmap})
  */
 public record TerrainSettings(
         @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192, atStart = true)
@@ -48,7 +52,19 @@ public record TerrainSettings(
         @Setting(doc = "normalised height where snow is certain (probability 1)", min = 0, max = 1, atStart = true)
         double snowFull,
         @Setting(doc = "radius of the snow map's opening and closing", unit = "px", min = 0, max = 8, atStart = true)
-        int snowMorphology) {
+        int snowMorphology,
+        @Setting(doc = "TILE: one map, repeated if generated; UNBOUNDED: made per level around the camera, never "
+                + "repeating", atStart = true) World world,
+        @Setting(doc = "unbounded world: GPU memory for the streamed heights and slopes", unit = "MiB", min = 2,
+                max = 4096, atStart = true) int memoryBudget) {
+
+    /** Where the heights come from and how far they reach. */
+    public enum World {
+        /** One map of {@code terrain.size}² samples (generated and repeated, or imported), made whole at start. */
+        TILE,
+        /** {@link BandedHeights}: every level made where the camera needs it, no map anywhere, never repeating. */
+        UNBOUNDED
+    }
 
     public static final TerrainSettings DEFAULTS = new TerrainSettings(
             2048,   // samples: 4 km at 2 m, fine enough to walk on, generated in about a second
@@ -61,7 +77,9 @@ public record TerrainSettings(
             "",     // generate
             0.35,   // snow may start at a third of the relief (seed 1's median ground is at 0.35)...
             0.60,   // ...and is certain on the top 40 %: snow on the upper slopes, as in the paper's figure 1b
-            1);     // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
+            1,      // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
+            World.TILE,
+            16);    // MiB: 512² heights and slopes on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);
@@ -88,8 +106,15 @@ public record TerrainSettings(
             throw new IllegalArgumentException("snow must start (" + snowBase
                     + ") below the height where it is certain (" + snowFull + ")");
         }
+        if (world == null) {
+            throw new IllegalArgumentException("the world must be TILE or UNBOUNDED, not null");
+        }
         if (importFile == null) {
             throw new IllegalArgumentException("the import file must be a path or empty, not null");
+        }
+        if (world == World.UNBOUNDED && !importFile.isBlank()) {
+            throw new IllegalArgumentException("an imported map (" + importFile + ") is one tile: it needs "
+                    + "terrain.world=TILE, not UNBOUNDED");
         }
     }
 

@@ -40,11 +40,11 @@ import org.openworld.engine.gl.Uniform;
  */
 final class TerrainShading {
 
-    /** A near program (one tiling, one kind of sunlight) with its material uniforms and its far band. */
+    /** A near program (one tiling, one kind of sunlight) with its material uniforms and its far band (null streamed). */
     private record Near(TerrainMaterials.Uniforms uniforms, Uniform.Vec2 farBand) {
     }
 
-    /** The near programs (one per tiling) and the far one for one kind of sunlight. */
+    /** The near programs (one per tiling) and the far one for one kind of sunlight (null when streamed). */
     private record Lit(Map<MaterialSettings.Tiling, Near> near, TerrainMaterials.Uniforms far) {
     }
 
@@ -60,6 +60,8 @@ final class TerrainShading {
     private final TerrainTextures tiles;
     private TerrainMaterials materials;
     private boolean quilted;
+    private final PatchLayout layout;
+    /** The baked far material over the tile; null for the streamed world, whose patches are all near. */
     private final FarMaterial farMaterial;
     private final int unitMaterials;
     private final int unitFar;
@@ -69,13 +71,19 @@ final class TerrainShading {
      * {@code quilting} stage) and the far material, handed to the system's owner, and bakes the far material with
      * the settings of the start.
      *
-     * @param unitHeights   the unit of the height pyramid; the gradients and the snow map take the next two, the
-     *                      materials the {@link TerrainMaterials#UNITS} after those, then the far material two
+     * <p>The streamed world ({@link PatchLayout#streamed()}) has no far material yet: its programs read the slopes
+     * of the clipmap on the gradients' unit, every patch runs a near program, and snow lies by altitude band (no
+     * snow map streams); its far-ground cost is the near program's.
+     *
+     * @param base          the tile's heights, for the far material's bake (which needs the maps bound to their
+     *                      units now); null for the streamed world
+     * @param unitHeights   the unit of the height pyramid (clipmap); the gradients (slopes) and the snow map take
+     *                      the next two, the materials the {@link TerrainMaterials#UNITS} after those, then the far
+     *                      material two
      */
-    TerrainShading(EngineContext context, TerrainMaps maps, HeightMap base, int cells, int seed, int unitHeights,
+    TerrainShading(EngineContext context, PatchLayout layout, HeightMap base, int seed, int unitHeights,
                    StageTimes times) {
         int unitGradients = unitHeights + 1;
-        int unitSnow = unitHeights + 2;
         unitMaterials = unitHeights + 3;
         unitFar = unitMaterials + TerrainMaterials.UNITS; // and the next: colour, slope
         gl = context.gl();
@@ -84,21 +92,26 @@ final class TerrainShading {
         this.times = times;
         tiles = TerrainTextures.generate(seed);
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
-        farMaterial = new FarMaterial(context, base, unitHeights);
+        this.layout = layout;
+        farMaterial = layout.streamed() ? null : new FarMaterial(context, base, unitHeights);
         MaterialSettings.Cliffs cliffs = context.settings().get(MaterialSettings.class).cliffs();
-        shadowed = lit(context, "", List.of(), cliffs, base, cells, unitHeights);
-        unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), cliffs, base, cells, unitHeights);
-        ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"), base,
-                cells, unitHeights);
-        farSamplers(levels, unitFar);
-        levelsUniforms = TerrainMaterials.lightUniforms(levels);
-        tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), base, cells,
-                unitHeights);
-        tangentSpace.sampler("gradients", unitGradients);
-        maps.heights.bind(unitHeights);
-        maps.gradients.bind(unitGradients);
-        maps.snow.bind(unitSnow);
-        farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
+        shadowed = lit(context, "", List.of(), cliffs, unitHeights);
+        unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), cliffs, unitHeights);
+        if (layout.streamed()) { // the near material, tinted
+            ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_LEVELS"), unitHeights);
+            nearSamplers(levels, unitHeights);
+            levelsUniforms = TerrainMaterials.unoccludedUniforms(levels);
+        } else {
+            ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"),
+                    unitHeights);
+            farSamplers(levels, unitFar);
+            levelsUniforms = TerrainMaterials.lightUniforms(levels);
+        }
+        tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), unitHeights);
+        tangentSpace.sampler(layout.streamed() ? "slopes" : "gradients", unitGradients);
+        if (farMaterial != null) { // the maps are bound to their units (the caller's part)
+            farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
+        }
     }
 
     /** The materials' textures for this tiling: the tiles, or the Wang tiles quilted from them now. */
@@ -112,22 +125,35 @@ final class TerrainShading {
      * ({@code program.far}), {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
      */
     private Lit lit(EngineContext context, String suffix, List<String> light, MaterialSettings.Cliffs cliffs,
-                    HeightMap base, int cells, int unitHeights) {
+                    int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
-                    with(with(light, tiling.defines()), cliffs.defines()), base, cells, unitHeights);
-            p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
-            p.sampler("snowMap", unitHeights + 2);
-            p.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
-            farSamplers(p, unitFar);
-            near.put(tiling, new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
+                    with(with(light, tiling.defines()), cliffs.defines()), unitHeights);
+            nearSamplers(p, unitHeights);
+            near.put(tiling, layout.streamed() ? new Near(TerrainMaterials.unoccludedUniforms(p), null)
+                    : new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
         }
-        ShaderProgram far = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")), base,
-                cells, unitHeights);
+        if (layout.streamed()) {
+            return new Lit(near, null);
+        }
+        ShaderProgram far = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")),
+                unitHeights);
         farSamplers(far, unitFar);
         far.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
         return new Lit(near, TerrainMaterials.lightUniforms(far));
+    }
+
+    /** A near program's maps: the slopes, or the gradients, the snow map and the far material it fades into. */
+    private void nearSamplers(ShaderProgram p, int unitHeights) {
+        p.vec2("heightRange").set(layout.lowest(), 1f / Math.max(1e-3f, layout.highest() - layout.lowest()));
+        if (layout.streamed()) {
+            p.sampler("slopes", unitHeights + 1);
+            return;
+        }
+        p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
+        p.sampler("snowMap", unitHeights + 2);
+        farSamplers(p, unitFar);
     }
 
     private static List<String> with(List<String> defines, List<String> more) {
@@ -141,14 +167,12 @@ final class TerrainShading {
         p.sampler("farSlope", unitFar + 1);
     }
 
-    /** A terrain program with the patch uniforms and the tile's extent set. */
-    private static ShaderProgram variant(EngineContext context, String role, List<String> defines, HeightMap base,
-                                         int cells, int unitHeights) {
-        ShaderProgram p = context.own(role,
-                context.shaders().program(defines, "terrain/terrain.vert", "terrain/terrain.frag"));
-        TerrainSystem.setPatchUniforms(p, base, cells, unitHeights);
-        p.use();
-        p.float1("extent").set((float) base.extent());
+    /** A terrain program with the patch uniforms and the maps' extent set. */
+    private ShaderProgram variant(EngineContext context, String role, List<String> defines, int unitHeights) {
+        ShaderProgram p = context.own(role, context.shaders().program(with(defines, layout.defines()),
+                "terrain/terrain.vert", "terrain/terrain.frag"));
+        layout.apply(p, unitHeights);
+        p.float1(layout.streamed() ? "clipExtent" : "extent").set((float) layout.extent());
         return p;
     }
 
@@ -164,16 +188,24 @@ final class TerrainShading {
         if ((settings.tiling() == MaterialSettings.Tiling.QUILTED) != quilted) {
             materials = owned.replace("materials", materials, upload(settings.tiling()));
         }
-        farMaterial.refresh(materials, settings, unitMaterials);
-        farMaterial.bind(unitFar);
         int all = order.size();
+        if (farMaterial == null) { // no snow map streams: snow by altitude band
+            settings = settings.withSnowMode(MaterialSettings.SnowMode.ALTITUDE_BANDS);
+        } else {
+            farMaterial.refresh(materials, settings, unitMaterials);
+            farMaterial.bind(unitFar);
+        }
         switch (colouring) {
             case SHADED -> {
-                double farDistance = settings.farTexels() * farMaterial.texelMetres();
-                int nearCount = order.nearerThan(farDistance);
                 Lit lit = sunShadowed ? shadowed : unshadowed;
                 Near near = lit.near().get(settings.tiling());
                 materials.bind(near.uniforms(), settings, unitMaterials);
+                if (farMaterial == null) {
+                    renderer.draw(patches, order.order(), 0, all, copyOffsets, stats);
+                    return;
+                }
+                double farDistance = settings.farTexels() * farMaterial.texelMetres();
+                int nearCount = order.nearerThan(farDistance);
                 near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
                 materials.bind(lit.far(), settings, unitMaterials);

@@ -8,6 +8,7 @@ import org.joml.Vector3f;
 import org.joml.Vector3fc;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
@@ -54,12 +55,17 @@ public final class TerrainSystem implements EngineSystem {
     private static final int UNIT_SNOW = 2;
 
     private final Consumer<String> progress;
+    /** The tile's heights, pyramid, snow map and sky view; null for the unbounded world. */
     private TerrainData data;
+    /** The unbounded world, streamed around the camera; null for a tile. */
+    private UnboundedWorld unbounded;
+    private PatchLayout layout;
     private TerrainQuadtree tree;
     private PatchSelection selection;
     private final PatchList patches = new PatchList();
     private PatchPatterns patterns;
     private final PatchOrder order = new PatchOrder();
+    /** The tile's maps on the GPU; null for the unbounded world, whose clipmap holds its own. */
     private TerrainMaps maps;
     private TerrainShading shading;
     private PatchRenderer renderer;
@@ -98,58 +104,88 @@ public final class TerrainSystem implements EngineSystem {
     public void init(EngineContext context) {
         Settings settings = context.settings();
         int seed = settings.get(EngineSettings.class).seed();
-        // 1. the data: heights, pyramid and snow map, off the GPU
         TerrainSettings terrain = settings.get(TerrainSettings.class);
-        progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
-                : "generating " + terrain.size() + "² samples, seed " + seed));
         StageTimes times = new StageTimes(stage -> progress.accept(
                 String.format(java.util.Locale.ROOT, "terrain: %-10s %7.0f ms", stage.name(), stage.ms())));
-        data = TerrainData.create(terrain, seed, times);
-        HeightMap base = data.pyramid().base();
-        context.world().setResource(HeightField.class, base::heightAt);
-        publishSnowLine(context.world(), settings);
-        // 2. the quadtree, its boxes (handed to the culling system) and its nodes' errors
         int cells = settings.get(LodSettings.class).patchVertices() - 1;
-        tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
-        selection = new PatchSelection(tree);
         patterns = new PatchPatterns(cells);
+        renderer = context.own(new PatchRenderer(context, patterns));
+        if (terrain.world() == TerrainSettings.World.UNBOUNDED) {
+            initUnbounded(context, terrain, seed, cells, times);
+        } else {
+            initTile(context, terrain, seed, cells, times);
+        }
         entity = context.world().spawn();
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
-        // 3. the GPU side: maps, the shared patch geometry, the programs and materials
+        depthProgram = context.own("depth", context.shaders().program(layout.defines(), "terrain/terrain.vert",
+                "terrain/depth.frag"));
+        layout.apply(depthProgram, UNIT_HEIGHTS);
+        publishSnowLine(context.world(), settings);
+    }
+
+    /** The tile: its data off the GPU, its quadtree, its maps, then the programs and materials (which bake on them). */
+    private void initTile(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
+        progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
+                : "generating " + terrain.size() + "² samples, seed " + seed));
+        data = TerrainData.create(terrain, seed, times);
+        HeightMap base = data.pyramid().base();
+        context.world().setResource(HeightField.class, base::heightAt);
+        tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
+        selection = new PatchSelection(tree);
+        layout = PatchLayout.tile(base, cells);
         maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
-        renderer = context.own(new PatchRenderer(context, patterns));
-        depthProgram = context.own("depth", context.shaders().program("terrain/terrain.vert", "terrain/depth.frag"));
-        setPatchUniforms(depthProgram, base, cells, UNIT_HEIGHTS);
-        shading = new TerrainShading(context, maps, base, cells, seed, UNIT_HEIGHTS, times);
+        bindMaps();
+        shading = new TerrainShading(context, layout, base, seed, UNIT_HEIGHTS, times);
     }
 
-    /** The vertex stage's uniforms: where the heights are and how the patch grid maps onto them. */
-    static void setPatchUniforms(ShaderProgram p, HeightMap base, int cells, int unitHeights) {
-        p.use();
-        p.sampler("heights", unitHeights);
-        p.int1("mapSize").set(base.size());
-        p.float1("spacing").set((float) base.spacing());
-        p.int1("cells").set(cells);
-        p.int1("periodic").set(base.periodic() ? 1 : 0);
+    /** The unbounded world: bands, streamed around where the camera starts, and the programs that read them. */
+    private void initUnbounded(EngineContext context, TerrainSettings terrain, int seed, int cells,
+                               StageTimes times) {
+        progress.accept("terrain: the unbounded world, seed " + seed);
+        unbounded = context.own(new UnboundedWorld(context, terrain, seed, cells, times, progress));
+        context.world().setResource(HeightField.class, unbounded.heights());
+        tree = unbounded.tree();
+        selection = new PatchSelection(tree, unbounded::drawable);
+        layout = PatchLayout.clipmap(tree, unbounded.clipSize(), terrain);
+        shading = new TerrainShading(context, layout, null, seed, UNIT_HEIGHTS, times);
     }
 
-    /** The snow line in metres of the snow rule in use: the snow map's, or the altitude bands'. */
+    /** Binds the heights, then the gradients (slopes) and the snow map, to their units. */
+    private void bindMaps() {
+        if (unbounded != null) {
+            unbounded.heightTexture.bind(UNIT_HEIGHTS);
+            unbounded.slopeTexture.bind(UNIT_GRADIENTS);
+        } else {
+            maps.heights.bind(UNIT_HEIGHTS);
+            maps.gradients.bind(UNIT_GRADIENTS);
+            maps.snow.bind(UNIT_SNOW);
+        }
+    }
+
+    /**
+     * The snow line in metres of the snow rule in use: the snow map's, or the altitude bands' (the unbounded
+     * world's only rule, over its normalised range).
+     */
     private void publishSnowLine(World world, Settings settings) {
-        world.setResource(SnowLines.of(data.pyramid().base(), settings.get(TerrainSettings.class),
-                settings.get(MaterialSettings.class).snowMode()));
+        TerrainSettings terrain = settings.get(TerrainSettings.class);
+        MaterialSettings.SnowMode mode = settings.get(MaterialSettings.class).snowMode();
+        world.setResource(unbounded == null ? SnowLines.of(data.pyramid().base(), terrain, mode)
+                : SnowLines.of(layout.lowest(), layout.highest(), MaterialSettings.SnowMode.ALTITUDE_BANDS, terrain));
     }
 
     @Override
     public void update(World world, double step) {
         publishSnowLine(world, world.resource(Settings.class));
-        HeightMap base = data.pyramid().base();
-        if (!base.periodic()) {
+        CameraPose pose = world.resource(Camera.class).pose();
+        if (unbounded != null) {
+            unbounded.follow(pose, step);
+        } else if (!data.pyramid().base().periodic()) {
             return;
         }
-        // Copies of the periodic tile on a square around the tile under the camera: a world without an edge.
-        double extent = base.extent();
-        var pose = world.resource(Camera.class).pose();
+        // Copies of the periodic tile (roots of the unbounded world) on a square around the one under the camera:
+        // a world without an edge.
+        double extent = tree.extent();
         long cx = Math.round(pose.x() / extent);
         long cz = Math.round(pose.z() / extent);
         if (cx == copyCentreX && cz == copyCentreZ) {
@@ -157,7 +193,8 @@ public final class TerrainSystem implements EngineSystem {
         }
         copyCentreX = cx;
         copyCentreZ = cz;
-        int radius = (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
+        int radius = unbounded != null ? unbounded.rootRadius()
+                : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
         int side = 2 * radius + 1;
         copyOffsets = new float[2 * side * side];
         int c = 0;
@@ -211,7 +248,7 @@ public final class TerrainSystem implements EngineSystem {
         order.sort(patches, tree.bounds(), copyOffsets, eye);
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
         // materials near and far and the view options
-        maps.heights.bind(UNIT_HEIGHTS);
+        bindMaps();
         long triangles = context.stats().triangles();
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
@@ -220,8 +257,6 @@ public final class TerrainSystem implements EngineSystem {
             depthProgram.use();
             renderer.draw(patches, order.order(), 0, order.size(), copyOffsets, context.stats());
         } else {
-            maps.gradients.bind(UNIT_GRADIENTS);
-            maps.snow.bind(UNIT_SNOW);
             if (debug.wireframe()) {
                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             }
@@ -238,7 +273,10 @@ public final class TerrainSystem implements EngineSystem {
         return new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
     }
 
-    /** The generated or imported data, once initialised (tests and tools read the heights the terrain draws). */
+    /**
+     * The generated or imported tile, once initialised (tests and tools read the heights the terrain draws); null
+     * for the unbounded world, which has no map.
+     */
     public TerrainData data() {
         return data;
     }

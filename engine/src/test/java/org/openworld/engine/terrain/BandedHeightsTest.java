@@ -215,6 +215,60 @@ class BandedHeightsTest {
                 + " m east: " + correlation);
     }
 
+    /** Every height of every level, anywhere, lies within the world's bounds: each band within its largest term. */
+    @Test
+    void noHeightLiesOutsideTheBounds() {
+        SplittableRandom random = new SplittableRandom(12);
+        double low = Double.MAX_VALUE;
+        double high = -Double.MAX_VALUE;
+        for (int i = 0; i < 50_000; i++) {
+            double h = WORLD.height(random.nextInt(WORLD.levels()), random.nextDouble(-1e7, 1e7),
+                    random.nextDouble(-1e7, 1e7));
+            low = Math.min(low, h);
+            high = Math.max(high, h);
+        }
+        assertTrue(WORLD.lowest() <= low && high <= WORLD.highest(),
+                "heights " + low + " .. " + high + " within " + WORLD.lowest() + " .. " + WORLD.highest());
+        // and the bounds are not absurd: within a few reliefs of the heights seen
+        assertTrue(WORLD.highest() - WORLD.lowest() < 4 * DEFAULTS.relief(),
+                "bounds span " + (WORLD.highest() - WORLD.lowest()) + " m");
+    }
+
+    /**
+     * A level's error, measured at one set of random places, holds at another: the drawn triangles of level L lie
+     * within it of the finest heights at 5 000 fresh places (the margin covers the sample's luck), it grows with
+     * the level, and it is not a loose bound: the largest error seen is over half of it.
+     */
+    @Test
+    void levelErrorsHoldAtPlacesTheyWereNotMeasuredAt() {
+        float[] errors = WORLD.levelErrors(WORLD.levels());
+        assertEquals(0, errors[0]);
+        SplittableRandom random = new SplittableRandom(99);
+        for (int level = 1; level < errors.length; level++) {
+            assertTrue(errors[level] > errors[level - 1], "error grows from level " + (level - 1) + " to " + level);
+            double d = WORLD.spacing(level);
+            double worst = 0;
+            for (int i = 0; i < 5_000; i++) {
+                double x = random.nextDouble(-1e6, 1e6);
+                double z = random.nextDouble(-1e6, 1e6);
+                double fx = Math.floor(x / d);
+                double fz = Math.floor(z / d);
+                double tx = x / d - fx;
+                double tz = z / d - fz;
+                double h00 = WORLD.height(level, fx * d, fz * d);
+                double h10 = WORLD.height(level, (fx + 1) * d, fz * d);
+                double h01 = WORLD.height(level, fx * d, (fz + 1) * d);
+                double h11 = WORLD.height(level, (fx + 1) * d, (fz + 1) * d);
+                double drawn = tx >= tz ? h00 + tx * (h10 - h00) + tz * (h11 - h10)
+                        : h00 + tz * (h01 - h00) + tx * (h11 - h01);
+                worst = Math.max(worst, Math.abs(WORLD.heightAt(x, z) - drawn));
+            }
+            String seen = "level " + level + ": " + worst + " m seen, " + errors[level] + " m estimated";
+            assertTrue(worst <= errors[level], seen);
+            assertTrue(worst > 0.5 * errors[level], seen);
+        }
+    }
+
     private static double correlation(float[] a, float[] b) {
         double ma = 0;
         double mb = 0;

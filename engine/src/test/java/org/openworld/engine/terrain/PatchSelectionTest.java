@@ -131,6 +131,69 @@ class PatchSelectionTest {
     }
 
     /**
+     * A streamed world's node is split only when its children are resident: with the copy east of the centre
+     * holding nothing finer than level 3, its cut stops there (its parents drawn instead), every copy is still
+     * covered once, and the other copies are as fine as before.
+     */
+    @Test
+    void aNodeWhoseChildrenAreNotResidentIsDrawnWhole() {
+        World world = hills(256, 1, 8, true);
+        float eastX = (float) world.extent;
+        Residency coarseEast = (node, x, z) -> x != eastX || z != 0 || world.tree.level(node) >= 3;
+        PatchSelection streamed = new PatchSelection(world.tree, coarseEast);
+        PatchSelection whole = new PatchSelection(world.tree);
+        PatchList patches = new PatchList();
+        PatchList all = new PatchList();
+        Vector3f camera = new Vector3f((float) (world.extent / 2 - 1), 5, 0); // at the east copy's edge
+        DetailLimit limit = DetailLimit.paper(1);
+        streamed.select(camera, world.offsets, limit, LodMode.QUADTREE, null, patches);
+        whole.select(camera, world.offsets, limit, LodMode.QUADTREE, null, all);
+        owners(world, patches);
+        int finestEast = Integer.MAX_VALUE;
+        int finestElsewhere = Integer.MAX_VALUE;
+        for (int i = 0; i < patches.size(); i++) {
+            int copy = patches.copy(i);
+            boolean east = world.offsets[2 * copy] == eastX && world.offsets[2 * copy + 1] == 0;
+            if (east) {
+                finestEast = Math.min(finestEast, patches.level(i));
+            } else {
+                finestElsewhere = Math.min(finestElsewhere, patches.level(i));
+            }
+        }
+        int finestWhole = Integer.MAX_VALUE;
+        for (int i = 0; i < all.size(); i++) {
+            finestWhole = Math.min(finestWhole, all.level(i));
+        }
+        assertEquals(0, finestWhole, "with everything resident the camera's corner is at level 0");
+        assertEquals(3, finestEast, "the east copy is cut at its finest resident level");
+        assertEquals(0, finestElsewhere, "the centre copy, beside the camera, still reaches level 0");
+    }
+
+    /**
+     * The quadtree of a statistically uniform world: every node of a level has the level's error, every box the
+     * world's height bounds, and the boxes tile the root as the pyramid's do.
+     */
+    @Test
+    void aUniformWorldsNodesCarryTheirLevelsError() {
+        float[] errors = {0, 0.5f, 1.5f, 4, 9, 20};
+        TerrainQuadtree tree = TerrainQuadtree.uniform(256, 2, 8, errors, -100, 700);
+        TerrainQuadtree tile = new TerrainQuadtree(TestPyramids.hills(256, 2), 8);
+        assertEquals(tile.nodeCount(), tree.nodeCount());
+        assertEquals(512, tree.extent(), 1e-9);
+        float[] boxes = tree.bounds().boxes();
+        float[] tileBoxes = tile.bounds().boxes();
+        for (int node = 0; node < tree.nodeCount(); node++) {
+            assertEquals(errors[tree.level(node)], tree.error(node), "error of node " + node);
+            assertEquals(-100, boxes[6 * node + 1]);
+            assertEquals(700, boxes[6 * node + 4]);
+            for (int k : new int[] {0, 2, 3, 5}) {
+                assertEquals(tileBoxes[6 * node + k], boxes[6 * node + k], "x/z bounds of node " + node);
+            }
+        }
+        assertEquals(errors[2], tree.leafError(5, 2));
+    }
+
+    /**
      * No side ever borders a patch more than log2 N levels coarser, whatever B, even when the paper's rule alone
      * would ask for it (a small B next to a camera standing in the hills): then coarse nodes are split.
      */

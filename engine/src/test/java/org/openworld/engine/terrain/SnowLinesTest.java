@@ -52,7 +52,7 @@ class SnowLinesTest {
     void metresFollowTheMapsOwnRangeWhereverItLies() {
         // a plateau from 1000 to 1400 m: its normalised 0.5 is 1200 m, whatever the settings' relief says
         HeightMap plateau = ramp(1000, 1400);
-        assertEquals(1200, SnowLines.metres(plateau, 0.5), 1e-3);
+        assertEquals(1200, SnowLines.metres(plateau.min(), plateau.max(), 0.5), 1e-3);
         SnowLine line = SnowLines.of(plateau, S, SnowMode.SNOW_MAP);
         assertEquals(1000 + 0.35 * 400, line.start(), 1e-3);
         assertEquals(1000 + 0.60 * 400, line.full(), 1e-3);
