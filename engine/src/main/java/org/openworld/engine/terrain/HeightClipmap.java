@@ -26,14 +26,15 @@ import org.openworld.engine.terrain.ClipmapLevel.Slot;
  * Level L's window covers samples {@code [c − size/2, c + size/2)} on each axis, c a multiple of {@code block} (so
  * the window is exactly {@code size/block} blocks a side; {@code size ≥ 4 · block}, see below). Per axis, the window
  * aims at a point ahead of the camera by its velocity, t = p + lead, p the camera and
- * {@code lead = clamp(v · }{@value #LOOKAHEAD_SECONDS}{@code  s / d_L, ±(size/4 − block))}, all in level-L samples:
- * the ground the camera reaches in the next seconds is made first, without letting the camera near the edge. With
- * hysteresis, c moves only when |t − c| ≥ {@code block}, and then to the multiple of {@code block} nearest t; a
- * camera hovering, or moving less than a block, therefore causes no work. Between moves |t − c| &lt; {@code block},
- * so |p − c| &lt; (size/4 − block) + block = size/4: the camera always lies more than size/4 samples inside the
- * window on every level. That needs the lead's bound size/4 − block to be at least 0, hence {@code size ≥ 4 · block};
- * with the defaults (512, 64) the lead reaches 64 samples (a block), and the window reaches 320 samples ahead of a
- * fast camera and 192 behind it.
+ * {@code lead = clamp(v · T / d_L, ±(size/4 − block))} with T = {@value #LOOKAHEAD_SECONDS} s, all in level-L
+ * samples: the ground the camera reaches in the next seconds is made first, without letting the camera near the
+ * edge. With hysteresis, c moves only when |t − c| ≥ {@code block}, and then to the multiple of {@code block}
+ * nearest t; a camera hovering, or moving less than a block, therefore causes no work. Between moves
+ * |t − c| &lt; {@code block}, so |p − c| &lt; (size/4 − block) + block = size/4: the camera always lies more than
+ * size/4 samples inside the window on every level. That needs the lead's bound size/4 − block to be at least 0,
+ * hence {@code size ≥ 4 · block}; with the defaults (512, 64) the lead reaches 64 samples (a block), so the
+ * centre lies 0 to 2 blocks ahead of a fast camera: 256 to 384 samples of the window ahead of it, 128 to 256
+ * behind.
  *
  * <h2>Which blocks are made</h2>
  * When a window moves, each slot's wanted block is recomputed; a slot whose wanted block is unchanged keeps its
@@ -68,10 +69,13 @@ import org.openworld.engine.terrain.ClipmapLevel.Slot;
  *
  * <h2>Cost</h2>
  * Texture: {@code levels · size² · 4} bytes ({@link #textureBytes()}, 8 MiB for 8 levels of 512²). A block:
- * {@code block²} heights of one 16-sample B-spline per band at or above its level, about 2 ms for 64² of level 0
- * (9 bands) on one core. Flying at speed v along an axis, level L uncovers a column of {@code size/block} blocks
- * every {@code block · d_L} metres; summed over levels that is under {@code 2 · v · (size/block) / (block · d_0)}
- * blocks per second: 37 a second at 300 m/s with the defaults (2 m, 512, 64).
+ * {@code block²} heights of one 16-sample B-spline per band at or above its level: measured on one core of a 2-core
+ * machine, 1.2 ms for 64² of level 0 (9 bands), 0.35 ms of level 7 (2 bands); the whole default clipmap (8 levels
+ * of 512², 512 blocks) filled in 0.42 s on 2 workers. Flying at speed v along an axis, level L uncovers a column of
+ * {@code size/block} blocks every {@code block · d_L} metres; summed over levels that is under
+ * {@code 2 · v · (size/block) / (block · d_0)} blocks per second: 37 a second at 300 m/s with the defaults (2 m,
+ * 512, 64), about 45 ms of one core per second of flight. In a 10 s flight at 300 m/s, draining 4 blocks a frame,
+ * level 0 within 128 m of the camera was resident in all 600 frames.
  *
  * <h2>Limits</h2>
  * Level L's window spans {@code size · d_L} metres (1 km for level 0 with the defaults, 131 km for level 7); what

@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ThreadPoolExecutor;
@@ -154,6 +155,38 @@ class HeightClipmapTest {
             Texture texture = new Texture();
             drainAll(clipmap, texture);
             assertEquals(uncovered, texture.uploads.size(), "blocks made after the move");
+        }
+    }
+
+    /**
+     * A move while the first jobs wait on a held worker: they are for the blocks around the camera, which stay in
+     * the window, so they are kept, and every block is made exactly once (a move that restarted every slot's job
+     * would make them twice). The move uncovers level 0's east column, far from the camera and not yet started.
+     */
+    @Test
+    void aMoveKeepsTheJobsForBlocksThatStay() throws InterruptedException {
+        ThreadPoolExecutor one = (ThreadPoolExecutor) Executors.newFixedThreadPool(1);
+        CountDownLatch hold = new CountDownLatch(1);
+        try (HeightClipmap clipmap = new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, one)) {
+            one.execute(() -> {
+                try {
+                    hold.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+            clipmap.follow(ALIGNED, ALIGNED, 0, 0);
+            long before = clipmap.windowX(0);
+            clipmap.follow(ALIGNED + BLOCK * WORLD.spacing(0), ALIGNED, 0, 0);
+            assertEquals(before + BLOCK, clipmap.windowX(0), "level 0 moved a block");
+            hold.countDown();
+            Texture texture = new Texture();
+            drainAll(clipmap, texture);
+            assertEquals(LEVELS * BLOCKS, texture.uploads.size(), "blocks uploaded");
+            assertEquals(1 + LEVELS * BLOCKS, one.getTaskCount(), "jobs given to the worker, after the one holding it");
+        } finally {
+            one.shutdownNow();
+            assertTrue(one.awaitTermination(10, TimeUnit.SECONDS), "the worker stopped");
         }
     }
 
@@ -358,8 +391,9 @@ class HeightClipmapTest {
             Texture texture = new Texture();
             double jitter = 0.45 * BLOCK * WORLD.spacing(0);
             for (int frame = 0; frame < 300; frame++) {
-                clipmap.follow(ALIGNED + random.nextDouble(-jitter, jitter), ALIGNED + random.nextDouble(-jitter, jitter),
-                        random.nextDouble(-1, 1), random.nextDouble(-1, 1));
+                double x = ALIGNED + random.nextDouble(-jitter, jitter);
+                double z = ALIGNED + random.nextDouble(-jitter, jitter);
+                clipmap.follow(x, z, random.nextDouble(-1, 1), random.nextDouble(-1, 1));
                 assertEquals(0, clipmap.pendingBytes(), "frame " + frame + ": nothing in flight");
                 assertEquals(0, clipmap.drain(8, texture), "frame " + frame + ": nothing uploaded");
             }
@@ -431,7 +465,8 @@ class HeightClipmapTest {
             float[] expected = new float[SIZE * SIZE];
             for (int j = 0; j < SIZE; j++) {
                 for (int i = 0; i < SIZE; i++) {
-                    expected[(int) ((z0 + j) & (SIZE - 1)) * SIZE + (int) ((x0 + i) & (SIZE - 1))] = world[j * SIZE + i];
+                    int texel = (int) ((z0 + j) & (SIZE - 1)) * SIZE + (int) ((x0 + i) & (SIZE - 1));
+                    expected[texel] = world[j * SIZE + i];
                 }
             }
             assertArrayEquals(expected, texture.texels[level], "level " + level + "'s texels");
