@@ -38,8 +38,7 @@ public enum Format {
     DEPTH32F(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, 4),
     /**
      * 24-bit fixed-point depth, uploaded from floats: 2^24 equal steps over 0 .. 1, the paper's shadow-map depth
-     * ({@code shadow.depth=fixed24}). Counted as 4 bytes a texel, as drivers store it: 24 bits padded to a 32-bit
-     * word (no GPU addresses 3-byte texels).
+     * ({@code shadow.depth=fixed24}). Counted as 4 bytes a texel, as drivers store it: 24 bits in a 32-bit word.
      */
     DEPTH24(GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, 4);
 

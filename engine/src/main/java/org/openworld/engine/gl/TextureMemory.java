@@ -8,7 +8,7 @@ package org.openworld.engine.gl;
  *
  * <p>A texture's storage is {@link #bytes(Format, int, int, int, int) texels × bytes per texel}, summed over its mip
  * levels and its layers or cube faces. It is what the formats need, not what a driver allocates: drivers round rows
- * and levels up to their alignment, keep a compressed or tiled copy, and some pad three-channel texels to four
+ * and levels up to their alignment and tiling, and some pad three-channel texels to four
  * ({@link Format#bytesPerTexel()}), so the GPU's own figure is somewhat larger. Framebuffers count through their
  * texture attachments; the engine makes no renderbuffers. Cost: one addition per texture made or closed.
  */
