@@ -101,7 +101,7 @@ final class BenchCommand implements Callable<Integer> {
                     engine.width(), engine.height(), launch.gl.renderer());
             // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
             Poses.direct(engine.world(), CameraDirection.hold(cameraPath, cameraPath.startTime()));
-            MemoryMeter memory = new MemoryMeter(GpuMemoryInfo.of());
+            MemoryMeter memory = new MemoryMeter(GpuMemoryInfo.of(), launch.gl.textureMemory());
             int rendered = 0; // frames rendered: total, unless a signal stopped the run
             for (; rendered < total && !stop.requested(); rendered++) {
                 if (rendered == warmup) {

@@ -164,11 +164,15 @@ class CommandLineTest {
         assertTrue(summary.frameMs().median() > 0);
         assertTrue(summary.trianglesMedian() > 0);
         assertTrue(summary.passGpuMsMedian().containsKey("main.terrain"), summary.passGpuMsMedian().toString());
+        // the engine's own texture count, which every driver has: the terrain's maps at least, held to the end
+        var memory = summary.memory();
+        assertTrue(memory.textureEndMib() > 0 && memory.texturePeakMib() >= memory.textureEndMib(), memory.toString());
         assertEquals(13, Files.readAllLines(a.resolve("frames.csv")).size(), "header plus one line per frame");
 
         assertEquals(0, Main.execute("bench", "--compare", a.resolve("summary.json").toString(),
                 a.resolve("summary.json").toString()));
         assertTrue(console.stdout().contains("frame ms median"), console.stdout());
+        assertTrue(console.stdout().contains("texture peak MiB"), console.stdout());
     }
 
     @Test

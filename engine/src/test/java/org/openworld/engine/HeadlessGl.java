@@ -10,7 +10,7 @@ import org.openworld.engine.gl.GlContext;
 
 /**
  * One headless GL context for a test class, and a leak check after every test: each test must leave no live GL
- * object behind. Use as {@code @RegisterExtension static final HeadlessGl GL = new HeadlessGl();}.
+ * object behind, and no texture memory counted. Use as {@code @RegisterExtension static final HeadlessGl GL = new HeadlessGl();}.
  */
 public final class HeadlessGl implements BeforeAllCallback, AfterAllCallback, AfterEachCallback {
 
@@ -28,6 +28,7 @@ public final class HeadlessGl implements BeforeAllCallback, AfterAllCallback, Af
     @Override
     public void afterEach(ExtensionContext extension) {
         assertEquals(0, context.objects().live(), "live GL objects after the test: " + context.objects());
+        assertEquals(0, context.textureMemory().bytes(), "texture bytes counted after the test");
     }
 
     @Override

@@ -84,6 +84,7 @@ public final class BenchComparison {
         rows.add(both("draw calls median", Summary::drawCallsMedian));
         rows.add(memory("heap peak MiB", MemoryUse::heapPeakMib));
         rows.add(memory("RSS peak MiB", MemoryUse::rssPeakMib));
+        rows.add(memory("texture peak MiB", MemoryUse::texturePeakMib));
         rows.add(memory("GPU memory used peak MiB", MemoryUse::gpuUsedPeakMib));
         rows.add(memory("GPU memory free low MiB", MemoryUse::gpuFreeLowMib));
         return rows;

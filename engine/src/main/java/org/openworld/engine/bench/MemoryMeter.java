@@ -7,11 +7,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 import org.openworld.engine.gl.GpuMemoryInfo;
+import org.openworld.engine.gl.TextureMemory;
 
 /**
  * Measures a benchmark run's memory ({@link MemoryUse}): {@link #sample()} after each recorded frame reads the Java
- * heap in use and the GPU memory free, keeping the extremes; {@link #result()} adds the process's peak resident set
- * size, which Linux keeps itself ({@code VmHWM}).
+ * heap in use, the GPU memory free and the engine's own count of its texture memory ({@link TextureMemory}), keeping
+ * the extremes and the last texture figure; {@link #result()} adds the process's peak resident set size, which Linux
+ * keeps itself ({@code VmHWM}), and the texture count's peak, which the count keeps itself at every texture made.
  *
  * <p>The heap is sampled, not watched: its use between two samples (garbage made and collected within a frame) is
  * not seen, so the peak is the largest heap at a frame's end. With a collector that runs when the young generation
@@ -25,26 +27,39 @@ public final class MemoryMeter {
 
     private final MemoryMXBean heap = ManagementFactory.getMemoryMXBean();
     private final Optional<GpuMemoryInfo> gpu;
+    private final TextureMemory textures;
     private double heapPeakMib;
     private double gpuFreeLowMib = Double.POSITIVE_INFINITY;
+    private Double textureEndMib;
 
-    /** @param gpu the context's GPU memory reader, empty where the driver reports none */
-    public MemoryMeter(Optional<GpuMemoryInfo> gpu) {
+    /**
+     * @param gpu      the context's GPU memory reader, empty where the driver reports none
+     * @param textures the context's count of its texture memory
+     */
+    public MemoryMeter(Optional<GpuMemoryInfo> gpu, TextureMemory textures) {
         this.gpu = gpu;
+        this.textures = textures;
     }
 
-    /** Reads the heap in use and the GPU memory free now; call at the end of each recorded frame. */
+    /**
+     * Reads the heap in use, the GPU memory free and the texture memory held now; call at the end of each recorded
+     * frame.
+     */
     public void sample() {
         heapPeakMib = Math.max(heapPeakMib, heap.getHeapMemoryUsage().getUsed() / BYTES_PER_MIB);
         gpu.ifPresent(g -> gpuFreeLowMib = Math.min(gpuFreeLowMib, g.freeMib()));
+        textureEndMib = textures.bytes() / BYTES_PER_MIB;
     }
 
-    /** The run's memory: the extremes of the samples so far, and the process's peak resident set size now. */
+    /**
+     * The run's memory: the extremes of the samples so far, the texture memory at the last sample (null before the
+     * first), and the process's and the texture count's peaks now.
+     */
     public MemoryUse result() {
         Double total = gpu.flatMap(GpuMemoryInfo::totalMib).orElse(null);
         Double freeLow = gpu.isPresent() && gpuFreeLowMib != Double.POSITIVE_INFINITY ? gpuFreeLowMib : null;
         return new MemoryUse(heapPeakMib, rssPeakMib(), total, total != null && freeLow != null ? total - freeLow
-                : null, freeLow);
+                : null, freeLow, textures.peakBytes() / BYTES_PER_MIB, textureEndMib);
     }
 
     /** {@code VmHWM} of {@code /proc/self/status}, MiB; null where there is no such file (not Linux). */

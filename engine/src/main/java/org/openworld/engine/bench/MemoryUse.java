@@ -16,14 +16,25 @@ import java.util.Locale;
  * @param gpuFreeLowMib  the least GPU memory free at the end of a recorded frame (NVX's available memory, or
  *                       {@code GL_ATI_meminfo}'s free texture memory), MiB; null where the driver reports neither
  *                       (Mesa's llvmpipe)
+ * @param texturePeakMib the most memory the engine's textures held at once over the context's whole life, world
+ *                       building included, by the engine's own count ({@link org.openworld.engine.gl.TextureMemory}:
+ *                       texels × bytes per texel over every level and layer), MiB; every driver has it; null in a
+ *                       file written before it was counted
+ * @param textureEndMib  what the engine's textures held at the end of the last recorded frame, same count, MiB
  */
 public record MemoryUse(Double heapPeakMib, Double rssPeakMib, Double gpuTotalMib, Double gpuUsedPeakMib,
-                        Double gpuFreeLowMib) {
+                        Double gpuFreeLowMib, Double texturePeakMib, Double textureEndMib) {
 
-    /** One sentence for {@link Summary#describe()}, e.g. "Memory: heap peak 412 MiB, RSS peak 1210 MiB, GPU ...". */
+    /**
+     * One sentence for {@link Summary#describe()}, e.g. "Memory: heap peak 412 MiB, RSS peak 1210 MiB, textures peak
+     * 160 MiB, GPU ...".
+     */
     public String describe() {
         StringBuilder s = new StringBuilder("Memory: heap peak ").append(mib(heapPeakMib))
                 .append(", RSS peak ").append(rssPeakMib == null ? "not reported by the system" : mib(rssPeakMib));
+        if (texturePeakMib != null) {
+            s.append(", textures peak ").append(mib(texturePeakMib));
+        }
         if (gpuUsedPeakMib != null) {
             s.append(", GPU used peak ").append(mib(gpuUsedPeakMib)).append(" of ").append(mib(gpuTotalMib));
         } else if (gpuFreeLowMib != null) {

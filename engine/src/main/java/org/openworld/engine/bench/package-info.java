@@ -8,6 +8,9 @@
  * per system in each pass explain it. A profiled run ({@code bench --profile}) finishes the GPU around each span, so
  * its GPU times are exact wall times that add up to the frame, at the price of a serialised frame. Each run also
  * records its memory ({@link org.openworld.engine.bench.MemoryMeter}): the heap's peak, the process's peak resident
- * set, and GPU memory where the driver reports it.
+ * set, GPU memory where the driver reports it, and the texture memory by the engine's own count
+ * ({@link org.openworld.engine.gl.TextureMemory}: texels × bytes per texel over every mip level and layer, kept as
+ * each texture is made and closed), which every driver has: {@code texturePeakMib} and {@code textureEndMib} in
+ * {@code summary.json}'s {@code memory}.
  */
 package org.openworld.engine.bench;

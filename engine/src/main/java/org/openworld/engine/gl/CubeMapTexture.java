@@ -59,6 +59,7 @@ public final class CubeMapTexture extends GlTexture {
             MemoryUtil.memFree(face);
         }
         glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        t.stored(fullChain(size, size));
         return t;
     }
 
@@ -78,6 +79,7 @@ public final class CubeMapTexture extends GlTexture {
                         (FloatBuffer) null);
             }
         }
+        t.stored(fullChain(size, size));
         t.framebuffer = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
         return t;
     }

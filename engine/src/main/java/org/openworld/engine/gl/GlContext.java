@@ -65,6 +65,7 @@ public final class GlContext implements AutoCloseable {
     private final long window;
     private final Mode mode;
     private final GlObjects objects = new GlObjects();
+    private final TextureMemory textureMemory = new TextureMemory();
     private final GLFWErrorCallback errorCallback;
     private final GlDebug debug;
 
@@ -236,6 +237,11 @@ public final class GlContext implements AutoCloseable {
 
     public GlObjects objects() {
         return objects;
+    }
+
+    /** The bytes this context's textures hold now and at most, counted by the engine for every driver. */
+    public TextureMemory textureMemory() {
+        return textureMemory;
     }
 
     /** Object labels, debug groups and driver messages ({@code KHR_debug}), no-ops where the driver lacks them. */

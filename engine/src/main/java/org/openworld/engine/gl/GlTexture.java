@@ -10,6 +10,7 @@ import static org.lwjgl.opengl.GL11C.glTexParameteri;
 import static org.lwjgl.opengl.GL12C.GL_TEXTURE_MAX_LEVEL;
 import static org.lwjgl.opengl.GL12C.GL_TEXTURE_WRAP_R;
 import static org.lwjgl.opengl.GL13C.GL_TEXTURE0;
+import static org.lwjgl.opengl.GL13C.GL_TEXTURE_CUBE_MAP;
 import static org.lwjgl.opengl.GL13C.glActiveTexture;
 
 import org.lwjgl.opengl.GL11C;
@@ -18,7 +19,9 @@ import org.lwjgl.opengl.GL11C;
  * What every texture shares: one GL name of one target ({@code GL_TEXTURE_2D}, {@code GL_TEXTURE_3D},
  * {@code GL_TEXTURE_2D_ARRAY}, {@code GL_TEXTURE_CUBE_MAP}), its size and {@link Format}, its {@link Sampling}
  * written once at creation, counted in the context's {@link GlObjects}, bound to a unit for sampling, labelled for
- * GPU debuggers and deleted once on {@link #close()}. The subclasses add how their storage is made and filled.
+ * GPU debuggers and deleted once on {@link #close()}. The subclasses add how their storage is made and filled, and
+ * say how many mip levels they made ({@link #stored}); the bytes are counted here, in the context's
+ * {@link TextureMemory}, and given back on {@link #close()}.
  *
  * <p>The size is three numbers for every kind: width × height × depth, where depth is 1 for a 2D texture and a cube
  * map's face, the layers of an array and the slices of a volume.
@@ -32,6 +35,8 @@ public abstract class GlTexture implements Labelled {
     private final int depth;
     private final Format format;
     private int id;
+    /** What {@link #stored} counted in the context's {@link TextureMemory}; 0 before and after. */
+    private long storageBytes;
 
     /**
      * Creates the name, leaves it bound to {@code target} on the active unit for the subclass to fill, and sets the
@@ -66,6 +71,17 @@ public abstract class GlTexture implements Labelled {
     /** Tells GL how many mip levels the storage has, so a texture with fewer than the full chain is complete. */
     protected final void setLevels(int levels) {
         glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    }
+
+    /**
+     * Counts the storage just made, mip levels 0 .. {@code levels} − 1 of every layer or face, in the context's
+     * {@link TextureMemory}: called by each subclass once its {@code glTexImage} calls (and {@code glGenerateMipmap},
+     * which makes the levels below 0) are done. Storage made again replaces what was counted before.
+     */
+    protected final void stored(int levels) {
+        gl.textureMemory().released(storageBytes);
+        storageBytes = TextureMemory.bytes(format, width, height, target == GL_TEXTURE_CUBE_MAP ? 6 : depth, levels);
+        gl.textureMemory().allocated(storageBytes);
     }
 
     /** Binds to texture unit {@code unit}. */
@@ -108,5 +124,7 @@ public abstract class GlTexture implements Labelled {
     @Override
     public void close() {
         id = gl.objects().delete(GlObjects.Kind.TEXTURE, id, GL11C::glDeleteTextures);
+        gl.textureMemory().released(storageBytes);
+        storageBytes = 0;
     }
 }

@@ -39,6 +39,7 @@ public final class Texture2D extends GlTexture {
                     Math.max(1, height() >> level), 0, format().format(), format().type(), (ByteBuffer) null);
         }
         setLevels(levels);
+        stored(levels);
     }
 
     /**

@@ -36,6 +36,7 @@ public final class Texture3D extends GlTexture {
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexImage3D(GL_TEXTURE_3D, 0, format.internalFormat(), width, height, depth, 0, format.format(),
                 format.type(), data);
+        t.stored(1);
         return t;
     }
 

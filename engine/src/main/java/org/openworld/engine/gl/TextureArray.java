@@ -86,6 +86,7 @@ public final class TextureArray extends GlTexture {
             MemoryUtil.memFree(all);
         }
         glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+        t.stored(fullChain(width, height));
         GLCapabilities caps = GL.getCapabilities();
         boolean hasAnisotropy = caps.OpenGL46 || caps.GL_ARB_texture_filter_anisotropic
                 || caps.GL_EXT_texture_filter_anisotropic;

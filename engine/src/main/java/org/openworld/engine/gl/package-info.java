@@ -13,6 +13,12 @@
  *       {@link org.openworld.engine.gl.Texture2D}, {@link org.openworld.engine.gl.Texture3D},
  *       {@link org.openworld.engine.gl.TextureArray}, {@link org.openworld.engine.gl.CubeMapTexture},
  *       {@link org.openworld.engine.gl.DepthTextureArray}.</li>
+ *   <li>{@link org.openworld.engine.gl.TextureMemory}: the bytes a context's textures hold, now and at most, counted
+ *       by {@code GlTexture} as storage is made and closed: width × height × layers ×
+ *       {@link org.openworld.engine.gl.Format#bytesPerTexel()}, summed over the mip levels (a full chain adds about a
+ *       third: 1 + 1/4 + 1/16 + ... = 4/3). OpenGL cannot be asked and most drivers report no memory, so this is the
+ *       figure every driver has ({@code bench}'s {@code texturePeakMib}); a driver's padding and alignment come on
+ *       top.</li>
  *   <li>{@link org.openworld.engine.gl.ShaderPreprocessor}: {@code #include}, and where every line of the expanded
  *       text came from, so that {@code ShaderLog} reports a driver's {@code 0:123(26): error} (Mesa; NVIDIA's and
  *       AMD's/Intel's forms too) as {@code shaders/common/fog.glsl:15:26: error}. The line alone finds the file:

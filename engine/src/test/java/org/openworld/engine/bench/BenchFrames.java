@@ -10,8 +10,8 @@ final class BenchFrames {
     static final RunInfo RUN = new RunInfo("test renderer", "3.3 test", "headless-egl", 640, 360, 42L,
             Map.of("terrain.lod", "4"), "assets/paths/valley.path", 10, false);
 
-    /** Memory as llvmpipe on Linux reports it: heap and RSS, no GPU memory. */
-    static final MemoryUse MEMORY = new MemoryUse(412.5, 1210.0, null, null, null);
+    /** Memory as llvmpipe on Linux reports it: heap, RSS and the engine's texture count, no GPU memory. */
+    static final MemoryUse MEMORY = new MemoryUse(412.5, 1210.0, null, null, null, 160.25, 150.5);
 
     private BenchFrames() {
     }

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import org.openworld.engine.gl.TextureMemory;
 
 class MemoryMeterTest {
 
@@ -18,7 +19,8 @@ class MemoryMeterTest {
 
     @Test
     void theHeapPeakCoversAnArrayHeldAtASampleAndNoGpuMeansNulls() {
-        MemoryMeter meter = new MemoryMeter(Optional.empty());
+        MemoryMeter meter = new MemoryMeter(Optional.empty(), new TextureMemory());
+        assertNull(meter.result().textureEndMib(), "no texture figure before the first sample");
         meter.sample();
         long[] held = new long[32 * 1024 * 1024 / 8]; // 32 MiB alive at the next sample
         meter.sample();
@@ -28,6 +30,8 @@ class MemoryMeterTest {
         assertNull(use.gpuTotalMib());
         assertNull(use.gpuUsedPeakMib());
         assertNull(use.gpuFreeLowMib());
+        assertEquals(0.0, use.texturePeakMib(), "no texture made");
+        assertEquals(0.0, use.textureEndMib(), "no texture made");
         if (System.getProperty("os.name").equals("Linux")) {
             // the array was written (zeroed) when made, so its pages were resident
             assertTrue(use.rssPeakMib() >= 32, () -> "RSS peak " + use.rssPeakMib() + " MiB with 32 MiB held");
