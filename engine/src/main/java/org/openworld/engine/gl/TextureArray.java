@@ -41,6 +41,7 @@ public final class TextureArray extends GlTexture {
         glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, format.internalFormat(), width, height, layers, 0, format.format(),
                 format.type(), (ByteBuffer) null);
         t.setLevels(1);
+        t.stored(1);
         return t;
     }
 

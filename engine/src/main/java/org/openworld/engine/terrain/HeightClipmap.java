@@ -95,7 +95,9 @@ public final class HeightClipmap implements AutoCloseable {
     public interface BlockSink {
         /**
          * Uploads a block: texel origin {@code (ix0 & (size − 1), iz0 & (size − 1))} of level {@code level}'s
-         * layer, {@code heights} row-major, {@code block × block}, rows along z.
+         * layer. {@code heights} holds the block with a border of one sample on every side, row-major,
+         * {@code (block + 2)²}, rows along z, starting at sample (ix0 − 1, iz0 − 1): the border lets the sink take
+         * slopes by central differences at the block's own edges without its neighbours.
          */
         void upload(int level, int texelX, int texelZ, int block, float[] heights);
     }
@@ -368,12 +370,15 @@ public final class HeightClipmap implements AutoCloseable {
         if (closed || slot.generation != generation) {
             return new Finished(slot, generation, bx, bz, null, 0, 0);
         }
-        float[] h = heights.level(slot.level().index, bx * block, bz * block, block);
+        int side = block + 2;
+        float[] h = heights.level(slot.level().index, bx * block - 1, bz * block - 1, side);
         float min = Float.POSITIVE_INFINITY;
         float max = Float.NEGATIVE_INFINITY;
-        for (float v : h) {
-            min = Math.min(min, v);
-            max = Math.max(max, v);
+        for (int j = 1; j <= block; j++) {
+            for (int i = 1; i <= block; i++) {
+                min = Math.min(min, h[j * side + i]);
+                max = Math.max(max, h[j * side + i]);
+            }
         }
         return new Finished(slot, generation, bx, bz, h, min, max);
     }

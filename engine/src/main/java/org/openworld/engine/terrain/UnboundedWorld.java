@@ -80,9 +80,11 @@ final class UnboundedWorld implements AutoCloseable {
                 (float) heights.highest());
         rootRadius = (int) Math.ceil(TerrainSystem.COPY_DISTANCE / tree.extent());
         int size = clipSize(s, levels, heights.spacing(levels - 1), tree.extent(), rootRadius);
-        workers = Executors.newFixedThreadPool(Math.max(1, Runtime.getRuntime().availableProcessors()), r -> {
+        // half the cores, at low priority: the frame's own thread (and a software rasteriser's) come first
+        workers = Executors.newFixedThreadPool(Math.max(1, Runtime.getRuntime().availableProcessors() / 2), r -> {
             Thread t = new Thread(r, "terrain-blocks");
             t.setDaemon(true);
+            t.setPriority(Thread.MIN_PRIORITY);
             return t;
         });
         clipmap = new HeightClipmap(heights, levels, size, BLOCK, workers);

@@ -26,7 +26,18 @@
  * arithmetic is in BandedHeights). Cost: nine 512² FFTs and 9 MiB when the world is made (0.3 s); then 16 samples
  * per band per height, 0.75–1.2 s for the 2000² samples of the 64 km overview on two cores. Limits: each band alone
  * repeats on its lattice (131 km for the 1–2 km band, which carries 80 % of the variance at β = 2.2); the relief is
- * scaled by the standard deviation (±3σ), so a few per mille of the ground lie outside it; nothing draws it yet.
+ * scaled by the standard deviation (±3σ), so a few per mille of the ground lie outside it.
+ *
+ * <p><b>Drawing the unbounded world ({@code terrain.world=unbounded}).</b> A clipmap ({@link
+ * org.openworld.engine.terrain.HeightClipmap}) keeps each level in an S × S window around the camera, world sample i
+ * of level L in texel {@code i mod S} of layer L (toroidal: a moving window rewrites only the blocks that enter it),
+ * made on worker threads ahead of the camera by its velocity and uploaded a few blocks a frame. The quadtree's roots
+ * (8 km) lie on a lattice around the camera as the tile's copies do, each a different piece of the world; a node is
+ * split only into children whose levels are resident ({@link org.openworld.engine.terrain.Residency}), so a block
+ * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.UnboundedWorld}). Cost:
+ * {@code 2 · levels · S² · 4} bytes of GPU memory, 16 MiB by default whatever the distance flown; a 64² block takes
+ * 0.35–1.2 ms of a worker. Limits: one geometric error per level (the world is statistically uniform), boxes the
+ * world's height bounds; no baked far material, snow map or sky occlusion on it yet.
  *
  * <p><b>Pyramid (2.5).</b> {@link org.openworld.engine.terrain.HeightPyramid#build} low-passes each level with the
  * binomial kernel (1 4 6 4 1)/16 (a Gaussian of σ ≈ 1 sample, response cos⁴(πf)) and keeps every other sample.
@@ -134,9 +145,9 @@
  * branch runs both sides. Cost: the far program is about a quarter of the near one per pixel; the bake is one pass at
  * start. Limit: edges finer than a texel are softer far away.
  *
- * <p><b>Limits.</b> The whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
+ * <p><b>Limits.</b> A tile's whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
  * and again on the GPU); geomorphing makes the ground within a transition band coarser than the level rule asks (up
  * to its parent's error), and steps where a band is empty (a box taller than the gap between two merge distances);
- * a generated tile repeats (the unbounded world does not, but is not drawn yet); the snow map is capped at 2048².
+ * a generated tile repeats (the unbounded world does not); the snow map is capped at 2048².
  */
 package org.openworld.engine.terrain;

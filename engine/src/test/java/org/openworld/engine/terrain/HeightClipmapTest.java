@@ -48,7 +48,10 @@ class HeightClipmapTest {
         assertTrue(workers.awaitTermination(10, TimeUnit.SECONDS), "workers stopped");
     }
 
-    /** Each block handed over is heights.level of its place; the window is resident, and no sample beyond it. */
+    /**
+     * Each block handed over is heights.level of its place, with a border of one sample; the window is resident,
+     * and no sample beyond it.
+     */
     @Test
     void drainedBlocksAreTheWorldsLevelsBitForBit() throws InterruptedException {
         try (HeightClipmap clipmap = clipmap()) {
@@ -59,7 +62,7 @@ class HeightClipmapTest {
             for (Upload u : texture.uploads) {
                 long ix0 = sampleOf(clipmap.windowX(u.level), u.texelX);
                 long iz0 = sampleOf(clipmap.windowZ(u.level), u.texelZ);
-                assertArrayEquals(WORLD.level(u.level, ix0, iz0, BLOCK), u.heights,
+                assertArrayEquals(WORLD.level(u.level, ix0 - 1, iz0 - 1, BLOCK + 2), u.heights,
                         "level " + u.level + " block at " + ix0 + ", " + iz0);
             }
             assertTextureIsTheWorld(clipmap, texture);
@@ -213,7 +216,7 @@ class HeightClipmapTest {
             for (Upload u : texture.uploads) {
                 long ix0 = sampleOf(clipmap.windowX(u.level), u.texelX);
                 long iz0 = sampleOf(clipmap.windowZ(u.level), u.texelZ);
-                assertArrayEquals(WORLD.level(u.level, ix0, iz0, BLOCK), u.heights,
+                assertArrayEquals(WORLD.level(u.level, ix0 - 1, iz0 - 1, BLOCK + 2), u.heights,
                         "level " + u.level + " block at texel " + u.texelX + ", " + u.texelZ + " belongs to Q");
             }
         }
@@ -484,8 +487,9 @@ class HeightClipmapTest {
         @Override
         public void upload(int level, int texelX, int texelZ, int block, float[] heights) {
             uploads.add(new Upload(level, texelX, texelZ, heights));
-            for (int j = 0; j < block; j++) {
-                System.arraycopy(heights, j * block, texels[level], (texelZ + j) * SIZE + texelX, block);
+            for (int j = 0; j < block; j++) { // the block without its border
+                System.arraycopy(heights, (j + 1) * (block + 2) + 1, texels[level], (texelZ + j) * SIZE + texelX,
+                        block);
             }
         }
     }
