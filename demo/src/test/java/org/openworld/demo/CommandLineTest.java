@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.*;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -173,6 +174,43 @@ class CommandLineTest {
                 a.resolve("summary.json").toString()));
         assertTrue(console.stdout().contains("frame ms median"), console.stdout());
         assertTrue(console.stdout().contains("texture peak MiB"), console.stdout());
+    }
+
+    /**
+     * The unbounded world with every system on, along the crossing path: each draws (its span is in the summary),
+     * and the trees stand on the streamed world's ground (placed where its height field allows them).
+     */
+    @Test
+    @Tag("gl")
+    void theUnboundedWorldCarriesEverySystem() throws Exception {
+        Path out = dir.resolve("unbounded");
+        assertEquals(0, Main.execute("bench", "--path", "../assets/paths/crossing.path", "--out", out.toString(),
+                "--size", "96x54", "--frames", "6", "--warmup", "2", "--set", "terrain.world=unbounded",
+                "--set", "system.trees=on", "--set", "system.minimap=on", "--set", "system.particles=on"),
+                console.stderr());
+        var spans = SummaryJson.read(out.resolve("summary.json")).passGpuMsMedian().keySet();
+        for (String span : List.of("main.terrain", "shadow0.terrain", "reflection.terrain", "main.water", "main.trees",
+                "main.particles", "overlay.minimap")) {
+            assertTrue(spans.contains(span), span + " in " + spans);
+        }
+        List<String> lines = Files.readAllLines(out.resolve("frames.csv"));
+        int trees = List.of(lines.get(0).split(",")).indexOf("trees.count");
+        assertTrue(trees >= 0, lines.get(0));
+        double placed = Double.parseDouble(lines.get(lines.size() - 1).split(",")[trees]);
+        assertTrue(placed > 100, "trees placed on the unbounded world: " + placed);
+    }
+
+    /** A budget too small for the unbounded world, or an imported map asked to be unbounded: a clear message. */
+    @Test
+    @Tag("gl")
+    void theUnboundedWorldsMistakesAreNamed() {
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(),
+                "--size", "96x54", "--set", "terrain.world=unbounded", "--set", "terrain.memory-budget=4"));
+        assertTrue(console.stderr().contains("terrain.memory-budget=4 MiB is too little")
+                && console.stderr().contains("16 MiB or more"), console.stderr());
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("y.png").toString(),
+                "--size", "96x54", "--set", "terrain.world=unbounded", "--set", "terrain.import-file=map.png"));
+        assertTrue(console.stderr().contains("needs terrain.world=TILE"), console.stderr());
     }
 
     @Test

@@ -68,15 +68,14 @@ final class TerrainShading {
 
     /**
      * Makes the programs, the materials (quilted if the settings of the start ask for it, timed as the
-     * {@code quilting} stage) and the far material, handed to the system's owner, and bakes the far material with
-     * the settings of the start.
+     * {@code quilting} stage) and the far material, handed to the system's owner; {@link #bake} bakes the far
+     * material.
      *
      * <p>The streamed world ({@link PatchLayout#streamed()}) has no far material yet: its programs read the slopes
      * of the clipmap on the gradients' unit, every patch runs a near program, and snow lies by altitude band (no
      * snow map streams); its far-ground cost is the near program's.
      *
-     * @param base          the tile's heights, for the far material's bake (which needs the maps bound to their
-     *                      units now); null for the streamed world
+     * @param base          the tile's heights, for the far material; null for the streamed world
      * @param unitHeights   the unit of the height pyramid (clipmap); the gradients (slopes) and the snow map take
      *                      the next two, the materials the {@link TerrainMaterials#UNITS} after those, then the far
      *                      material two
@@ -109,8 +108,15 @@ final class TerrainShading {
         }
         tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), unitHeights);
         tangentSpace.sampler(layout.streamed() ? "slopes" : "gradients", unitGradients);
-        if (farMaterial != null) { // the maps are bound to their units (the caller's part)
-            farMaterial.refresh(materials, context.settings().get(MaterialSettings.class), unitMaterials);
+    }
+
+    /**
+     * Bakes the far material with these settings, outside any pass (its textures made, the maps bound to their units
+     * since); nothing for the streamed world.
+     */
+    void bake(MaterialSettings settings) {
+        if (farMaterial != null) {
+            farMaterial.refresh(materials, settings, unitMaterials);
         }
     }
 

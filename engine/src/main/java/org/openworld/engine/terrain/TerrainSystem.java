@@ -135,8 +135,9 @@ public final class TerrainSystem implements EngineSystem {
         selection = new PatchSelection(tree);
         layout = PatchLayout.tile(base, cells);
         maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
-        bindMaps();
         shading = new TerrainShading(context, layout, base, seed, UNIT_HEIGHTS, times);
+        bindMaps();
+        shading.bake(context.settings().get(MaterialSettings.class));
     }
 
     /** The unbounded world: bands, streamed around where the camera starts, and the programs that read them. */
