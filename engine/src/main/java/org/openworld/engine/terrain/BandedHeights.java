@@ -98,8 +98,7 @@ public final class BandedHeights implements HeightField {
 
     /**
      * How far the surface drawn from each level's samples lies from the finest heights, metres, for levels
-     * 0 .. count − 1 (0 for level 0): the triangles of a patch of level L (cells cut along their (−,−) to (+,+)
-     * diagonal, as {@link PatchPatterns} cuts them) against level 0, the largest difference at
+     * 0 .. count − 1 (0 for level 0): {@link #surface} of level L against level 0, the largest difference at
      * {@value #ERROR_SAMPLES} random places (the same places for every seed), raised by {@value #ERROR_MARGIN}.
      * The world is statistically the same everywhere, so one figure per level stands for every node of that level;
      * it is an estimate, not a bound: somewhere in an unbounded world a larger error exists. Levels beyond the
@@ -117,24 +116,9 @@ public final class BandedHeights implements HeightField {
         }
         IntStream.range(1, count).parallel().forEach(level -> {
             int l = Math.min(level, bands.length - 1);
-            double d = spacing(l);
             double worst = 0;
             for (int i = 0; i < ERROR_SAMPLES; i++) {
-                double fx = Math.floor(xs[i] / d);
-                double fz = Math.floor(zs[i] / d);
-                double tx = xs[i] / d - fx;
-                double tz = zs[i] / d - fz;
-                double h00 = height(l, fx * d, fz * d);
-                double h11 = height(l, (fx + 1) * d, (fz + 1) * d);
-                double drawn;
-                if (tx >= tz) { // the triangle (0,0) (1,0) (1,1)
-                    double h10 = height(l, (fx + 1) * d, fz * d);
-                    drawn = h00 + tx * (h10 - h00) + tz * (h11 - h10);
-                } else {        // the triangle (0,0) (0,1) (1,1)
-                    double h01 = height(l, fx * d, (fz + 1) * d);
-                    drawn = h00 + tz * (h01 - h00) + tx * (h11 - h01);
-                }
-                worst = Math.max(worst, Math.abs(height(0, xs[i], zs[i]) - drawn));
+                worst = Math.max(worst, Math.abs(height(0, xs[i], zs[i]) - surface(l, xs[i], zs[i])));
             }
             errors[level] = (float) (ERROR_MARGIN * worst);
         });
@@ -165,6 +149,26 @@ public final class BandedHeights implements HeightField {
             h += band(k, x, z);
         }
         return h;
+    }
+
+    /**
+     * The surface a patch of this level draws at (x, z), metres: its samples joined by triangles, each cell cut along
+     * its (−,−) to (+,+) diagonal as {@link PatchPatterns} cuts them.
+     */
+    public double surface(int level, double x, double z) {
+        double d = spacing(level);
+        double fx = Math.floor(x / d);
+        double fz = Math.floor(z / d);
+        double tx = x / d - fx;
+        double tz = z / d - fz;
+        double h00 = height(level, fx * d, fz * d);
+        double h11 = height(level, (fx + 1) * d, (fz + 1) * d);
+        if (tx >= tz) { // the triangle (0,0) (1,0) (1,1)
+            double h10 = height(level, (fx + 1) * d, fz * d);
+            return h00 + tx * (h10 - h00) + tz * (h11 - h10);
+        }
+        double h01 = height(level, fx * d, (fz + 1) * d); // the triangle (0,0) (0,1) (1,1)
+        return h00 + tz * (h01 - h00) + tx * (h11 - h01);
     }
 
     /** Band k's share of the height at (x, z), metres (0 for a band the cut-offs leave empty). */

@@ -246,22 +246,11 @@ class BandedHeightsTest {
         SplittableRandom random = new SplittableRandom(99);
         for (int level = 1; level < errors.length; level++) {
             assertTrue(errors[level] > errors[level - 1], "error grows from level " + (level - 1) + " to " + level);
-            double d = WORLD.spacing(level);
             double worst = 0;
             for (int i = 0; i < 5_000; i++) {
                 double x = random.nextDouble(-1e6, 1e6);
                 double z = random.nextDouble(-1e6, 1e6);
-                double fx = Math.floor(x / d);
-                double fz = Math.floor(z / d);
-                double tx = x / d - fx;
-                double tz = z / d - fz;
-                double h00 = WORLD.height(level, fx * d, fz * d);
-                double h10 = WORLD.height(level, (fx + 1) * d, fz * d);
-                double h01 = WORLD.height(level, fx * d, (fz + 1) * d);
-                double h11 = WORLD.height(level, (fx + 1) * d, (fz + 1) * d);
-                double drawn = tx >= tz ? h00 + tx * (h10 - h00) + tz * (h11 - h10)
-                        : h00 + tz * (h01 - h00) + tx * (h11 - h01);
-                worst = Math.max(worst, Math.abs(WORLD.heightAt(x, z) - drawn));
+                worst = Math.max(worst, Math.abs(WORLD.heightAt(x, z) - WORLD.surface(level, x, z)));
             }
             String seen = "level " + level + ": " + worst + " m seen, " + errors[level] + " m estimated";
             assertTrue(worst <= errors[level], seen);

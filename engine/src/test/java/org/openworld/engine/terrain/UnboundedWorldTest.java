@@ -141,19 +141,7 @@ class UnboundedWorldTest {
     /** The finest level whose triangles pass within {@code tolerance} metres of {@code p} vertically, or −1. */
     private static int levelUnder(BandedHeights world, Vector3f p, double tolerance) {
         for (int level = 0; level < world.levels(); level++) {
-            double d = world.spacing(level);
-            double fx = Math.floor(p.x / d);
-            double fz = Math.floor(p.z / d);
-            double tx = p.x / d - fx;
-            double tz = p.z / d - fz;
-            double h00 = world.height(level, fx * d, fz * d);
-            double h11 = world.height(level, (fx + 1) * d, (fz + 1) * d);
-            double surface = tx >= tz
-                    ? h00 + tx * (world.height(level, (fx + 1) * d, fz * d) - h00)
-                            + tz * (h11 - world.height(level, (fx + 1) * d, fz * d))
-                    : h00 + tz * (world.height(level, fx * d, (fz + 1) * d) - h00)
-                            + tx * (h11 - world.height(level, fx * d, (fz + 1) * d));
-            if (Math.abs(p.y - surface) <= tolerance) {
+            if (Math.abs(p.y - world.surface(level, p.x, p.z)) <= tolerance) {
                 return level;
             }
         }
