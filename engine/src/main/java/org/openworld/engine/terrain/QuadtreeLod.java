@@ -88,6 +88,8 @@ final class QuadtreeLod implements LodScheme {
     private Containment[] cutContainment = new Containment[0];
 
     private final int[] sideLevel = new int[4];
+    /** A node's narrowed heights, see {@link #boxDistance}. */
+    private final float[] range = new float[2];
     private Vector3fc camera;
     private DetailLimit limit;
     private Visibility visibility;
@@ -201,9 +203,22 @@ final class QuadtreeLod implements LodScheme {
         return true;
     }
 
-    /** Distance from the camera to the nearest point of the node's box in a copy, metres. */
+    /**
+     * Distance from the camera to the nearest point of the node's box in a copy, metres; the box's heights narrowed
+     * to what the node may draw where {@link Residency#heightRange} knows it.
+     */
     private double boxDistance(int copy, int node) {
-        return bounds.distance(node, lattice.offsetX(copy), lattice.offsetZ(copy), camera);
+        float offsetX = lattice.offsetX(copy);
+        float offsetZ = lattice.offsetZ(copy);
+        if (!residency.heightRange(node, offsetX, offsetZ, range)) {
+            return bounds.distance(node, offsetX, offsetZ, camera);
+        }
+        float[] boxes = bounds.boxes();
+        int b = 6 * node;
+        double dx = Math.max(0, Math.max(boxes[b] + offsetX - camera.x(), camera.x() - boxes[b + 3] - offsetX));
+        double dy = Math.max(0, Math.max(range[0] - camera.y(), camera.y() - range[1]));
+        double dz = Math.max(0, Math.max(boxes[b + 2] + offsetZ - camera.z(), camera.z() - boxes[b + 5] - offsetZ));
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     private void addToCut(int copy, int node, Containment containment) {

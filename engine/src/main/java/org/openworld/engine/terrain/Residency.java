@@ -1,15 +1,26 @@
 package org.openworld.engine.terrain;
 
 /**
- * Whether a quadtree node's heights are on the GPU, so that it may be drawn. A tile's are all there from the start
- * ({@link #ALL}); the unbounded world streams its levels around the camera ({@link HeightClipmap}), and a node whose
- * level has not arrived yet is not split into: its coarser parent is drawn instead, never a hole.
+ * Whether a quadtree node's heights are on the GPU, so that it may be drawn, and which heights it spans. A tile's are
+ * all there from the start and its boxes are exact ({@link #ALL}); the unbounded world streams its levels around the
+ * camera ({@link HeightClipmap}), and a node whose level has not arrived yet is not split into: its coarser parent is
+ * drawn instead, never a hole. Its boxes span the whole world's heights, so where the streamed heights are known
+ * they give the level rule a tighter range.
  */
-@FunctionalInterface
 interface Residency {
 
-    /** Every node of every copy, always: a tile made whole at start. */
-    Residency ALL = (node, offsetX, offsetZ) -> true;
+    /** Every node of every copy, always, with the heights its box gives: a tile made whole at start. */
+    Residency ALL = new Residency() {
+        @Override
+        public boolean drawable(int node, float offsetX, float offsetZ) {
+            return true;
+        }
+
+        @Override
+        public boolean heightRange(int node, float offsetX, float offsetZ, float[] out) {
+            return false;
+        }
+    };
 
     /**
      * @param node    a node of the quadtree
@@ -19,4 +30,10 @@ interface Residency {
      *         the coarser ones its sides may stitch to) is resident
      */
     boolean drawable(int node, float offsetX, float offsetZ);
+
+    /**
+     * The lowest and highest height the node may draw, into out[0] and out[1], when known more tightly than its
+     * box; false (out untouched) otherwise.
+     */
+    boolean heightRange(int node, float offsetX, float offsetZ, float[] out);
 }

@@ -147,7 +147,7 @@ public final class TerrainSystem implements EngineSystem {
         unbounded = context.own(new UnboundedWorld(context, terrain, seed, cells, times, progress));
         context.world().setResource(HeightField.class, unbounded.heights());
         tree = unbounded.tree();
-        selection = new PatchSelection(tree, unbounded::drawable);
+        selection = new PatchSelection(tree, unbounded);
         layout = PatchLayout.clipmap(tree, unbounded.clipSize(), terrain);
         shading = new TerrainShading(context, layout, null, seed, UNIT_HEIGHTS, times);
     }

@@ -36,7 +36,7 @@ import org.openworld.engine.settings.SettingsException;
  * GPU, fixed whatever the distance flown; on the Java side the bands' tiles (a MiB each) and the blocks in flight,
  * bounded by the clipmap.
  */
-final class UnboundedWorld implements AutoCloseable {
+final class UnboundedWorld implements Residency, AutoCloseable {
 
     /** The side a root aims at, metres: a few roots around the camera reach beyond the fog. */
     static final double ROOT_METRES = 8192;
@@ -52,6 +52,7 @@ final class UnboundedWorld implements AutoCloseable {
     final TextureArray heightTexture;
     final TextureArray slopeTexture;
     private final FloatBuffer staging;
+    private final float[] levelRange = new float[2];
     private final int levels;
     private final int rootRadius;
     private final Consumer<String> progress;
@@ -220,7 +221,31 @@ final class UnboundedWorld implements AutoCloseable {
      * (the next for morphing, up to log2 N coarser along a stitched side) are resident over its samples and the
      * row and column beyond its far sides, which its last vertices read.
      */
-    boolean drawable(int node, float offsetX, float offsetZ) {
+    @Override
+    public boolean drawable(int node, float offsetX, float offsetZ) {
+        return levelsOf(node, offsetX, offsetZ, null);
+    }
+
+    /**
+     * The heights a resident node may draw: the range of the levels it reads over its samples, widened by its own
+     * level's error (the finer levels its descendants draw lie within it of its surface), as a tile's box spans all
+     * the levels below it; false when not resident.
+     */
+    @Override
+    public boolean heightRange(int node, float offsetX, float offsetZ, float[] out) {
+        out[0] = Float.POSITIVE_INFINITY;
+        out[1] = Float.NEGATIVE_INFINITY;
+        if (!levelsOf(node, offsetX, offsetZ, out)) {
+            return false;
+        }
+        float error = tree.error(node);
+        out[0] -= error;
+        out[1] += error;
+        return true;
+    }
+
+    /** Whether the node's levels are resident; with {@code range}, their heights' union widened into it. */
+    private boolean levelsOf(int node, float offsetX, float offsetZ, float[] range) {
         int level = tree.level(node);
         double spacing = heights.spacing(0);
         long originX = Math.round(offsetX / spacing) - tree.size() / 2 + tree.sampleX(node);
@@ -228,9 +253,17 @@ final class UnboundedWorld implements AutoCloseable {
         long span = (long) tree.cells() << level;
         int coarsest = Math.min(levels - 1, level + tree.cellsLog2());
         for (int l = level; l <= coarsest; l++) {
-            if (!clipmap.resident(l, originX >> l, originZ >> l, ((originX + span) >> l) + 1,
-                    ((originZ + span) >> l) + 1)) {
+            long x0 = originX >> l;
+            long z0 = originZ >> l;
+            long x1 = ((originX + span) >> l) + 1;
+            long z1 = ((originZ + span) >> l) + 1;
+            if (range == null ? !clipmap.resident(l, x0, z0, x1, z1)
+                    : !clipmap.heightRange(l, x0, z0, x1, z1, levelRange)) {
                 return false;
+            }
+            if (range != null) {
+                range[0] = Math.min(range[0], levelRange[0]);
+                range[1] = Math.max(range[1], levelRange[1]);
             }
         }
         return true;

@@ -139,7 +139,17 @@ class PatchSelectionTest {
     void aNodeWhoseChildrenAreNotResidentIsDrawnWhole() {
         World world = hills(256, 1, 8, true);
         float eastX = (float) world.extent;
-        Residency coarseEast = (node, x, z) -> x != eastX || z != 0 || world.tree.level(node) >= 3;
+        Residency coarseEast = new Residency() {
+            @Override
+            public boolean drawable(int node, float x, float z) {
+                return x != eastX || z != 0 || world.tree.level(node) >= 3;
+            }
+
+            @Override
+            public boolean heightRange(int node, float x, float z, float[] out) {
+                return false;
+            }
+        };
         PatchSelection streamed = new PatchSelection(world.tree, coarseEast);
         PatchSelection whole = new PatchSelection(world.tree);
         PatchList patches = new PatchList();
@@ -167,6 +177,41 @@ class PatchSelectionTest {
         assertEquals(0, finestWhole, "with everything resident the camera's corner is at level 0");
         assertEquals(3, finestEast, "the east copy is cut at its finest resident level");
         assertEquals(0, finestElsewhere, "the centre copy, beside the camera, still reaches level 0");
+    }
+
+    /**
+     * A streamed node's known heights narrow its box for the level rule: told that every node lies 500 m below a
+     * camera standing 5 m over the hills, the cut is as coarse as seen from 500 m up, far coarser than with the boxes.
+     */
+    @Test
+    void knownHeightsNarrowTheBoxForTheLevelRule() {
+        World world = hills(256, 1, 8, false);
+        Residency deepBelow = new Residency() {
+            @Override
+            public boolean drawable(int node, float x, float z) {
+                return true;
+            }
+
+            @Override
+            public boolean heightRange(int node, float x, float z, float[] out) {
+                out[0] = -510;
+                out[1] = -495;
+                return true;
+            }
+        };
+        Vector3f camera = new Vector3f(0, 5, 0);
+        DetailLimit limit = DetailLimit.paper(4);
+        PatchList boxes = new PatchList();
+        PatchList narrowed = new PatchList();
+        new PatchSelection(world.tree).select(camera, world.offsets, limit, LodMode.QUADTREE, null, boxes);
+        new PatchSelection(world.tree, deepBelow).select(camera, world.offsets, limit, LodMode.QUADTREE, null,
+                narrowed);
+        PatchList fromAbove = new PatchList();
+        new PatchSelection(world.tree).select(new Vector3f(0, 505, 0), world.offsets, limit, LodMode.QUADTREE, null,
+                fromAbove);
+        assertTrue(narrowed.size() < boxes.size() / 2, narrowed.size() + " patches narrowed, " + boxes.size()
+                + " with the boxes");
+        assertEquals(fromAbove.size(), narrowed.size(), "as seen from 500 m over the hills' boxes");
     }
 
     /**
