@@ -9,9 +9,8 @@
 //                          lookups), the sky's reflection from the vertices (terrain.vert)
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
 //   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
-//   TERRAIN_CLIPMAP        the unbounded world (terrain.world=unbounded): the slope from the streamed clipmap's
-//                          layer of the patch's level, every patch near (no baked far material, no snow map: snow
-//                          by altitude band; the whole sky seen)
+//   TERRAIN_CLIPMAP        the unbounded world (terrain.world=unbounded): the slope and the snow from the streamed
+//                          clipmap's layer of the patch's level, every patch near (no baked far material yet)
 #include "common/frame.glsl"
 #include "common/color.glsl"
 #include "terrain/material.glsl"
@@ -23,6 +22,7 @@ out vec4 fragColor;
 
 #ifdef TERRAIN_CLIPMAP
 uniform sampler2DArray slopes; // (dh/dx, dh/dz) of each level's window around the camera, wrapping (HeightClipmap)
+uniform sampler2DArray snowMap; // r snow coverage (StreamedSnow), g the share of the sky seen (1 until it streams)
 uniform float clipExtent;      // metres across level 0's window: clipSize · spacing
 #else
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
@@ -47,8 +47,8 @@ void main() {
     // level L's sample i lies at x = i · d_L and is texel i mod clipSize, whose centre is at (i + 0.5) / clipSize:
     // wrapping bilinear filtering then reads the window as if it were the whole world
     float levelExtent = clipExtent * exp2(float(lodLevel));
-    vec2 slope = texture(slopes, vec3(wsPos.xz / levelExtent + 0.5 / float(textureSize(slopes, 0).x),
-                                      float(lodLevel))).xy;
+    vec3 clipUv = vec3(wsPos.xz / levelExtent + 0.5 / float(textureSize(slopes, 0).x), float(lodLevel));
+    vec2 slope = texture(slopes, clipUv).xy;
 #else
     vec2 uv = wsPos.xz / extent + 0.5;
   #ifdef TERRAIN_FAR
@@ -74,8 +74,9 @@ void main() {
     MatTexel m;
   #ifdef TERRAIN_CLIPMAP
     s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
-    s.snow = 0.0;          // no snow map streams yet: the materials take snow from the altitude band
-    s.skyVisibility = 1.0; // nor the horizon's occlusion
+    vec2 snowAndSky = texture(snowMap, clipUv).rg;
+    s.snow = snowAndSky.r;
+    s.skyVisibility = snowAndSky.g;
     m = terrainMaterial(s, length(cameraPos() - wsPos), matMacroTint(wsPos.xz));
   #elif defined(TERRAIN_FAR)
     vec4 far = texture(farColour, uv);

@@ -207,7 +207,7 @@ class CommandLineTest {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("x.png").toString(),
                 "--size", "96x54", "--set", "terrain.world=unbounded", "--set", "terrain.memory-budget=4"));
         assertTrue(console.stderr().contains("terrain.memory-budget=4 MiB is too little")
-                && console.stderr().contains("16 MiB or more"), console.stderr());
+                && console.stderr().contains("20 MiB or more"), console.stderr());
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("y.png").toString(),
                 "--size", "96x54", "--set", "terrain.world=unbounded", "--set", "terrain.import-file=map.png"));
         assertTrue(console.stderr().contains("needs terrain.world=TILE"), console.stderr());

@@ -2,6 +2,7 @@ package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL30C.*;
 
+import java.nio.Buffer;
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.util.List;
@@ -45,12 +46,21 @@ public final class TextureArray extends GlTexture {
         return t;
     }
 
-    /** Writes a rectangle of one layer; {@code data} holds its rows in this texture's format and type (floats). */
-    public void upload(int layer, int x, int y, int width, int height, FloatBuffer data) {
+    /**
+     * Writes a rectangle of one layer; {@code data} holds its rows in this texture's {@link Format#format()} and
+     * {@link Format#type()} (floats or bytes).
+     */
+    public void upload(int layer, int x, int y, int width, int height, Buffer data) {
         bindForUpdate();
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, x, y, layer, width, height, 1, format().format(), format().type(),
-                data);
+        Format f = format();
+        if (data instanceof FloatBuffer floats) {
+            glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, x, y, layer, width, height, 1, f.format(), f.type(), floats);
+        } else if (data instanceof ByteBuffer bytes) {
+            glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, x, y, layer, width, height, 1, f.format(), f.type(), bytes);
+        } else {
+            throw new IllegalArgumentException("upload takes a FloatBuffer or a ByteBuffer, got " + data.getClass());
+        }
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     }
 

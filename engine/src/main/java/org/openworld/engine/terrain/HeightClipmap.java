@@ -94,17 +94,20 @@ public final class HeightClipmap implements AutoCloseable {
     /** Receives a finished block on the GL thread. */
     public interface BlockSink {
         /**
-         * Uploads a block: texel origin {@code (ix0 & (size − 1), iz0 & (size − 1))} of level {@code level}'s
-         * layer. {@code heights} holds the block with a border of one sample on every side, row-major,
-         * {@code (block + 2)²}, rows along z, starting at sample (ix0 − 1, iz0 − 1): the border lets the sink take
-         * slopes by central differences at the block's own edges without its neighbours.
+         * Uploads the block of level {@code level} whose first sample is (ix0, iz0): texel origin
+         * {@code (texelX, texelZ) = (ix0 & (size − 1), iz0 & (size − 1))} of level {@code level}'s
+         * layer. {@code heights} holds the block with a border of {@link #border()} samples on every side,
+         * row-major, {@code (block + 2 · border)²}, rows along z, starting at sample (ix0 − border, iz0 − border):
+         * the border lets the sink filter up to the block's own edges without its neighbours (slopes by central
+         * differences, the snow's morphology and blur).
          */
-        void upload(int level, int texelX, int texelZ, int block, float[] heights);
+        void upload(int level, long ix0, long iz0, int texelX, int texelZ, int block, float[] heights);
     }
 
     private final BandedHeights heights;
     private final int size;
     private final int block;
+    private final int border;
     private final ExecutorService workers;
     private final int maxInFlight;
     private final ClipmapLevel[] levels;
@@ -124,12 +127,16 @@ public final class HeightClipmap implements AutoCloseable {
      * A clipmap of {@code levels} levels of {@code heights}, windows {@code size} samples a side made of
      * {@code block}-sample blocks, computed on {@code workers} (not owned: {@link #close} does not shut it down).
      */
-    public HeightClipmap(BandedHeights heights, int levels, int size, int block, ExecutorService workers) {
+    public HeightClipmap(BandedHeights heights, int levels, int size, int block, int border,
+                         ExecutorService workers) {
         if (levels < 1 || levels > heights.levels()) {
             throw new IllegalArgumentException("a height clipmap needs 1 .. " + heights.levels()
                     + " levels (the world's bands), got " + levels);
         }
         checkBlock(block);
+        if (border < 0 || border > block) {
+            throw new IllegalArgumentException("a block's border must be 0 .. " + block + " samples, got " + border);
+        }
         if (Integer.bitCount(size) != 1 || size < MIN_BLOCKS * block) {
             throw new IllegalArgumentException("a height clipmap's size must be a power of two of at least "
                     + MIN_BLOCKS + " blocks (" + MIN_BLOCKS * block + " samples for blocks of " + block
@@ -138,6 +145,7 @@ public final class HeightClipmap implements AutoCloseable {
         this.heights = heights;
         this.size = size;
         this.block = block;
+        this.border = border;
         this.workers = workers;
         this.maxInFlight = 2 * Runtime.getRuntime().availableProcessors();
         this.levels = new ClipmapLevel[levels];
@@ -223,7 +231,8 @@ public final class HeightClipmap implements AutoCloseable {
         int n = Math.min(maxBlocks, ready.size());
         for (Finished f : ready.subList(0, n)) {
             ClipmapLevel level = f.slot.level();
-            sink.upload(level.index, level.texel(f.bx), level.texel(f.bz), block, f.heights);
+            sink.upload(level.index, f.bx * block, f.bz * block, level.texel(f.bx), level.texel(f.bz), block,
+                    f.heights);
             f.slot.hold(f.bx, f.bz, f.min, f.max);
             outstanding--;
         }
@@ -281,6 +290,11 @@ public final class HeightClipmap implements AutoCloseable {
 
     public int size() {
         return size;
+    }
+
+    /** Samples of border every block is handed with, on each side. */
+    public int border() {
+        return border;
     }
 
     public int block() {
@@ -370,12 +384,12 @@ public final class HeightClipmap implements AutoCloseable {
         if (closed || slot.generation != generation) {
             return new Finished(slot, generation, bx, bz, null, 0, 0);
         }
-        int side = block + 2;
-        float[] h = heights.level(slot.level().index, bx * block - 1, bz * block - 1, side);
+        int side = block + 2 * border;
+        float[] h = heights.level(slot.level().index, bx * block - border, bz * block - border, side);
         float min = Float.POSITIVE_INFINITY;
         float max = Float.NEGATIVE_INFINITY;
-        for (int j = 1; j <= block; j++) {
-            for (int i = 1; i <= block; i++) {
+        for (int j = border; j < border + block; j++) {
+            for (int i = border; i < border + block; i++) {
                 min = Math.min(min, h[j * side + i]);
                 max = Math.max(max, h[j * side + i]);
             }

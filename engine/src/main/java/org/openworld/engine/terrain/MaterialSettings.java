@@ -99,11 +99,6 @@ public record MaterialSettings(
         }
     }
 
-    /** These settings with snow laid by another rule. */
-    public MaterialSettings withSnowMode(SnowMode mode) {
-        return new MaterialSettings(mode, normalMap, glossMap, skyOcclusion, detailScale, farTexels, tiling, cliffs);
-    }
-
     public static final MaterialSettings DEFAULTS = new MaterialSettings(
             SnowMode.SNOW_MAP,
             true,

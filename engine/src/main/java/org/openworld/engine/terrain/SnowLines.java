@@ -30,11 +30,6 @@ public final class SnowLines {
     private SnowLines() {
     }
 
-    /** The snow line of the chosen rule over this height map. */
-    public static SnowLine of(HeightMap map, TerrainSettings terrain, SnowMode mode) {
-        return of(map.min(), map.max(), mode, terrain);
-    }
-
     /** The snow line of the chosen rule over heights normalised from {@code lowest} (0) to {@code highest} (1). */
     static SnowLine of(double lowest, double highest, SnowMode mode, TerrainSettings terrain) {
         return switch (mode) {

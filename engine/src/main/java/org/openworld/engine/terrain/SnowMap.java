@@ -76,17 +76,24 @@ public final class SnowMap {
         int n = map.size();
         byte[] snow = scatter(map, s, seed);
         boolean wrap = map.periodic();
-        int r = s.snowMorphology();
-        if (r > 0) {
-            byte[] tmp = new byte[n * n];
-            // opening: erode, dilate
-            morph(snow, tmp, n, r, wrap, false);
-            morph(tmp, snow, n, r, wrap, true);
-            // closing: dilate, erode
-            morph(snow, tmp, n, r, wrap, true);
-            morph(tmp, snow, n, r, wrap, false);
-        }
+        openAndClose(snow, n, s.snowMorphology(), wrap);
         return new SnowMap(n, map.spacing(), wrap, snow);
+    }
+
+    /**
+     * Step 3 of the class comment on an n × n map of 0 / {@link #SNOW} samples, in place: the opening (erode,
+     * dilate), then the closing (dilate, erode), with a square of radius r; wrapping or clamping at the edges. What
+     * a sample becomes depends on the samples within 4r of it.
+     */
+    static void openAndClose(byte[] snow, int n, int r, boolean wrap) {
+        if (r <= 0) {
+            return;
+        }
+        byte[] tmp = new byte[n * n];
+        morph(snow, tmp, n, r, wrap, false);
+        morph(tmp, snow, n, r, wrap, true);
+        morph(snow, tmp, n, r, wrap, true);
+        morph(tmp, snow, n, r, wrap, false);
     }
 
     /** Snow with probability p(n) per sample (step 2 of the class comment). */

@@ -50,25 +50,18 @@ public final class TerrainMaterials implements Labelled {
 
     /** material.glsl's uniforms in one program, resolved once (the program must include material.glsl and use it). */
     public static Uniforms uniforms(ShaderProgram program) {
-        return new Uniforms(program, true, true, true);
+        return new Uniforms(program, true, true);
     }
 
-    /**
-     * The uniforms of a program that uses all of material.glsl but knows nothing of the relief hiding the sky (the
-     * streamed world's, which has no {@link SkyVisibility}): {@code materials.sky-occlusion} has nothing to switch.
-     */
-    public static Uniforms unoccludedUniforms(ShaderProgram program) {
-        return new Uniforms(program, true, true, false);
-    }
 
     /** The uniforms of a program that calls {@code lightTerrain} only: the normal and gloss map switches. */
     public static Uniforms lightUniforms(ShaderProgram program) {
-        return new Uniforms(program, false, true, true);
+        return new Uniforms(program, false, true);
     }
 
     /** The uniforms of a program that calls {@code terrainMaterial} only: the textures, their scale and the snow. */
     public static Uniforms layerUniforms(ShaderProgram program) {
-        return new Uniforms(program, true, false, false);
+        return new Uniforms(program, true, false);
     }
 
     /**
@@ -93,9 +86,7 @@ public final class TerrainMaterials implements Labelled {
         if (u.light) {
             u.normalMap.set(settings.normalMap() ? 1 : 0);
             u.glossMap.set(settings.glossMap() ? 1 : 0);
-            if (u.skyOcclusion != null) {
-                u.skyOcclusion.set(settings.skyOcclusion() ? 1 : 0);
-            }
+            u.skyOcclusion.set(settings.skyOcclusion() ? 1 : 0);
         }
     }
 
@@ -113,8 +104,7 @@ public final class TerrainMaterials implements Labelled {
 
     /**
      * The resolved uniform handles of material.glsl in one program: those of the layers (textures, scale, snow) and
-     * of the light (normal map, gloss map and sky occlusion switches), or of one of the two; the other part's handles
-     * are null, as is the sky occlusion's in a program without it.
+     * of the light (normal map, gloss map and sky occlusion switches), or of one of the two; the other part's handles are null.
      */
     public static final class Uniforms {
         private final ShaderProgram program;
@@ -129,7 +119,7 @@ public final class TerrainMaterials implements Labelled {
         private final Uniform.Int glossMap;
         private final Uniform.Float skyOcclusion;
 
-        private Uniforms(ShaderProgram program, boolean layers, boolean light, boolean occlusion) {
+        private Uniforms(ShaderProgram program, boolean layers, boolean light) {
             this.program = program;
             this.layers = layers;
             this.light = light;
@@ -140,7 +130,7 @@ public final class TerrainMaterials implements Labelled {
             snowBand = layers ? program.vec2("uMatSnowBand") : null;
             normalMap = light ? program.int1("uMatNormalMap") : null;
             glossMap = light ? program.int1("uMatGlossMap") : null;
-            skyOcclusion = light && occlusion ? program.float1("uMatSkyOcclusion") : null;
+            skyOcclusion = light ? program.float1("uMatSkyOcclusion") : null;
         }
     }
 }

@@ -25,7 +25,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param snowMorphology radius of the opening and the closing that clean up the random snow map, in snow map pixels
  * @param world          {@link World#TILE}: one map, repeated if generated (the paper's); {@link World#UNBOUNDED}: the
  *                       heights made per level ({@link BandedHeights}) and streamed around the camera, never repeating
- * @param memoryBudget   the unbounded world's GPU memory for streamed heights and slopes, MiB: it sets how many
+ * @param memoryBudget   the unbounded world's GPU memory for streamed heights, slopes and snow, MiB: it sets how many
  *                       samples each level keeps around the camera ({@link HeightClipmap})
  */
 public record TerrainSettings(
@@ -55,7 +55,7 @@ public record TerrainSettings(
         int snowMorphology,
         @Setting(doc = "TILE: one map, repeated if generated; UNBOUNDED: made per level around the camera, never "
                 + "repeating", atStart = true) World world,
-        @Setting(doc = "unbounded world: GPU memory for the streamed heights and slopes", unit = "MiB", min = 2,
+        @Setting(doc = "unbounded world: GPU memory for the streamed heights, slopes and snow", unit = "MiB", min = 2,
                 max = 4096, atStart = true) int memoryBudget) {
 
     /** Where the heights come from and how far they reach. */
@@ -79,7 +79,7 @@ public record TerrainSettings(
             0.60,   // ...and is certain on the top 40 %: snow on the upper slopes, as in the paper's figure 1b
             1,      // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
             World.TILE,
-            16);    // MiB: 512² heights and slopes on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
+            20);    // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);

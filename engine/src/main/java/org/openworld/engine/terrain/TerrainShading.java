@@ -72,8 +72,8 @@ final class TerrainShading {
      * material.
      *
      * <p>The streamed world ({@link PatchLayout#streamed()}) has no far material yet: its programs read the slopes
-     * of the clipmap on the gradients' unit, every patch runs a near program, and snow lies by altitude band (no
-     * snow map streams); its far-ground cost is the near program's.
+     * and the snow of the clipmap on the gradients' and the snow map's units, and every patch runs a near program;
+     * its far-ground cost is the near program's.
      *
      * @param base          the tile's heights, for the far material; null for the streamed world
      * @param unitHeights   the unit of the height pyramid (clipmap); the gradients (slopes) and the snow map take
@@ -99,7 +99,7 @@ final class TerrainShading {
         if (layout.streamed()) { // the near material, tinted
             ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_LEVELS"), unitHeights);
             nearSamplers(levels, unitHeights);
-            levelsUniforms = TerrainMaterials.unoccludedUniforms(levels);
+            levelsUniforms = TerrainMaterials.uniforms(levels);
         } else {
             ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"),
                     unitHeights);
@@ -137,8 +137,7 @@ final class TerrainShading {
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
                     with(with(light, tiling.defines()), cliffs.defines()), unitHeights);
             nearSamplers(p, unitHeights);
-            near.put(tiling, layout.streamed() ? new Near(TerrainMaterials.unoccludedUniforms(p), null)
-                    : new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
+            near.put(tiling, new Near(TerrainMaterials.uniforms(p), layout.streamed() ? null : p.vec2("farBand")));
         }
         if (layout.streamed()) {
             return new Lit(near, null);
@@ -153,12 +152,12 @@ final class TerrainShading {
     /** A near program's maps: the slopes, or the gradients, the snow map and the far material it fades into. */
     private void nearSamplers(ShaderProgram p, int unitHeights) {
         p.vec2("heightRange").set(layout.lowest(), 1f / Math.max(1e-3f, layout.highest() - layout.lowest()));
+        p.sampler("snowMap", unitHeights + 2);
         if (layout.streamed()) {
             p.sampler("slopes", unitHeights + 1);
             return;
         }
         p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
-        p.sampler("snowMap", unitHeights + 2);
         farSamplers(p, unitFar);
     }
 
@@ -195,9 +194,7 @@ final class TerrainShading {
             materials = owned.replace("materials", materials, upload(settings.tiling()));
         }
         int all = order.size();
-        if (farMaterial == null) { // no snow map streams: snow by altitude band
-            settings = settings.withSnowMode(MaterialSettings.SnowMode.ALTITUDE_BANDS);
-        } else {
+        if (farMaterial != null) {
             farMaterial.refresh(materials, settings, unitMaterials);
             farMaterial.bind(unitFar);
         }

@@ -157,6 +157,7 @@ public final class TerrainSystem implements EngineSystem {
         if (unbounded != null) {
             unbounded.heightTexture.bind(UNIT_HEIGHTS);
             unbounded.slopeTexture.bind(UNIT_GRADIENTS);
+            unbounded.snowTexture.bind(UNIT_SNOW);
         } else {
             maps.heights.bind(UNIT_HEIGHTS);
             maps.gradients.bind(UNIT_GRADIENTS);
@@ -164,15 +165,10 @@ public final class TerrainSystem implements EngineSystem {
         }
     }
 
-    /**
-     * The snow line in metres of the snow rule in use: the snow map's, or the altitude bands' (the unbounded
-     * world's only rule, over its normalised range).
-     */
+    /** The snow line in metres of the snow rule in use (the snow map's, or the altitude bands') over the heights. */
     private void publishSnowLine(World world, Settings settings) {
-        TerrainSettings terrain = settings.get(TerrainSettings.class);
-        MaterialSettings.SnowMode mode = settings.get(MaterialSettings.class).snowMode();
-        world.setResource(unbounded == null ? SnowLines.of(data.pyramid().base(), terrain, mode)
-                : SnowLines.of(layout.lowest(), layout.highest(), MaterialSettings.SnowMode.ALTITUDE_BANDS, terrain));
+        world.setResource(SnowLines.of(layout.lowest(), layout.highest(),
+                settings.get(MaterialSettings.class).snowMode(), settings.get(TerrainSettings.class)));
     }
 
     @Override

@@ -1,5 +1,6 @@
 package org.openworld.engine.terrain;
 
+import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.util.Locale;
 import java.util.concurrent.ExecutorService;
@@ -15,15 +16,16 @@ import org.openworld.engine.settings.SettingsException;
 
 /**
  * The unbounded world ({@code terrain.world=UNBOUNDED}, issue 20) as the terrain draws it: the heights of
- * {@link BandedHeights}, streamed level by level around the camera by a {@link HeightClipmap} into two texture
- * arrays (heights, and slopes for the shading), and a {@link TerrainQuadtree} over one root whose copies, laid on a
+ * {@link BandedHeights}, streamed level by level around the camera by a {@link HeightClipmap} into three texture
+ * arrays (heights; slopes and snow for the shading), and a {@link TerrainQuadtree} over one root whose copies, laid on a
  * lattice of the root's side around the camera, are each a different piece of the world.
  *
  * <p><b>Roots.</b> A root is a node of level R: N · 2^R level-0 samples a side, about {@value #ROOT_METRES} m. The
  * quadtree is the same for every root; only where the vertex shader reads the heights differs (the root's offset,
  * in samples, added to its sample index: {@code shaders/terrain/terrain.vert} with {@code TERRAIN_CLIPMAP}). The
  * world being statistically the same everywhere, a level's error is one figure ({@link BandedHeights#levelErrors})
- * and every box spans the world's height bounds ({@link BandedHeights#lowest}, {@link BandedHeights#highest}).
+ * and every box spans the world's height bounds ({@link BandedHeights#lowest}, {@link BandedHeights#highest}),
+ * narrowed for the level rule where the node's blocks are resident ({@link #heightRange}).
  *
  * <p><b>Streaming.</b> The clipmap keeps levels 0 .. R, each a window of {@code size²} samples (from
  * {@code terrain.memory-budget}), and makes the blocks a moving camera lacks on worker threads, ahead of it by its
@@ -32,7 +34,7 @@ import org.openworld.engine.settings.SettingsException;
  * coarser ground that covers it, never a hole. At start, and after a jump of the camera, the terrain waits until
  * the middle of every window is full: a first frame is the same whatever the machine's speed.
  *
- * <p><b>Memory.</b> Heights R32F and slopes RG16F, four bytes a texel each: 2 · levels · size² · 4 bytes on the
+ * <p><b>Memory.</b> Heights R32F, slopes RG16F, snow RG8: {@value #TEXEL_BYTES} · levels · size² bytes on the
  * GPU, fixed whatever the distance flown; on the Java side the bands' tiles (a MiB each) and the blocks in flight,
  * bounded by the clipmap.
  */
@@ -42,8 +44,10 @@ final class UnboundedWorld implements Residency, AutoCloseable {
     static final double ROOT_METRES = 8192;
     /** Samples per side of a streamed block. */
     static final int BLOCK = 64;
-    /** Blocks uploaded per frame at most: 64 · 64 · 8 bytes each, half a MiB a frame. */
+    /** Blocks uploaded per frame at most: 64 · 64 · 10 bytes each, 320 KiB a frame. */
     static final int UPLOADS_PER_FRAME = 8;
+    /** GPU bytes per sample of a level: height R32F, slopes RG16F, snow and sky RG8. */
+    static final int TEXEL_BYTES = 4 + 4 + 2;
 
     private final BandedHeights heights;
     private final HeightClipmap clipmap;
@@ -51,7 +55,11 @@ final class UnboundedWorld implements Residency, AutoCloseable {
     private final ExecutorService workers;
     final TextureArray heightTexture;
     final TextureArray slopeTexture;
+    /** r: the snow's coverage ({@link StreamedSnow}); g: the share of the sky seen, 1 everywhere for now. */
+    final TextureArray snowTexture;
+    private final StreamedSnow snow;
     private final FloatBuffer staging;
+    private final ByteBuffer snowStaging;
     private final float[] levelRange = new float[2];
     private final int levels;
     private final int rootRadius;
@@ -88,33 +96,38 @@ final class UnboundedWorld implements Residency, AutoCloseable {
             t.setPriority(Thread.MIN_PRIORITY);
             return t;
         });
-        clipmap = new HeightClipmap(heights, levels, size, BLOCK, workers);
+        snow = times.time("snow table", () -> new StreamedSnow(s, seed));
+        clipmap = new HeightClipmap(heights, levels, size, BLOCK, Math.max(1, StreamedSnow.border(s)), workers);
         heightTexture = context.own("clipmap.heights",
                 TextureArray.empty(context.gl(), size, size, levels, Format.R32F, Sampling.NEAREST_CLAMP));
         slopeTexture = context.own("clipmap.slopes",
                 TextureArray.empty(context.gl(), size, size, levels, Format.RG16F, Sampling.LINEAR_REPEAT));
+        snowTexture = context.own("clipmap.snow",
+                TextureArray.empty(context.gl(), size, size, levels, Format.RG8, Sampling.LINEAR_REPEAT));
         staging = MemoryUtil.memAllocFloat(2 * BLOCK * BLOCK);
+        snowStaging = MemoryUtil.memAlloc(2 * BLOCK * BLOCK);
         markUnwritten(size);
         this.progress = progress;
         progress.accept(String.format(Locale.ROOT, "terrain: %d levels of %d² samples stream around the camera "
-                + "(%.0f MiB of %d MiB)", levels, size, 2.0 * clipmap.textureBytes() / (1 << 20), s.memoryBudget()));
+                + "(%.0f MiB of %d MiB)", levels, size, textureBytes() / (double) (1 << 20), s.memoryBudget()));
     }
 
     /**
-     * Samples per side of each level's window: the most {@code terrain.memory-budget} holds, heights and slopes
-     * alike. The coarsest window must hold every root drawn: they reach (radius + 1) root sides from the camera,
+     * Samples per side of each level's window: the most {@code terrain.memory-budget} holds at
+     * {@value #TEXEL_BYTES} bytes a sample (heights, slopes, snow). The coarsest window must hold every root drawn: they reach (radius + 1) root sides from the camera,
      * and the camera may lie as little as a quarter of the window inside it (the clipmap's lead).
      */
     private static int clipSize(TerrainSettings s, int levels, double coarsestSpacing, double rootSide, int radius) {
         long budget = (long) s.memoryBudget() << 20;
         int least = Integer.highestOneBit((int) Math.ceil(4 * (radius + 1) * rootSide / coarsestSpacing) - 1) << 1;
-        long leastMib = Math.max(1, (2L * levels * least * least * Float.BYTES) >> 20);
-        if (2L * levels * least * least * Float.BYTES > budget) {
+        long leastBytes = (long) TEXEL_BYTES * levels * least * least;
+        long leastMib = (leastBytes + (1 << 20) - 1) >> 20;
+        if (leastBytes > budget) {
             throw new SettingsException("terrain.memory-budget=" + s.memoryBudget() + " MiB is too little for the "
                     + "unbounded world: its " + levels + " levels need " + least + "² samples each to reach "
                     + (int) ((radius + 1) * rootSide / 1000) + " km, " + leastMib + " MiB or more");
         }
-        return HeightClipmap.sizeFor(budget / 2, levels, BLOCK);
+        return HeightClipmap.sizeFor(budget * Float.BYTES / TEXEL_BYTES, levels, BLOCK);
     }
 
     /**
@@ -196,24 +209,30 @@ final class UnboundedWorld implements Residency, AutoCloseable {
         clipmap.drain(UPLOADS_PER_FRAME, this::upload);
     }
 
-    /** Uploads a block given with a one-sample border: its heights, and its slopes by central differences. */
-    private void upload(int level, int texelX, int texelZ, int block, float[] bordered) {
-        int side = block + 2;
+    /** Uploads a block given with its border: its heights, its slopes by central differences, and its snow. */
+    private void upload(int level, long ix0, long iz0, int texelX, int texelZ, int block, float[] bordered) {
+        int border = clipmap.border();
+        int side = block + 2 * border;
         staging.clear();
-        for (int j = 1; j <= block; j++) {
-            staging.put(bordered, j * side + 1, block);
+        for (int j = border; j < border + block; j++) {
+            staging.put(bordered, j * side + border, block);
         }
         heightTexture.upload(level, texelX, texelZ, block, block, staging.flip());
         float inv2d = (float) (1 / (2 * heights.spacing(level)));
         staging.clear();
-        for (int j = 1; j <= block; j++) {
-            for (int i = 1; i <= block; i++) {
+        for (int j = border; j < border + block; j++) {
+            for (int i = border; i < border + block; i++) {
                 int at = j * side + i;
                 staging.put((bordered[at + 1] - bordered[at - 1]) * inv2d);
                 staging.put((bordered[at + side] - bordered[at - side]) * inv2d);
             }
         }
         slopeTexture.upload(level, texelX, texelZ, block, block, staging.flip());
+        snowStaging.clear();
+        for (byte b : snow.block(level, ix0, iz0, block, bordered, border)) {
+            snowStaging.put(b).put((byte) 255);
+        }
+        snowTexture.upload(level, texelX, texelZ, block, block, snowStaging.flip());
     }
 
     /**
@@ -289,7 +308,7 @@ final class UnboundedWorld implements Residency, AutoCloseable {
 
     /** Bytes the two texture arrays take on the GPU. */
     long textureBytes() {
-        return 2 * clipmap.textureBytes();
+        return clipmap.textureBytes() / Float.BYTES * TEXEL_BYTES;
     }
 
     @Override
@@ -297,5 +316,6 @@ final class UnboundedWorld implements Residency, AutoCloseable {
         clipmap.close();
         workers.shutdownNow();
         MemoryUtil.memFree(staging);
+        MemoryUtil.memFree(snowStaging);
     }
 }

@@ -35,9 +35,11 @@
  * (8 km) lie on a lattice around the camera as the tile's copies do, each a different piece of the world; a node is
  * split only into children whose levels are resident ({@link org.openworld.engine.terrain.Residency}), so a block
  * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.UnboundedWorld}). Cost:
- * {@code 2 · levels · S² · 4} bytes of GPU memory, 16 MiB by default whatever the distance flown; a 64² block takes
- * 0.35–1.2 ms of a worker. Limits: one geometric error per level (the world is statistically uniform), boxes the
- * world's height bounds; no baked far material, snow map or sky occlusion on it yet.
+ * {@code 10 · levels · S²} bytes of GPU memory (heights, slopes, snow), 20 MiB by default whatever the distance
+ * flown; a 64² block takes 0.35–1.2 ms of a worker. Its snow ({@link org.openworld.engine.terrain.StreamedSnow}) is
+ * the tile's rule with a hash for a random stream, so blocks join without seams; coarser levels show its mean.
+ * Limits: one geometric error per level (the world is statistically uniform), boxes the world's height bounds where
+ * no blocks narrow them; no baked far material or sky occlusion on it yet.
  *
  * <p><b>Pyramid (2.5).</b> {@link org.openworld.engine.terrain.HeightPyramid#build} low-passes each level with the
  * binomial kernel (1 4 6 4 1)/16 (a Gaussian of σ ≈ 1 sample, response cos⁴(πf)) and keeps every other sample.

@@ -30,6 +30,8 @@ class HeightClipmapTest {
     private static final int LEVELS = 4;
     private static final int SIZE = 64;
     private static final int BLOCK = 8;
+    /** Samples of border each block carries (the unbounded world's snow needs ten). */
+    private static final int BORDER = 3;
     private static final int BLOCKS = (SIZE / BLOCK) * (SIZE / BLOCK);
     /** A point where every level's window is centred exactly: a multiple of the coarsest level's block, metres. */
     private static final double ALIGNED = 40 * BLOCK * 16.0;
@@ -49,7 +51,7 @@ class HeightClipmapTest {
     }
 
     /**
-     * Each block handed over is heights.level of its place, with a border of one sample; the window is resident,
+     * Each block handed over is heights.level of its place, with its border; the window is resident,
      * and no sample beyond it.
      */
     @Test
@@ -62,7 +64,7 @@ class HeightClipmapTest {
             for (Upload u : texture.uploads) {
                 long ix0 = sampleOf(clipmap.windowX(u.level), u.texelX);
                 long iz0 = sampleOf(clipmap.windowZ(u.level), u.texelZ);
-                assertArrayEquals(WORLD.level(u.level, ix0 - 1, iz0 - 1, BLOCK + 2), u.heights,
+                assertArrayEquals(WORLD.level(u.level, ix0 - BORDER, iz0 - BORDER, BLOCK + 2 * BORDER), u.heights,
                         "level " + u.level + " block at " + ix0 + ", " + iz0);
             }
             assertTextureIsTheWorld(clipmap, texture);
@@ -170,7 +172,7 @@ class HeightClipmapTest {
     void aMoveKeepsTheJobsForBlocksThatStay() throws InterruptedException {
         ThreadPoolExecutor one = (ThreadPoolExecutor) Executors.newFixedThreadPool(1);
         CountDownLatch hold = new CountDownLatch(1);
-        try (HeightClipmap clipmap = new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, one)) {
+        try (HeightClipmap clipmap = new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, BORDER, one)) {
             one.execute(() -> {
                 try {
                     hold.await();
@@ -216,7 +218,7 @@ class HeightClipmapTest {
             for (Upload u : texture.uploads) {
                 long ix0 = sampleOf(clipmap.windowX(u.level), u.texelX);
                 long iz0 = sampleOf(clipmap.windowZ(u.level), u.texelZ);
-                assertArrayEquals(WORLD.level(u.level, ix0 - 1, iz0 - 1, BLOCK + 2), u.heights,
+                assertArrayEquals(WORLD.level(u.level, ix0 - BORDER, iz0 - BORDER, BLOCK + 2 * BORDER), u.heights,
                         "level " + u.level + " block at texel " + u.texelX + ", " + u.texelZ + " belongs to Q");
             }
         }
@@ -347,7 +349,7 @@ class HeightClipmapTest {
     @Test
     void blocksArriveNearestFirstAndCoarserLevelsFirst() throws InterruptedException {
         ExecutorService one = Executors.newSingleThreadExecutor();
-        try (HeightClipmap clipmap = new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, one)) {
+        try (HeightClipmap clipmap = new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, BORDER, one)) {
             double x = 1000.3;
             double z = -2000.7;
             clipmap.follow(x, z, 0, 0);
@@ -408,12 +410,16 @@ class HeightClipmapTest {
     /** Impossible shapes are refused with a message that names the rule. */
     @Test
     void badShapesAreRefusedClearly() {
-        assertMessage("power of two", () -> new HeightClipmap(WORLD, LEVELS, 96, BLOCK, workers));
-        assertMessage("at least 4 blocks", () -> new HeightClipmap(WORLD, LEVELS, 16, BLOCK, workers));
-        assertMessage("block must be a power of two", () -> new HeightClipmap(WORLD, LEVELS, SIZE, 6, workers));
-        assertMessage("1 .. " + WORLD.levels() + " levels", () -> new HeightClipmap(WORLD, 0, SIZE, BLOCK, workers));
+        assertMessage("power of two", () -> new HeightClipmap(WORLD, LEVELS, 96, BLOCK, BORDER, workers));
+        assertMessage("at least 4 blocks", () -> new HeightClipmap(WORLD, LEVELS, 16, BLOCK, BORDER, workers));
+        assertMessage("block must be a power of two",
+                () -> new HeightClipmap(WORLD, LEVELS, SIZE, 6, BORDER, workers));
+        assertMessage("border must be 0 .. " + BLOCK,
+                () -> new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, BLOCK + 1, workers));
         assertMessage("1 .. " + WORLD.levels() + " levels",
-                () -> new HeightClipmap(WORLD, WORLD.levels() + 1, SIZE, BLOCK, workers));
+                () -> new HeightClipmap(WORLD, 0, SIZE, BLOCK, BORDER, workers));
+        assertMessage("1 .. " + WORLD.levels() + " levels",
+                () -> new HeightClipmap(WORLD, WORLD.levels() + 1, SIZE, BLOCK, BORDER, workers));
         try (HeightClipmap clipmap = clipmap()) {
             assertMessage("must be finite", () -> clipmap.follow(Double.NaN, 0, 0, 0));
             assertMessage("empty rectangle", () -> clipmap.resident(0, 5, 0, 5, 1));
@@ -433,7 +439,7 @@ class HeightClipmapTest {
     }
 
     private HeightClipmap clipmap() {
-        return new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, workers);
+        return new HeightClipmap(WORLD, LEVELS, SIZE, BLOCK, BORDER, workers);
     }
 
     private static void assertMessage(String part, Runnable call) {
@@ -485,11 +491,13 @@ class HeightClipmapTest {
         final List<Upload> uploads = new ArrayList<>();
 
         @Override
-        public void upload(int level, int texelX, int texelZ, int block, float[] heights) {
+        public void upload(int level, long ix0, long iz0, int texelX, int texelZ, int block, float[] heights) {
+            assertEquals(texelX, (int) (ix0 & (SIZE - 1)), "texel column of the block's first sample");
+            assertEquals(texelZ, (int) (iz0 & (SIZE - 1)), "texel row of the block's first sample");
             uploads.add(new Upload(level, texelX, texelZ, heights));
             for (int j = 0; j < block; j++) { // the block without its border
-                System.arraycopy(heights, (j + 1) * (block + 2) + 1, texels[level], (texelZ + j) * SIZE + texelX,
-                        block);
+                System.arraycopy(heights, (j + BORDER) * (block + 2 * BORDER) + BORDER, texels[level],
+                        (texelZ + j) * SIZE + texelX, block);
             }
         }
     }

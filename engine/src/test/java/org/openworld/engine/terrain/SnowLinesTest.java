@@ -29,7 +29,7 @@ class SnowLinesTest {
 
     @Test
     void theSnowMapsLineIsItsNormalisedHeightsInMetres() {
-        SnowLine line = SnowLines.of(NORMALISED, S, SnowMode.SNOW_MAP);
+        SnowLine line = SnowLines.of(NORMALISED.min(), NORMALISED.max(), SnowMode.SNOW_MAP, S);
         // 35 % and 60 % of the way up from the lowest sample, −120 m
         assertEquals(-120 + 0.35 * 800, line.start(), 1e-3);
         assertEquals(-120 + 0.60 * 800, line.full(), 1e-3);
@@ -42,7 +42,7 @@ class SnowLinesTest {
 
     @Test
     void theAltitudeBandsLineIsTheNarrowBandTheMaterialsDraw() {
-        SnowLine line = SnowLines.of(NORMALISED, S, SnowMode.ALTITUDE_BANDS);
+        SnowLine line = SnowLines.of(NORMALISED.min(), NORMALISED.max(), SnowMode.ALTITUDE_BANDS, S);
         assertEquals(-120 + SnowLines.BAND_LINE * 800, (line.start() + line.full()) / 2, 1e-3);
         assertEquals(2 * SnowLines.BAND_EDGE * 800, line.full() - line.start(), 1e-3);
         assertTrue(line.full() - line.start() < 0.01 * 800, "a sharp line, not the snow map's wide fringe");
@@ -53,7 +53,7 @@ class SnowLinesTest {
         // a plateau from 1000 to 1400 m: its normalised 0.5 is 1200 m, whatever the settings' relief says
         HeightMap plateau = ramp(1000, 1400);
         assertEquals(1200, SnowLines.metres(plateau.min(), plateau.max(), 0.5), 1e-3);
-        SnowLine line = SnowLines.of(plateau, S, SnowMode.SNOW_MAP);
+        SnowLine line = SnowLines.of(plateau.min(), plateau.max(), SnowMode.SNOW_MAP, S);
         assertEquals(1000 + 0.35 * 400, line.start(), 1e-3);
         assertEquals(1000 + 0.60 * 400, line.full(), 1e-3);
     }

@@ -178,6 +178,43 @@ class UnboundedWorldTest {
         assertEquals(0, differ, "pixels that differ between the two flights");
     }
 
+    /**
+     * The streamed snow map reaches the picture: over the snow line the view from above is much brighter with the
+     * default snow rule than with snow moved beyond the highest ground (snow-base 0.99), all else equal. With the
+     * snow texture unread, or read from the wrong level or place, the two would match.
+     */
+    @Test
+    void theStreamedSnowShows() {
+        double withSnow = meanLuma(List.of());
+        double without = meanLuma(List.of("terrain.snow-full=1", "terrain.snow-base=0.99"));
+        assertTrue(withSnow > without + 20, "mean luma with snow " + withSnow + ", without " + without);
+    }
+
+    private static double meanLuma(List<String> more) {
+        List<String> settings = new java.util.ArrayList<>(SETTINGS);
+        settings.addAll(more);
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, settings, new TerrainSystem(),
+                new CullingSystem())) {
+            HeightField ground = engine.world().resource(HeightField.class);
+            // the highest ground along a line: snow there whatever the seed's luck
+            double bestX = 0;
+            for (double x = 0; x < 20_000; x += 100) {
+                bestX = ground.heightAt(x, 0) > ground.heightAt(bestX, 0) ? x : bestX;
+            }
+            engine.world().resource(Camera.class).setPose(new CameraPose(bestX, ground.heightAt(bestX, 0) + 400, 0,
+                    0, -89, 60));
+            Image image = frame(engine);
+            double sum = 0;
+            for (int y = 0; y < HEIGHT; y++) {
+                for (int x = 0; x < WIDTH; x++) {
+                    sum += 0.2126 * image.channel(x, y, 0) + 0.7152 * image.channel(x, y, 1)
+                            + 0.0722 * image.channel(x, y, 2);
+                }
+            }
+            return sum / (WIDTH * HEIGHT);
+        }
+    }
+
     /** Flies 100 steps along {@code path} (x, z by step, 300 m over the ground), then hovers at {@code end}. */
     private static Image afterFlight(CameraPose end, java.util.function.IntFunction<double[]> path) {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, SETTINGS, new TerrainSystem(),
