@@ -41,10 +41,10 @@ import org.openworld.engine.terrain.ClipmapLevel.Slot;
  * texels and stays resident. A slot whose wanted block changed gets a new generation number and is queued, unless
  * its texels already hold that block (the window came back before the slot was overwritten). Until the new block is
  * drained, {@link #resident} is false over it: the texels still hold the old place. A block is the exact window
- * {@code heights.level(L, bx · block, bz · block, block)}; a finished block whose generation is no longer its
- * slot's (the camera moved on) is dropped, never handed to the sink, and a worker skips a job that went stale while
- * it waited. Since every height is a pure function of (L, ix, iz), the texels are the same bits whatever path the
- * camera took, in whatever order blocks were made, on whatever thread.
+ * {@code heights.level(L, bx · block − b, bz · block − b, block + 2b)}, b its {@link #border()}; one finished for a
+ * generation no longer its slot's (the camera moved on) is dropped, and a worker skips a job gone stale while it
+ * waited. Every height being a pure function of (L, ix, iz), the texels are the same bits whatever path the camera
+ * took, in whatever order blocks were made, on whatever thread.
  *
  * <h2>Order of work</h2>
  * Blocks are made and drained nearest first, by their ring around the camera: the Chebyshev distance, in blocks of
@@ -57,19 +57,18 @@ import org.openworld.engine.terrain.ClipmapLevel.Slot;
  * At most {@code 2 × availableProcessors} jobs are out at once: on the executor (running or waiting) or finished and
  * not yet drained, stale ones included; the rest wait in this class's own queue, which holds slots, not heights. The
  * workers therefore never run more than about one job per thread ahead of the uploads, and
- * {@link #pendingBytes()} stays at most {@link #maxPendingBytes()} = {@code 2 × processors × block² × 4} bytes
- * whatever the speed of flight (64 KiB on 2 processors with block 64). A fast camera makes the queue long, not the
- * heap big.
+ * {@link #pendingBytes()} stays at most {@link #maxPendingBytes()} = {@code 2 × processors × (block + 2b)² × 4}
+ * bytes whatever the speed of flight (113 KiB on 2 processors with block 64 and the border of 10 the unbounded
+ * world's snow needs). A fast camera makes the queue long, not the heap big.
  *
  * <h2>Threads</h2>
- * {@link #follow}, {@link #drain}, {@link #resident}, {@link #heightRange} and the accessors are called from one
- * thread (the GL thread); only {@code heights.level} and a block's min/max run on the workers. A worker hands its
+ * Everything but {@code heights.level} and a block's min/max runs on one thread (the GL thread). A worker hands its
  * result over through a {@link ConcurrentLinkedQueue}; a slot's generation is volatile, the one field workers read.
  * Nothing waits: {@link #drain} takes what has finished and returns.
  *
  * <h2>Cost</h2>
- * Texture: {@code levels · size² · 4} bytes ({@link #textureBytes()}, 8 MiB for 8 levels of 512²). A block:
- * {@code block²} heights of one 16-sample B-spline per band at or above its level: measured on one core of a 2-core
+ * Texture: {@code levels · size² · 4} bytes ({@link #textureBytes()}, 8 MiB for 8 levels of 512²). A block: its
+ * heights (border too) of one 16-sample B-spline per band at or above its level: measured on one core of a 2-core
  * machine, 1.2 ms for 64² of level 0 (9 bands), 0.35 ms of level 7 (2 bands); the whole default clipmap (8 levels
  * of 512², 512 blocks) filled in 0.42 s on 2 workers. Flying at speed v along an axis, level L uncovers a column of
  * {@code size/block} blocks every {@code block · d_L} metres; summed over levels that is under
@@ -276,16 +275,17 @@ public final class HeightClipmap implements AutoCloseable {
 
     /** Bytes of heights held on the Java side now: jobs submitted and not yet drained, a block's bytes each. */
     public long pendingBytes() {
-        return (long) outstanding * block * block * Float.BYTES;
+        return outstanding * blockBytes();
     }
 
     /** The bound on {@link #pendingBytes()}: 2 × processors blocks. */
     public long maxPendingBytes() {
-        return (long) maxInFlight * block * block * Float.BYTES;
+        return maxInFlight * blockBytes();
     }
 
-    public int levels() {
-        return levels.length;
+    /** A block's heights with their border, bytes. */
+    private long blockBytes() {
+        return (long) (block + 2 * border) * (block + 2 * border) * Float.BYTES;
     }
 
     public int size() {
@@ -295,14 +295,6 @@ public final class HeightClipmap implements AutoCloseable {
     /** Samples of border every block is handed with, on each side. */
     public int border() {
         return border;
-    }
-
-    public int block() {
-        return block;
-    }
-
-    public BandedHeights heights() {
-        return heights;
     }
 
     /** Bytes the GPU copy takes: levels · size² · 4. */

@@ -271,8 +271,9 @@ class HeightClipmapTest {
     @Test
     void pendingBytesStayBoundedOnALongFastFlight() throws InterruptedException {
         try (HeightClipmap clipmap = clipmap()) {
-            assertEquals(2L * Runtime.getRuntime().availableProcessors() * BLOCK * BLOCK * Float.BYTES,
-                    clipmap.maxPendingBytes(), "the bound: 2 × processors blocks of floats");
+            int side = BLOCK + 2 * BORDER;
+            assertEquals(2L * Runtime.getRuntime().availableProcessors() * side * side * Float.BYTES,
+                    clipmap.maxPendingBytes(), "the bound: 2 × processors blocks of floats, borders included");
             Texture texture = new Texture();
             long peak = 0;
             double x = 0;
