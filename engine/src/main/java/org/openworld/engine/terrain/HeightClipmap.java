@@ -69,11 +69,13 @@ import org.openworld.engine.terrain.ClipmapLevel.Slot;
  * <h2>Cost</h2>
  * Texture: {@code levels · size² · 4} bytes ({@link #textureBytes()}, 8 MiB for 8 levels of 512²). A block: its
  * heights (border too) of one 16-sample B-spline per band at or above its level: measured on one core of a 2-core
- * machine, 1.2 ms for 64² of level 0 (9 bands), 0.35 ms of level 7 (2 bands); the whole default clipmap (8 levels
- * of 512², 512 blocks) filled in 0.42 s on 2 workers. Flying at speed v along an axis, level L uncovers a column of
+ * machine with the border of 10 (84² samples), 1.95 ms for a 64² block of level 0 (9 bands), 0.57 ms of level 7
+ * (2 bands); with a one-sample border (66²) they were 1.2 and 0.35 ms, the cost growing with the samples made. The
+ * whole default clipmap (8 levels of 512², 512 blocks) fills in 0.37 s on 2 workers once warm (0.25 s with the
+ * one-sample border). Flying at speed v along an axis, level L uncovers a column of
  * {@code size/block} blocks every {@code block · d_L} metres; summed over levels that is under
  * {@code 2 · v · (size/block) / (block · d_0)} blocks per second: 37 a second at 300 m/s with the defaults (2 m,
- * 512, 64), about 45 ms of one core per second of flight. In a 10 s flight at 300 m/s, draining 4 blocks a frame,
+ * 512, 64), about 70 ms of one core per second of flight. In a 10 s flight at 300 m/s, draining 4 blocks a frame,
  * level 0 within 128 m of the camera was resident in all 600 frames.
  *
  * <h2>Limits</h2>

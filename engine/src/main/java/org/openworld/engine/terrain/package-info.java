@@ -36,7 +36,7 @@
  * split only into children whose levels are resident ({@link org.openworld.engine.terrain.Residency}), so a block
  * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.UnboundedWorld}). Cost:
  * {@code 10 · levels · S²} bytes of GPU memory (heights, slopes, snow), 20 MiB by default whatever the distance
- * flown; a 64² block takes 0.35–1.2 ms of a worker. Its snow ({@link org.openworld.engine.terrain.StreamedSnow}) is
+ * flown; a 64² block takes 0.57–1.95 ms of a worker. Its snow ({@link org.openworld.engine.terrain.StreamedSnow}) is
  * the tile's rule with a hash for a random stream, so blocks join without seams; coarser levels show its mean.
  * Limits: one geometric error per level (the world is statistically uniform), boxes the world's height bounds where
  * no blocks narrow them; no baked far material or sky occlusion on it yet.
