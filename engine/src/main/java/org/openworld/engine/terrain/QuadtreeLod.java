@@ -296,14 +296,14 @@ final class QuadtreeLod implements LodScheme {
         int column = tree.column(node);
         int row = tree.row(node);
         int i = out.add(node, copy, tree.sampleX(node), tree.sampleZ(node), 1 << level, level, 0);
-        out.setMorph(i, morphStart(node), morphEnd(node));
+        out.setMorph(i, morphStart(copy, node), morphEnd(node));
         for (Side side : SIDES) {
             int neighbour = selectedAt(copy, level, column + side.dx(), row + side.dz());
             int shared = neighbour < 0 ? level : Math.max(level, tree.level(neighbour));
             sideLevel[side.ordinal()] = shared;
             out.setSide(i, side, shared, shared - level);
             if (neighbour >= 0 && tree.level(neighbour) == shared) {
-                out.setSideMorph(i, side, morphStart(neighbour), morphEnd(neighbour));
+                out.setSideMorph(i, side, morphStart(foundCopy, neighbour), morphEnd(neighbour));
             }
         }
         for (Corner corner : CORNERS) {
@@ -312,7 +312,7 @@ final class QuadtreeLod implements LodScheme {
             int cornerLevel = diagonal < 0 ? coarsest : Math.max(coarsest, tree.level(diagonal));
             out.setCorner(i, corner, cornerLevel);
             if (diagonal >= 0 && tree.level(diagonal) == cornerLevel) {
-                out.setCornerMorph(i, corner, morphStart(diagonal), morphEnd(diagonal));
+                out.setCornerMorph(i, corner, morphStart(foundCopy, diagonal), morphEnd(diagonal));
             }
         }
     }
@@ -329,13 +329,16 @@ final class QuadtreeLod implements LodScheme {
 
     /**
      * Where a node starts to morph, metres: beyond every vertex it has when it appears (its own fine-enough distance
-     * plus its box's diagonal), so that it then shows its own surface, as its children did at k = 1; at most its end.
+     * plus its box's diagonal, the box's heights narrowed where {@link Residency#heightRange} knows them: a streamed
+     * world's boxes span all its heights, and a diagonal that long would leave no band), so that it then shows its own
+     * surface, as its children did at k = 1; at most its end.
      */
-    private float morphStart(int node) {
+    private float morphStart(int copy, int node) {
         float[] boxes = bounds.boxes();
         int b = 6 * node;
         double dx = boxes[b + 3] - boxes[b];
-        double dy = boxes[b + 4] - boxes[b + 1];
+        double dy = residency.heightRange(node, lattice.offsetX(copy), lattice.offsetZ(copy), range)
+                ? range[1] - range[0] : boxes[b + 4] - boxes[b + 1];
         double dz = boxes[b + 5] - boxes[b + 2];
         double appears = limit.fineFrom(tree.level(node), tree.error(node)) + Math.sqrt(dx * dx + dy * dy + dz * dz);
         return (float) Math.min(morphEnd(node), appears);
