@@ -49,6 +49,7 @@ void main() {
     float levelExtent = clipExtent * exp2(float(lodLevel));
     vec3 clipUv = vec3(wsPos.xz / levelExtent + 0.5 / float(textureSize(slopes, 0).x), float(lodLevel));
     vec2 slope = texture(slopes, clipUv).xy;
+    vec2 snowAndSky = texture(snowMap, clipUv).rg; // read by the near material only
 #else
     vec2 uv = wsPos.xz / extent + 0.5;
   #ifdef TERRAIN_FAR
@@ -72,13 +73,7 @@ void main() {
     color = color * color;
 #else
     MatTexel m;
-  #ifdef TERRAIN_CLIPMAP
-    s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
-    vec2 snowAndSky = texture(snowMap, clipUv).rg;
-    s.snow = snowAndSky.r;
-    s.skyVisibility = snowAndSky.g;
-    m = terrainMaterial(s, length(cameraPos() - wsPos), matMacroTint(wsPos.xz));
-  #elif defined(TERRAIN_FAR)
+  #ifdef TERRAIN_FAR
     vec4 far = texture(farColour, uv);
     m.albedo = far.rgb;
     m.slope = farSlopes.rg * 2.0 - 1.0;
@@ -86,17 +81,21 @@ void main() {
     m.gloss = far.a;
     s.skyVisibility = 1.0; // taken into the sky light per vertex (terrain.vert)
   #else
-    vec4 far = texture(farColour, uv);
     s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
+    #ifndef TERRAIN_CLIPMAP
     vec2 snowAndSky = texture(snowMap, uv).rg;
+    #endif
     s.snow = snowAndSky.r;
     s.skyVisibility = snowAndSky.g;
     float eyeDistance = length(cameraPos() - wsPos);
     m = terrainMaterial(s, eyeDistance, matMacroTint(wsPos.xz));
+    #ifndef TERRAIN_CLIPMAP // fade into the baked far material (the streamed world has none yet)
+    vec4 far = texture(farColour, uv);
     float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
     m.albedo = mix(m.albedo, far.rgb, toFar);
     m.slope = mix(m.slope, texture(farSlope, uv).rg * 2.0 - 1.0, toFar);
     m.gloss = mix(m.gloss, far.a, toFar);
+    #endif
   #endif
     vec3 color = lightTerrain(s, m);
   #ifdef TERRAIN_LEVELS

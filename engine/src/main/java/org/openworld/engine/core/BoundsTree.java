@@ -52,9 +52,14 @@ public final class BoundsTree {
      * of a periodic tile), metres; 0 inside. The bound a level-of-detail rule needs, and the order of drawing.
      */
     public double distance(int node, float offsetX, float offsetZ, Vector3fc p) {
+        return distance(node, offsetX, offsetZ, boxes[6 * node + 1], boxes[6 * node + 4], p);
+    }
+
+    /** As {@link #distance(int, float, float, Vector3fc)}, with the box's heights replaced by {@code minY .. maxY}. */
+    public double distance(int node, float offsetX, float offsetZ, float minY, float maxY, Vector3fc p) {
         int b = 6 * node;
         double dx = Math.max(0, Math.max(boxes[b] + offsetX - p.x(), p.x() - boxes[b + 3] - offsetX));
-        double dy = Math.max(0, Math.max(boxes[b + 1] - p.y(), p.y() - boxes[b + 4]));
+        double dy = Math.max(0, Math.max(minY - p.y(), p.y() - maxY));
         double dz = Math.max(0, Math.max(boxes[b + 2] + offsetZ - p.z(), p.z() - boxes[b + 5] - offsetZ));
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }

@@ -101,10 +101,12 @@ public final class BandedHeights implements HeightField {
      * 0 .. count − 1 (0 for level 0): {@link #surface} of level L against level 0, the largest difference at
      * {@value #ERROR_SAMPLES} random places (the same places for every seed), raised by {@value #ERROR_MARGIN}.
      * The world is statistically the same everywhere, so one figure per level stands for every node of that level;
-     * it is an estimate, not a bound: somewhere in an unbounded world a larger error exists. Levels beyond the
-     * bands have the coarsest band's error plus nothing finer: they are drawn only as the coarsest band.
+     * it is an estimate, not a bound: somewhere in an unbounded world a larger error exists.
+     *
+     * @param count 1 .. {@link #levels()}
      */
     public float[] levelErrors(int count) {
+        checkLevel(count - 1);
         float[] errors = new float[count];
         SplittableRandom random = new SplittableRandom(STREAM);
         double[] xs = new double[ERROR_SAMPLES];
@@ -115,10 +117,9 @@ public final class BandedHeights implements HeightField {
             zs[i] = (random.nextDouble() - 0.5) * span;
         }
         IntStream.range(1, count).parallel().forEach(level -> {
-            int l = Math.min(level, bands.length - 1);
             double worst = 0;
             for (int i = 0; i < ERROR_SAMPLES; i++) {
-                worst = Math.max(worst, Math.abs(height(0, xs[i], zs[i]) - surface(l, xs[i], zs[i])));
+                worst = Math.max(worst, Math.abs(height(0, xs[i], zs[i]) - surface(level, xs[i], zs[i])));
             }
             errors[level] = (float) (ERROR_MARGIN * worst);
         });

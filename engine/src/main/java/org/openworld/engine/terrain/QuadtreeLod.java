@@ -9,8 +9,8 @@ import org.openworld.engine.culling.Visibility.Containment;
 
 /**
  * A {@link TerrainQuadtree} cut: starting at the root, a node is split while the {@link DetailLimit} finds it not
- * fine enough and its children's heights are {@linkplain Residency resident}; the nodes not split form the cut, a partition of the tile into patches whose size grows with
- * distance. With the paper's rule (L_B(D) = ⌊log2(D / B)⌋, {@link LodRule#level}) a node of level L is split while
+ * fine enough and its children's heights are {@linkplain Residency resident}; the nodes not split form the cut, a
+ * partition of the tile into patches whose size grows with distance. With the paper's rule (L_B(D) = ⌊log2(D / B)⌋, {@link LodRule#level}) a node of level L is split while
  * D < B · 2^L, and over a world of side S the cut holds a constant number of patches per distance octave, so it grows
  * like log S: equation 1 with R(D) ∝ 1/D². With the screen-error rule a node is split while its geometric error
  * ({@link TerrainQuadtree#error}) covers more than the allowed pixels from D: flat ground stays coarse near the eye,
@@ -210,15 +210,9 @@ final class QuadtreeLod implements LodScheme {
     private double boxDistance(int copy, int node) {
         float offsetX = lattice.offsetX(copy);
         float offsetZ = lattice.offsetZ(copy);
-        if (!residency.heightRange(node, offsetX, offsetZ, range)) {
-            return bounds.distance(node, offsetX, offsetZ, camera);
-        }
-        float[] boxes = bounds.boxes();
-        int b = 6 * node;
-        double dx = Math.max(0, Math.max(boxes[b] + offsetX - camera.x(), camera.x() - boxes[b + 3] - offsetX));
-        double dy = Math.max(0, Math.max(range[0] - camera.y(), camera.y() - range[1]));
-        double dz = Math.max(0, Math.max(boxes[b + 2] + offsetZ - camera.z(), camera.z() - boxes[b + 5] - offsetZ));
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return residency.heightRange(node, offsetX, offsetZ, range)
+                ? bounds.distance(node, offsetX, offsetZ, range[0], range[1], camera)
+                : bounds.distance(node, offsetX, offsetZ, camera);
     }
 
     private void addToCut(int copy, int node, Containment containment) {

@@ -53,7 +53,6 @@ public final class TerrainMaterials implements Labelled {
         return new Uniforms(program, true, true);
     }
 
-
     /** The uniforms of a program that calls {@code lightTerrain} only: the normal and gloss map switches. */
     public static Uniforms lightUniforms(ShaderProgram program) {
         return new Uniforms(program, false, true);

@@ -80,7 +80,7 @@ final class UnboundedWorld implements Residency, AutoCloseable {
         int root = (int) Math.max(1, Math.round(Math.log(ROOT_METRES / (cells * s.spacing())) / Math.log(2)));
         levels = Math.max(root, cellsLog2) + 1;
         if (levels > heights.levels()) {
-            throw new IllegalArgumentException("the unbounded world needs " + levels + " levels for " + cells
+            throw new SettingsException("the unbounded world needs " + levels + " levels for " + cells
                     + "-cell patches at " + s.spacing() + " m, but its wavelengths (up to " + s.maxWavelength()
                     + " m) make only " + heights.levels() + ": raise terrain.max-wavelength");
         }
@@ -97,7 +97,7 @@ final class UnboundedWorld implements Residency, AutoCloseable {
             return t;
         });
         snow = times.time("snow table", () -> new StreamedSnow(s, seed));
-        clipmap = new HeightClipmap(heights, levels, size, BLOCK, Math.max(1, StreamedSnow.border(s)), workers);
+        clipmap = new HeightClipmap(heights, levels, size, BLOCK, StreamedSnow.border(s), workers);
         heightTexture = context.own("clipmap.heights",
                 TextureArray.empty(context.gl(), size, size, levels, Format.R32F, Sampling.NEAREST_CLAMP));
         slopeTexture = context.own("clipmap.slopes",
@@ -114,8 +114,9 @@ final class UnboundedWorld implements Residency, AutoCloseable {
 
     /**
      * Samples per side of each level's window: the most {@code terrain.memory-budget} holds at
-     * {@value #TEXEL_BYTES} bytes a sample (heights, slopes, snow). The coarsest window must hold every root drawn: they reach (radius + 1) root sides from the camera,
-     * and the camera may lie as little as a quarter of the window inside it (the clipmap's lead).
+     * {@value #TEXEL_BYTES} bytes a sample (heights, slopes, snow). The coarsest window must hold every root drawn:
+     * they reach (radius + 1) root sides from the camera, and the camera may lie as little as a quarter of the window
+     * inside it (the clipmap's lead).
      */
     private static int clipSize(TerrainSettings s, int levels, double coarsestSpacing, double rootSide, int radius) {
         long budget = (long) s.memoryBudget() << 20;

@@ -186,19 +186,7 @@ class PatchSelectionTest {
     @Test
     void knownHeightsNarrowTheBoxForTheLevelRule() {
         World world = hills(256, 1, 8, false);
-        Residency deepBelow = new Residency() {
-            @Override
-            public boolean drawable(int node, float x, float z) {
-                return true;
-            }
-
-            @Override
-            public boolean heightRange(int node, float x, float z, float[] out) {
-                out[0] = -510;
-                out[1] = -495;
-                return true;
-            }
-        };
+        Residency deepBelow = knownHeights(-510, -495);
         Vector3f camera = new Vector3f(0, 5, 0);
         DetailLimit limit = DetailLimit.paper(4);
         PatchList boxes = new PatchList();
@@ -223,19 +211,7 @@ class PatchSelectionTest {
     void knownHeightsGiveTheMorphBandsBack() {
         float[] errors = {0, 1.4f, 3.2f, 7.3f, 17, 38};
         TerrainQuadtree tree = TerrainQuadtree.uniform(1024, 2, 32, errors, -944, 1504);
-        Residency narrow = new Residency() {
-            @Override
-            public boolean drawable(int node, float x, float z) {
-                return true;
-            }
-
-            @Override
-            public boolean heightRange(int node, float x, float z, float[] out) {
-                out[0] = 0;
-                out[1] = 40;
-                return true;
-            }
-        };
+        Residency narrow = knownHeights(0, 40);
         DetailLimit limit = DetailLimit.projected(new Matrix4f().perspective((float) Math.toRadians(60), 16f / 9,
                 0.5f, 40_000), 1280, 720, 2);
         Vector3f camera = new Vector3f(0, 60, 0);
@@ -246,6 +222,23 @@ class PatchSelectionTest {
         new PatchSelection(tree, narrow).select(camera, offsets, limit, LodMode.QUADTREE, null, known);
         assertEquals(0, bands(boxes), "patches with a morph band, by the boxes alone, of " + boxes.size());
         assertTrue(bands(known) > known.size() / 2, bands(known) + " of " + known.size() + " patches with a band");
+    }
+
+    /** Every node resident, and known to lie between these heights. */
+    private static Residency knownHeights(float lowest, float highest) {
+        return new Residency() {
+            @Override
+            public boolean drawable(int node, float x, float z) {
+                return true;
+            }
+
+            @Override
+            public boolean heightRange(int node, float x, float z, float[] out) {
+                out[0] = lowest;
+                out[1] = highest;
+                return true;
+            }
+        };
     }
 
     /** Patches whose morph band is not empty (start before end). */
