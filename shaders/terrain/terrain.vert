@@ -15,11 +15,9 @@ layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample 
 layout(location = 2) in ivec4 sideLevels;     // north, east, south, west
 layout(location = 3) in ivec4 cornerLevels;   // north-west, north-east, south-east, south-west
 layout(location = 4) in vec2 copyOffset;      // metres
-layout(location = 5) in vec2 morphRange;      // start, end: viewer distances (m) over which the patch morphs
-layout(location = 6) in vec4 sideMorphNE;     // north, east neighbour's range when it samples the side's level
-layout(location = 7) in vec4 sideMorphSW;     // south, west
-layout(location = 8) in vec4 cornerMorphN;    // north-west, north-east diagonal's range at the corner's level
-layout(location = 9) in vec4 cornerMorphS;    // south-east, south-west
+layout(location = 5) in float patchMorph;     // k: how far the patch has morphed towards its parent's surface
+layout(location = 6) in vec4 sideMorph;       // north, east, south, west neighbour's k when it samples the side's level
+layout(location = 7) in vec4 cornerMorph;     // north-west, north-east, south-east, south-west diagonal's k, likewise
 
 uniform int mapSize;        // level-0 samples per side of the tile (of a root of the unbounded world)
 uniform float spacing;      // metres between level-0 samples
@@ -75,33 +73,25 @@ float heightAt(ivec2 sampleIndex, int level) {
 #endif
 }
 
-// Geomorphing (QuadtreeLod explains it): k = 0 at the range's start, 1 at its end; a range with start = end steps.
-float ramp(vec2 range, float d) {
-    return range.y > range.x ? clamp((d - range.x) / (range.y - range.x), 0.0, 1.0) : step(range.y, d);
+// Geomorphing (QuadtreeLod explains it): k of a side's patches that sample this level, the neighbour's (given only
+// when it samples the side's level)
+float sideK(int side, int level) {
+    return sideLevels[side] == level ? sideMorph[side] : 0.0;
 }
 
-vec2 sideRange(int side) {
-    return side == 0 ? sideMorphNE.xy : side == 1 ? sideMorphNE.zw : side == 2 ? sideMorphSW.xy : sideMorphSW.zw;
-}
-
-// k of a side's patches that sample this level: the neighbour's ramp (given only when it samples the side's level)
-float sideK(int side, int level, float d) {
-    return sideLevels[side] == level ? ramp(sideRange(side), d) : 0.0;
-}
-
-// How far a vertex sampling `level` has morphed at viewer distance d: the largest ramp of the patches that sample
-// that level there, so that every patch sharing the vertex computes the same k.
-float morphFactor(ivec2 g, int level, float d) {
+// How far a vertex sampling `level` has morphed: the largest k of the patches that sample that level there, so that
+// every patch sharing the vertex computes the same k.
+float morphFactor(ivec2 g, int level) {
     bool north = g.y == 0, south = g.y == cells, west = g.x == 0, east = g.x == cells;
-    float k = level == patchInfo.w ? ramp(morphRange, d) : 0.0;
-    if (north && west) return max(k, max(max(sideK(0, level, d), sideK(3, level, d)), ramp(cornerMorphN.xy, d)));
-    if (north && east) return max(k, max(max(sideK(0, level, d), sideK(1, level, d)), ramp(cornerMorphN.zw, d)));
-    if (south && east) return max(k, max(max(sideK(2, level, d), sideK(1, level, d)), ramp(cornerMorphS.xy, d)));
-    if (south && west) return max(k, max(max(sideK(2, level, d), sideK(3, level, d)), ramp(cornerMorphS.zw, d)));
-    if (north) return max(k, sideK(0, level, d));
-    if (east) return max(k, sideK(1, level, d));
-    if (south) return max(k, sideK(2, level, d));
-    if (west) return max(k, sideK(3, level, d));
+    float k = level == patchInfo.w ? patchMorph : 0.0;
+    if (north && west) return max(k, max(max(sideK(0, level), sideK(3, level)), cornerMorph.x));
+    if (north && east) return max(k, max(max(sideK(0, level), sideK(1, level)), cornerMorph.y));
+    if (south && east) return max(k, max(max(sideK(2, level), sideK(1, level)), cornerMorph.z));
+    if (south && west) return max(k, max(max(sideK(2, level), sideK(3, level)), cornerMorph.w));
+    if (north) return max(k, sideK(0, level));
+    if (east) return max(k, sideK(1, level));
+    if (south) return max(k, sideK(2, level));
+    if (west) return max(k, sideK(3, level));
     return k;
 }
 
@@ -123,8 +113,7 @@ void main() {
     vec2 xz = (vec2(sampleIndex) - 0.5 * float(mapSize)) * spacing + copyOffset;
     int level = vertexLevel(g);
     wsPos = vec3(xz.x, heightAt(sampleIndex, level), xz.y);
-    // the viewer's distance, the same in every pass, so shadows, reflection and the view morph alike
-    float k = morphFactor(g, level, distance(wsPos, viewerPos()));
+    float k = morphFactor(g, level);
     if (k > 0.0) {
         wsPos.y = mix(wsPos.y, coarserHeight(sampleIndex, level), k);
     }

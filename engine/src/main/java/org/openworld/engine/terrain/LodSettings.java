@@ -43,10 +43,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       halves B there
  * @param morph          geomorphing: in the quadtree cut, each vertex blends into the next coarser level's surface
  *                       over its patch's transition band, so a level change moves no vertex abruptly
- *                       ({@link QuadtreeLod}). Off by default for now: the morphed ground is coarser where the rule
- *                       allows it, which shortens a low sun's shadows (10° sun: 6.6 % of the picture shadowed
- *                       against 7.7 % at full resolution, beyond CasterLevelsRenderTest's 1 %). Off draws each
- *                       level's own surface (the paper's), as the flat grid always does
+ *                       ({@link QuadtreeLod}); on by default. Off draws each level's own surface (the paper's), as
+ *                       the flat grid always does, and a level change then moves vertices by up to the error the
+ *                       rule allows
  */
 public record LodSettings(
         @Setting(doc = "vertices per patch side (33 or 65)", min = 33, max = 65, atStart = true) int patchVertices,
@@ -65,7 +64,7 @@ public record LodSettings(
         @Setting(doc = "geomorphing: vertices blend into the coarser level before a level change") boolean morph) {
 
     public static final LodSettings DEFAULTS = new LodSettings(33, LodRule.SCREEN_ERROR, 6, 2, 128, LodMode.QUADTREE,
-            1, 1, false);
+            1, 1, true);
 
     public static final SettingsGroup<LodSettings> SETTINGS = SettingsGroup.of("lod", LodSettings.class, DEFAULTS);
 

@@ -13,16 +13,13 @@ import java.util.Arrays;
  * {@link #level} inside. The index patterns are {@link PatchPatterns#interior}({@link #strideLog2}) and, per side,
  * {@link PatchPatterns#edge}(side, {@link #strideLog2}, {@link #sideStrideLog2}).
  *
- * <p>Geomorphing: each patch carries its morph range ({@link #morphStart}, {@link #morphEnd}), and each side and
- * corner the range of the neighbour there that samples the same level, or {@link #NEVER} ({@link QuadtreeLod} says
- * how the shader combines them). A patch that does not morph has {@link #NEVER} everywhere.
+ * <p>Geomorphing: each patch carries how far it has morphed towards its parent's surface ({@link #morph}, 0 to 1),
+ * and each side and corner that of the neighbour there when it samples the same level, else 0 ({@link QuadtreeLod}
+ * says how the shader combines them). A patch that does not morph has 0 everywhere.
  */
 public final class PatchList {
 
     private static final int SIDES = 4;
-
-    /** A morph range that never starts: both ends here, beyond any distance, so the morph factor stays 0. */
-    public static final float NEVER = 1e30f;
 
     private int size;
     private int[] node = new int[0];
@@ -35,9 +32,8 @@ public final class PatchList {
     private int[] sideLevel = new int[0];
     private int[] sideStrideLog2 = new int[0];
     private int[] cornerLevel = new int[0];
-    /** Per patch: start, end (metres). */
+    /** Per patch, per patch × side and per patch × corner: the morph factor k, 0 to 1. */
     private float[] morph = new float[0];
-    /** Per patch × side and patch × corner: start, end (metres). */
     private float[] sideMorph = new float[0];
     private float[] cornerMorph = new float[0];
 
@@ -100,41 +96,26 @@ public final class PatchList {
         return cornerLevel[SIDES * i + c.ordinal()];
     }
 
-    /** Viewer distance, metres, where the patch starts morphing towards its parent's surface. */
-    public float morphStart(int i) {
-        return morph[2 * i];
+    /** How far the patch has morphed towards its parent's surface: 0 its own, 1 its parent's. */
+    public float morph(int i) {
+        return morph[i];
     }
 
-    /** Viewer distance, metres, where the patch is its parent's surface: where it merges into its parent. */
-    public float morphEnd(int i) {
-        return morph[2 * i + 1];
+    /** The morph factor of the neighbour across a side when it samples the side's level, else 0. */
+    public float sideMorph(int i, Side s) {
+        return sideMorph[SIDES * i + s.ordinal()];
     }
 
-    /** Morph start of the neighbour across a side that samples the side's level, or {@link #NEVER}. */
-    public float sideMorphStart(int i, Side s) {
-        return sideMorph[2 * (SIDES * i + s.ordinal())];
-    }
-
-    /** Morph end of the neighbour across a side that samples the side's level, or {@link #NEVER}. */
-    public float sideMorphEnd(int i, Side s) {
-        return sideMorph[2 * (SIDES * i + s.ordinal()) + 1];
-    }
-
-    /** Morph start of the patch diagonally across a corner when it samples the corner's level, or {@link #NEVER}. */
-    public float cornerMorphStart(int i, Corner c) {
-        return cornerMorph[2 * (SIDES * i + c.ordinal())];
-    }
-
-    /** Morph end of the patch diagonally across a corner when it samples the corner's level, or {@link #NEVER}. */
-    public float cornerMorphEnd(int i, Corner c) {
-        return cornerMorph[2 * (SIDES * i + c.ordinal()) + 1];
+    /** The morph factor of the patch diagonally across a corner when it samples the corner's level, else 0. */
+    public float cornerMorph(int i, Corner c) {
+        return cornerMorph[SIDES * i + c.ordinal()];
     }
 
     /** Turns morphing off for every patch ({@code lod.morph=off}): each draws its own level's surface. */
     public void withoutMorph() {
-        Arrays.fill(morph, 0, 2 * size, NEVER);
-        Arrays.fill(sideMorph, 0, 2 * SIDES * size, NEVER);
-        Arrays.fill(cornerMorph, 0, 2 * SIDES * size, NEVER);
+        Arrays.fill(morph, 0, size, 0);
+        Arrays.fill(sideMorph, 0, SIDES * size, 0);
+        Arrays.fill(cornerMorph, 0, SIDES * size, 0);
     }
 
     /** Appends a patch whose sides and corners are then set with {@link #setSide} and {@link #setCorner}. */
@@ -150,25 +131,22 @@ public final class PatchList {
         this.sampleStep[i] = sampleStep;
         this.level[i] = level;
         this.strideLog2[i] = strideLog2;
-        Arrays.fill(morph, 2 * i, 2 * i + 2, NEVER);
-        Arrays.fill(sideMorph, 2 * SIDES * i, 2 * SIDES * (i + 1), NEVER);
-        Arrays.fill(cornerMorph, 2 * SIDES * i, 2 * SIDES * (i + 1), NEVER);
+        morph[i] = 0;
+        Arrays.fill(sideMorph, SIDES * i, SIDES * (i + 1), 0);
+        Arrays.fill(cornerMorph, SIDES * i, SIDES * (i + 1), 0);
         return i;
     }
 
-    void setMorph(int i, float start, float end) {
-        morph[2 * i] = start;
-        morph[2 * i + 1] = end;
+    void setMorph(int i, float k) {
+        morph[i] = k;
     }
 
-    void setSideMorph(int i, Side s, float start, float end) {
-        sideMorph[2 * (SIDES * i + s.ordinal())] = start;
-        sideMorph[2 * (SIDES * i + s.ordinal()) + 1] = end;
+    void setSideMorph(int i, Side s, float k) {
+        sideMorph[SIDES * i + s.ordinal()] = k;
     }
 
-    void setCornerMorph(int i, Corner c, float start, float end) {
-        cornerMorph[2 * (SIDES * i + c.ordinal())] = start;
-        cornerMorph[2 * (SIDES * i + c.ordinal()) + 1] = end;
+    void setCornerMorph(int i, Corner c, float k) {
+        cornerMorph[SIDES * i + c.ordinal()] = k;
     }
 
     void setSide(int i, Side s, int level, int strideLog2) {
@@ -191,8 +169,8 @@ public final class PatchList {
         sideLevel = Arrays.copyOf(sideLevel, SIDES * capacity);
         sideStrideLog2 = Arrays.copyOf(sideStrideLog2, SIDES * capacity);
         cornerLevel = Arrays.copyOf(cornerLevel, SIDES * capacity);
-        morph = Arrays.copyOf(morph, 2 * capacity);
-        sideMorph = Arrays.copyOf(sideMorph, 2 * SIDES * capacity);
-        cornerMorph = Arrays.copyOf(cornerMorph, 2 * SIDES * capacity);
+        morph = Arrays.copyOf(morph, capacity);
+        sideMorph = Arrays.copyOf(sideMorph, SIDES * capacity);
+        cornerMorph = Arrays.copyOf(cornerMorph, SIDES * capacity);
     }
 }

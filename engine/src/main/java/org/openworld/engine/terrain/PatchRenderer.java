@@ -27,20 +27,18 @@ import org.openworld.engine.gl.VertexArray;
  *   location 2  ivec4  side levels  (north, east, south, west)
  *   location 3  ivec4  corner levels (north-west, north-east, south-east, south-west)
  *   location 4  vec2   copy offset, metres
- *   location 5  vec2   morph range (start, end), metres
- *   location 6  vec4   side neighbours' morph ranges, north and east
- *   location 7  vec4   side neighbours' morph ranges, south and west
- *   location 8  vec4   diagonal neighbours' morph ranges, north-west and north-east
- *   location 9  vec4   diagonal neighbours' morph ranges, south-east and south-west
+ *   location 5  float  morph factor k
+ *   location 6  vec4   side neighbours' k (north, east, south, west)
+ *   location 7  vec4   diagonal neighbours' k (north-west, north-east, south-east, south-west)
  * </pre>
  * GL 3.3 has no base instance, so each draw re-points the instance attributes at its run's offset.
  */
 final class PatchRenderer implements AutoCloseable {
 
-    /** Bytes per instance: 12 ints and 20 floats. */
-    private static final int STRIDE = 32 * 4;
-    /** Instance attribute locations 1 .. 9. */
-    private static final int LAST_INSTANCE_LOCATION = 9;
+    /** Bytes per instance: 12 ints and 11 floats. */
+    private static final int STRIDE = 23 * 4;
+    /** Instance attribute locations 1 .. 7. */
+    private static final int LAST_INSTANCE_LOCATION = 7;
     /** Each patch is drawn by five patterns: its interior and its four edge strips. */
     private static final int PATTERNS_PER_PATCH = 5;
     /** The enum values, kept: {@code values()} copies its array on every call, and these loops run per patch. */
@@ -170,10 +168,9 @@ final class PatchRenderer implements AutoCloseable {
             glVertexAttribIPointer(2, 4, GL_INT, STRIDE, base + 16);
             glVertexAttribIPointer(3, 4, GL_INT, STRIDE, base + 32);
             glVertexAttribPointer(4, 2, GL_FLOAT, false, STRIDE, base + 48);
-            glVertexAttribPointer(5, 2, GL_FLOAT, false, STRIDE, base + 56);
-            for (int location = 6; location <= LAST_INSTANCE_LOCATION; location++) {
-                glVertexAttribPointer(location, 4, GL_FLOAT, false, STRIDE, base + 64 + 16 * (location - 6));
-            }
+            glVertexAttribPointer(5, 1, GL_FLOAT, false, STRIDE, base + 56);
+            glVertexAttribPointer(6, 4, GL_FLOAT, false, STRIDE, base + 60);
+            glVertexAttribPointer(7, 4, GL_FLOAT, false, STRIDE, base + 76);
             glDrawElementsInstanced(GL_TRIANGLES, patterns.count(p), GL_UNSIGNED_INT,
                     (long) patterns.first(p) * Integer.BYTES, runLength[p]);
             stats.add(1, (long) patterns.count(p) / 3 * runLength[p]);
@@ -195,15 +192,12 @@ final class PatchRenderer implements AutoCloseable {
         }
         staging.putFloat(at + 48, copyOffsets[2 * list.copy(i)]);
         staging.putFloat(at + 52, copyOffsets[2 * list.copy(i) + 1]);
-        staging.putFloat(at + 56, list.morphStart(i));
-        staging.putFloat(at + 60, list.morphEnd(i));
+        staging.putFloat(at + 56, list.morph(i));
         for (Side side : SIDES) {
-            staging.putFloat(at + 64 + 8 * side.ordinal(), list.sideMorphStart(i, side));
-            staging.putFloat(at + 68 + 8 * side.ordinal(), list.sideMorphEnd(i, side));
+            staging.putFloat(at + 60 + 4 * side.ordinal(), list.sideMorph(i, side));
         }
         for (Corner corner : CORNERS) {
-            staging.putFloat(at + 96 + 8 * corner.ordinal(), list.cornerMorphStart(i, corner));
-            staging.putFloat(at + 100 + 8 * corner.ordinal(), list.cornerMorphEnd(i, corner));
+            staging.putFloat(at + 76 + 4 * corner.ordinal(), list.cornerMorph(i, corner));
         }
     }
 

@@ -145,10 +145,11 @@ public final class TerrainSystem implements EngineSystem {
                                StageTimes times) {
         progress.accept("terrain: the unbounded world, seed " + seed);
         unbounded = context.own(new UnboundedWorld(context, terrain, seed, cells, times, progress));
-        context.world().setResource(HeightField.class, unbounded.heights());
-        tree = unbounded.tree();
-        selection = new PatchSelection(tree, unbounded);
-        layout = PatchLayout.clipmap(tree, unbounded.clipSize(), terrain);
+        StreamedWorld stream = unbounded.stream();
+        context.world().setResource(HeightField.class, stream.heights());
+        tree = stream.tree();
+        selection = new PatchSelection(tree, stream);
+        layout = PatchLayout.clipmap(tree, stream.clipSize(), terrain);
         shading = new TerrainShading(context, layout, null, seed, UNIT_HEIGHTS, times);
     }
 
@@ -190,7 +191,7 @@ public final class TerrainSystem implements EngineSystem {
         }
         copyCentreX = cx;
         copyCentreZ = cz;
-        int radius = unbounded != null ? unbounded.rootRadius()
+        int radius = unbounded != null ? unbounded.stream().rootRadius()
                 : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
         int side = 2 * radius + 1;
         copyOffsets = new float[2 * side * side];

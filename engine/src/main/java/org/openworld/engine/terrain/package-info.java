@@ -34,7 +34,7 @@
  * made on worker threads ahead of the camera by its velocity and uploaded a few blocks a frame. The quadtree's roots
  * (8 km) lie on a lattice around the camera as the tile's copies do, each a different piece of the world; a node is
  * split only into children whose levels are resident ({@link org.openworld.engine.terrain.Residency}), so a block
- * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.UnboundedWorld}). Cost:
+ * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.StreamedWorld}). Cost:
  * {@code 10 · levels · S²} bytes of GPU memory (heights, slopes, snow), 20 MiB by default whatever the distance
  * flown; a 64² block takes 0.57–1.95 ms of a worker. Its snow ({@link org.openworld.engine.terrain.StreamedSnow}) is
  * the tile's rule with a hash for a random stream, so blocks join without seams; coarser levels show its mean.
@@ -83,15 +83,14 @@
  * with one instanced call, so draw calls do not grow with the visible patches.
  *
  * <p><b>Geomorphing (issue 20, CDLOD-style after Strugar 2009).</b> In the quadtree cut each patch morphs into its
- * parent's surface before it merges: it carries a range [start, end] of viewer distances, end where its parent
- * becomes fine enough ({@link org.openworld.engine.terrain.DetailLimit#fineFrom}: B · 2^(L+1) under the paper's rule,
- * e_parent · f / p under the screen error), start where its farthest vertex lies when it appears; the vertex shader
- * blends each vertex's height towards the coarser level's surface by {@code k = clamp((d − start)/(end − start), 0, 1)},
- * d from {@code viewerPos()}. At k = 1 the patch is its parent (at its vertices), so the switch moves nothing;
- * shared edge and corner vertices take the largest ramp of the patches sampling their level, so neighbours agree
- * ({@link org.openworld.engine.terrain.QuadtreeLod} has the argument). Cost: two more height fetches per morphing
- * vertex and 72 more bytes per instance. On with {@code lod.morph=on} (off by default: the ground it coarsens shortens a low sun's shadows beyond what
- * {@code CasterLevelsRenderTest} accepts); the flat grid (figure 6) never morphs.
+ * parent's surface before it merges: it carries a factor k that rises from 0 to 1, by its box's distance D, over the
+ * last 30 % of the way from its own merge distance to its parent's ({@link org.openworld.engine.terrain.DetailLimit#fineFrom}:
+ * B · 2^L under the paper's rule, e · f / p under the screen error), and the vertex shader blends each vertex's
+ * height towards the coarser level's surface by k. A node splits where its k is 0 and its children appear with
+ * k = 1, on the same surface, so the switch moves nothing; shared edge and corner vertices take the largest k of the
+ * patches sampling their level, so neighbours agree ({@link org.openworld.engine.terrain.QuadtreeLod} has the
+ * argument). Cost: two more height fetches per morphing vertex and 36 bytes per instance. On by default
+ * ({@code lod.morph}); the flat grid (figure 6) never morphs.
  *
  * <p><b>Materials (2.2).</b> Grass low, rock between and on steep slopes, snow high, blended smoothly; the snow comes
  * from {@link org.openworld.engine.terrain.SnowMap}: snow with probability {@code p = clamp((n − base)/(full − base))}
@@ -149,7 +148,7 @@
  *
  * <p><b>Limits.</b> A tile's whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
  * and again on the GPU); geomorphing makes the ground within a transition band coarser than the level rule asks (up
- * to its parent's error), and steps where a band is empty (a box taller than the gap between two merge distances);
+ * to its parent's error);
  * a generated tile repeats (the unbounded world does not); the snow map is capped at 2048².
  */
 package org.openworld.engine.terrain;

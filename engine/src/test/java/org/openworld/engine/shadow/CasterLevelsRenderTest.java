@@ -101,6 +101,7 @@ class CasterLevelsRenderTest {
         for (int i = 0; i < elevations.length; i++) {
             String series = "sun " + elevations[i] + "°: full resolution " + reference[i] + ", screen error "
                     + screenError[i];
+            System.out.println("caster levels, " + series);
             assertTrue(reference[i] > 0.0002, "the mountains cast shadows at all: " + series);
             assertEquals(reference[i], screenError[i], TOLERANCE, "shadowed fraction of the picture, " + series);
         }

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -11,6 +13,7 @@ import org.joml.Vector4f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
+import org.openworld.engine.camera.CameraPose;
 
 /**
  * Geomorphing (issue 20, "No popping"), GL-free: the morph ranges the quadtree cut gives its patches, and the surface
@@ -39,78 +42,39 @@ class GeomorphTest {
         };
     }
 
-    /** The shader's ramp: 0 at start, 1 at end, a step where they meet. */
-    static double ramp(float start, float end, double d) {
-        if (end > start) {
-            return Math.max(0, Math.min(1, (d - start) / (end - start)));
-        }
-        return d >= end ? 1 : 0;
-    }
-
     /**
-     * Under the paper's rule a node merges into its parent where the parent's level is chosen, B · 2^(L+1): k is 1
-     * there and 0 at the start, which lies no nearer than where the node itself appears (B · 2^L); the ranges nest,
-     * each level's start at or beyond the end of the level below.
+     * A patch's morph factor k runs from 0 to 1, by its box distance, over the last {@link QuadtreeLod#MORPH_SHARE}
+     * of the distances from where it appears (its own merge distance, {@link DetailLimit#fineFrom}) to where its
+     * parent becomes fine enough: under the paper's rule, of B · 2^L to B · 2^(L+1). The root never morphs.
      */
     @Test
-    void paperRangesEndAtTheMergeDistanceAndNest() {
+    void paperMorphFactorsRunFromTheLevelsDistanceToTheParents() {
         PatchSelection selection = new PatchSelection(tree);
         PatchList patches = new PatchList();
         double b = 64;
-        float[] lowestStart = new float[tree.rootLevel() + 2];
-        float[] highestEnd = new float[tree.rootLevel() + 2];
-        Arrays.fill(lowestStart, Float.MAX_VALUE);
-        for (float x = -300; x <= 300; x += 37) {
-            selection.select(new Vector3f(x, 90, 0.3f * x), offsets, DetailLimit.paper(b), LodMode.QUADTREE, null,
-                    patches);
-            for (int i = 0; i < patches.size(); i++) {
-                int level = patches.level(i);
-                float start = patches.morphStart(i);
-                float end = patches.morphEnd(i);
-                if (level == tree.rootLevel()) {
-                    assertEquals(PatchList.NEVER, end, "the root never merges");
-                    continue;
-                }
-                assertEquals(b * Math.pow(2, level + 1), end, 1e-3, "merge distance of level " + level);
-                assertTrue(start <= end && (level == 0 || start >= b * Math.pow(2, level)), "start " + start);
-                assertEquals(0, ramp(start, end, start), 1e-9);
-                assertEquals(1, ramp(start, end, end), 1e-6);
-                lowestStart[level] = Math.min(lowestStart[level], start);
-                highestEnd[level] = Math.max(highestEnd[level], end);
-            }
-        }
-        for (int level = 1; level < tree.rootLevel(); level++) {
-            if (lowestStart[level] < Float.MAX_VALUE && highestEnd[level - 1] > 0) {
-                assertTrue(lowestStart[level] >= highestEnd[level - 1], "level " + level + " starts at "
-                        + lowestStart[level] + ", before level " + (level - 1) + " ends at " + highestEnd[level - 1]);
-            }
-        }
-    }
-
-    /** Under the screen-error rule a node's end is where its parent's error covers the allowed pixels. */
-    @Test
-    void screenErrorRangesEndWhereTheParentsErrorCoversThePixels() {
-        PatchSelection selection = new PatchSelection(tree);
-        PatchList patches = new PatchList();
-        DetailLimit limit = limit(LodRule.SCREEN_ERROR);
-        selection.select(new Vector3f(-200, 70, 10), offsets, limit, LodMode.QUADTREE, null, patches);
-        int checked = 0;
+        Vector3f eye = new Vector3f(37, 90, 11);
+        selection.select(eye, offsets, DetailLimit.paper(b), LodMode.QUADTREE, null, patches);
+        int between = 0;
         for (int i = 0; i < patches.size(); i++) {
-            int node = patches.node(i);
-            int level = tree.level(node);
-            if (level == tree.rootLevel()) {
+            int level = patches.level(i);
+            float k = patches.morph(i);
+            if (level == tree.rootLevel() || level == 0) {
+                assertEquals(0, k, level == 0 ? 1 : 0, "level " + level);
                 continue;
             }
-            int parent = tree.node(level + 1, tree.column(node) >> 1, tree.row(node) >> 1);
-            double merge = tree.error(parent) * (HEIGHT / 2.0) / Math.tan(Math.toRadians(22.5)) / 2;
-            assertEquals(merge, patches.morphEnd(i), 1e-3 * merge + 1e-3);
-            assertTrue(patches.morphStart(i) <= patches.morphEnd(i));
-            checked++;
+            double copyX = offsets[2 * patches.copy(i)];
+            double copyZ = offsets[2 * patches.copy(i) + 1];
+            double distance = tree.bounds().distance(patches.node(i), (float) copyX, (float) copyZ, eye);
+            double end = b * Math.pow(2, level + 1);
+            double band = QuadtreeLod.MORPH_SHARE * (end - b * Math.pow(2, level));
+            assertEquals(Math.max(0, Math.min(1, (distance - end + band) / band)), k, 1e-5, "k of a level-" + level
+                    + " patch " + distance + " m away");
+            between += k > 0 && k < 1 ? 1 : 0;
         }
-        assertTrue(checked > 10, "patches below the root: " + checked);
+        assertTrue(between > 10, "patches part way through their morph: " + between);
     }
 
-    /** The flat grid (figure 6) never morphs, and {@code lod.morph=off} clears every range. */
+    /** The flat grid (figure 6) never morphs, and {@code lod.morph=off} clears every factor. */
     @Test
     void theFlatGridAndMorphOffNeverMorph() {
         PatchSelection selection = new PatchSelection(tree);
@@ -120,21 +84,21 @@ class GeomorphTest {
         selection.select(new Vector3f(0, 80, 0), offsets, DetailLimit.paper(32), LodMode.QUADTREE, null, patches);
         boolean morphs = false;
         for (int i = 0; i < patches.size(); i++) {
-            morphs |= patches.morphEnd(i) < PatchList.NEVER;
+            morphs |= patches.morph(i) > 0;
         }
-        assertTrue(morphs, "the quadtree cut's patches below the root have ranges");
+        assertTrue(morphs, "some of the quadtree cut's patches have morphed part of the way");
         patches.withoutMorph();
         assertNeverMorphs(patches);
     }
 
     private static void assertNeverMorphs(PatchList patches) {
         for (int i = 0; i < patches.size(); i++) {
-            assertEquals(PatchList.NEVER, patches.morphEnd(i));
+            assertEquals(0, patches.morph(i));
             for (Side side : SIDES) {
-                assertEquals(PatchList.NEVER, patches.sideMorphEnd(i, side));
+                assertEquals(0, patches.sideMorph(i, side));
             }
             for (Corner corner : CORNERS) {
-                assertEquals(PatchList.NEVER, patches.cornerMorphEnd(i, corner));
+                assertEquals(0, patches.cornerMorph(i, corner));
             }
         }
     }
@@ -148,86 +112,216 @@ class GeomorphTest {
     @ParameterizedTest
     @EnumSource(LodRule.class)
     void aLevelChangeMovesNoVertexAbruptly(LodRule rule) {
-        Approach on = approach(rule, true);
-        Approach off = approach(rule, false);
+        Ground tile = new TileGround();
+        Approach on = approach(tile, limit(rule), true, new Vector3f(-340, 70, 23), 0.75f, -25, 400);
+        Approach off = approach(tile, limit(rule), false, new Vector3f(-340, 70, 23), 0.75f, -25, 400);
+        assertSmooth(rule.toString(), on, off);
+    }
+
+    /**
+     * The same on the unbounded world along {@code crossing.path}'s start (400 m above the ground, heading east,
+     * 8° down, the default 6 px screen-error rule and 33-vertex patches), streamed by the very {@link StreamedWorld}
+     * the engine draws, its blocks kept in memory as the texture arrays keep them: its boxes span the world's 2.4 km
+     * of heights, so only the heights the clipmap knows give the morph bands their width.
+     */
+    @Test
+    void aLevelChangeMovesNoVertexAbruptlyOnTheUnboundedWorld() {
+        try (StreamedGround on = new StreamedGround(); StreamedGround off = new StreamedGround()) {
+            DetailLimit limit = DetailLimit.projected(projection, WIDTH, HEIGHT, LodSettings.DEFAULTS.pixelError());
+            float y = (float) on.world.heights().heightAt(-9000, 0) + 400;
+            Vector3f start = new Vector3f(-9000, y, 0);
+            float down = (float) (-100 * Math.tan(Math.toRadians(8)));
+            assertSmooth("unbounded world", approach(on, limit, true, start, 0.9f, down, 300),
+                    approach(off, limit, false, start, 0.9f, down, 300));
+        }
+    }
+
+    private static void assertSmooth(String world, Approach on, Approach off) {
         assertTrue(on.levelChanges > 20 && off.levelChanges > 20, "level changes seen: " + on.levelChanges);
-        assertTrue(on.largestJump <= 0.5, rule + ": largest jump with morphing " + on.largestJump + " px");
-        assertTrue(off.largestJump > 0.5, rule + ": largest jump without morphing " + off.largestJump + " px");
+        assertTrue(on.largestJump <= 0.5, world + ": largest jump with morphing " + on.largestJump + " px");
+        assertTrue(off.largestJump > 0.5, world + ": largest jump without morphing " + off.largestJump + " px");
         System.out.printf("geomorph %s: largest jump %.3f px with morphing, %.3f px without (%d level changes)%n",
-                rule, on.largestJump, off.largestJump, on.levelChanges);
+                world, on.largestJump, off.largestJump, on.levelChanges);
     }
 
     private record Approach(double largestJump, int levelChanges) {
     }
 
-    private Approach approach(LodRule rule, boolean morph) {
-        PatchSelection selection = new PatchSelection(tree);
+    /** What the vertex shader reads: a quadtree, its roots around the camera and level L's height at a sample. */
+    private interface Ground {
+        PatchSelection selection();
+
+        TerrainQuadtree tree();
+
+        /** The roots' (copies') offsets, metres, with the camera here. */
+        float[] offsets(Vector3f eye);
+
+        /** The world's level-0 sample index of a root's first sample, on either axis. */
+        long origin(float offset);
+
+        /** terrain.vert's heightAt: level L's height at the world's level-0 sample (gx, gz). */
+        float height(int level, long gx, long gz);
+    }
+
+    /** The hills' periodic tile, as three by three copies. */
+    private final class TileGround implements Ground {
+        private final PatchSelection selection = new PatchSelection(tree);
+
+        public PatchSelection selection() {
+            return selection;
+        }
+
+        public TerrainQuadtree tree() {
+            return tree;
+        }
+
+        public float[] offsets(Vector3f eye) {
+            return offsets;
+        }
+
+        public long origin(float offset) {
+            return Math.round(offset / pyramid.base().spacing()) - tree.size() / 2;
+        }
+
+        /** The tile's sample index is the position's shifted by half the tile (its centre lies at the offset). */
+        public float height(int level, long gx, long gz) {
+            long half = tree.size() / 2;
+            return pyramid.level(level).sample((int) ((gx + half) >> level), (int) ((gz + half) >> level));
+        }
+    }
+
+    /** The unbounded world streamed around the camera into arrays laid out as the clipmap's texture layers. */
+    private static final class StreamedGround implements Ground, AutoCloseable {
+        final StreamedWorld world = new StreamedWorld(TestTerrain.settings("terrain.world=unbounded"), 1,
+                LodSettings.DEFAULTS.patchVertices() - 1, new StageTimes(), line -> { });
+        private final PatchSelection selection = new PatchSelection(world.tree(), world);
+        private final int size = world.clipSize();
+        private final float[][] layers = new float[world.levels()][size * size];
+        private final Vector3f last = new Vector3f(Float.NaN, 0, 0);
+
+        public PatchSelection selection() {
+            return selection;
+        }
+
+        public TerrainQuadtree tree() {
+            return world.tree();
+        }
+
+        /** Follows the camera as TerrainSystem does each step (at 60 a second), and lays the roots around it. */
+        public float[] offsets(Vector3f eye) {
+            world.follow(new CameraPose(eye.x, eye.y, eye.z, 90, -8, 60), last.isFinite() ? 1 / 60.0 : 0,
+                    (level, ix0, iz0, texelX, texelZ, block, bordered) -> {
+                        int border = world.border();
+                        int side = block + 2 * border;
+                        for (int j = 0; j < block; j++) {
+                            System.arraycopy(bordered, (j + border) * side + border, layers[level],
+                                    (texelZ + j) * size + texelX, block);
+                        }
+                    });
+            last.set(eye);
+            double extent = world.tree().extent();
+            int radius = world.rootRadius();
+            long cx = Math.round(eye.x / extent);
+            long cz = Math.round(eye.z / extent);
+            float[] roots = new float[2 * (2 * radius + 1) * (2 * radius + 1)];
+            int c = 0;
+            for (int dz = -radius; dz <= radius; dz++) {
+                for (int dx = -radius; dx <= radius; dx++) {
+                    roots[c++] = (float) ((cx + dx) * extent);
+                    roots[c++] = (float) ((cz + dz) * extent);
+                }
+            }
+            return roots;
+        }
+
+        public long origin(float offset) {
+            return world.rootOrigin(offset);
+        }
+
+        public float height(int level, long gx, long gz) {
+            int mask = size - 1;
+            return layers[level][(int) ((gz >> level) & mask) * size + (int) ((gx >> level) & mask)];
+        }
+
+        @Override
+        public void close() {
+            world.close();
+        }
+    }
+
+    /** One vertex's last drawn height, the frame it was drawn in and the levels it was drawn at. */
+    private static final class Drawn {
+        int frame = -1;
+        float height;
+        long levels;
+    }
+
+    /**
+     * Moves the camera {@code frames} times by {@code stride} metres along x, looking 100 m ahead and {@code drop}
+     * metres down, and measures the largest on-screen move of a vertex between consecutive frames.
+     */
+    private Approach approach(Ground ground, DetailLimit limit, boolean morph, Vector3f start, float stride,
+            float drop, int frames) {
         PatchList patches = new PatchList();
-        DetailLimit limit = limit(rule);
-        int size = tree.size();
-        int side = 3 * size;
-        float[] height = new float[side * side];
-        float[] previous = new float[side * side];
-        int[] stamp = new int[side * side];
-        long[] levels = new long[side * side];
-        Arrays.fill(stamp, -1);
+        TerrainQuadtree quadtree = ground.tree();
+        int cells = quadtree.cells();
+        double spacing = quadtree.extent() / quadtree.size();
+        Map<Long, Drawn> drawn = new HashMap<>();
         double largest = 0;
         int levelChanges = 0;
         Vector3f eye = new Vector3f();
         Matrix4f viewProjection = new Matrix4f();
         Vector4f a = new Vector4f();
         Vector4f b = new Vector4f();
-        for (int frame = 1; frame <= 400; frame++) {
-            // towards the ridge along x, 0.75 m a frame, 70 m up, looking ahead and a little down
-            eye.set(-340 + 0.75f * frame, 70, 23);
-            viewProjection.set(projection).lookAt(eye, new Vector3f(eye.x + 100, eye.y - 25, eye.z),
+        for (int frame = 1; frame <= frames; frame++) {
+            eye.set(start.x + stride * frame, start.y, start.z);
+            viewProjection.set(projection).lookAt(eye, new Vector3f(eye.x + 100, eye.y + drop, eye.z),
                     new Vector3f(0, 1, 0));
-            System.arraycopy(height, 0, previous, 0, height.length);
-            selection.select(eye, offsets, limit, LodMode.QUADTREE, null, patches);
+            float[] roots = ground.offsets(eye);
+            ground.selection().select(eye, roots, limit, LodMode.QUADTREE, null, patches);
             if (!morph) {
                 patches.withoutMorph();
             }
             for (int i = 0; i < patches.size(); i++) {
-                int copy = patches.copy(i);
-                int cx = Math.round(offsets[2 * copy] / (float) pyramid.base().extent()) + 1;
-                int cz = Math.round(offsets[2 * copy + 1] / (float) pyramid.base().extent()) + 1;
-                for (int row = 0; row <= CELLS; row++) {
-                    for (int column = 0; column <= CELLS; column++) {
-                        if (!drawn(patches, i, column, row)) {
+                float offsetX = roots[2 * patches.copy(i)];
+                float offsetZ = roots[2 * patches.copy(i) + 1];
+                long originX = ground.origin(offsetX) + patches.originSampleX(i);
+                long originZ = ground.origin(offsetZ) + patches.originSampleZ(i);
+                for (int row = 0; row <= cells; row++) {
+                    for (int column = 0; column <= cells; column++) {
+                        if (!drawn(patches, i, cells, column, row)) {
                             continue;
                         }
-                        int sx = patches.originSampleX(i) + column * patches.sampleStep(i);
-                        int sz = patches.originSampleZ(i) + row * patches.sampleStep(i);
-                        int gx = cx * size + sx;
-                        int gz = cz * size + sz;
-                        if (gx >= side || gz >= side) {
-                            continue; // a vertex on the far edge of the outer copies
+                        long gx = originX + (long) column * patches.sampleStep(i);
+                        long gz = originZ + (long) row * patches.sampleStep(i);
+                        float x = (float) (gx * spacing);
+                        float z = (float) (gz * spacing);
+                        int level = vertexLevel(patches, i, cells, column, row);
+                        float h = displayedHeight(ground, patches, i, cells, column, row, gx, gz, level);
+                        viewProjection.transform(b.set(x, h, z, 1));
+                        if (!(b.w > 1 && onScreen(b))) {
+                            continue; // only what is seen can be seen to jump
                         }
-                        int key = gz * side + gx;
-                        float x = (float) ((sx - size / 2.0) * pyramid.base().spacing() + offsets[2 * copy]);
-                        float z = (float) ((sz - size / 2.0) * pyramid.base().spacing() + offsets[2 * copy + 1]);
-                        int level = vertexLevel(patches, i, column, row);
-                        float h = displayedHeight(patches, i, column, row, sx, sz, level, x, z, eye);
-                        if (stamp[key] == frame) {
-                            assertEquals(height[key], h, 1e-3, "patches sharing a vertex agree (no crack)");
+                        Drawn vertex = drawn.computeIfAbsent(gx << 32 ^ (gz & 0xFFFF_FFFFL), key -> new Drawn());
+                        if (vertex.frame == frame) {
+                            assertEquals(vertex.height, h, 1e-3, "patches sharing a vertex agree (no crack)");
                             continue;
                         }
                         long levelCode = ((long) patches.level(i) << 8) | level;
-                        if (stamp[key] == frame - 1) {
-                            if (levels[key] != levelCode) {
+                        if (vertex.frame == frame - 1) {
+                            if (vertex.levels != levelCode) {
                                 levelChanges++;
                             }
-                            viewProjection.transform(a.set(x, previous[key], z, 1));
-                            viewProjection.transform(b.set(x, h, z, 1));
-                            if (a.w > 1 && b.w > 1 && onScreen(a) && onScreen(b)) {
+                            viewProjection.transform(a.set(x, vertex.height, z, 1));
+                            if (a.w > 1 && onScreen(a)) {
                                 double dx = (a.x / a.w - b.x / b.w) * WIDTH / 2;
                                 double dy = (a.y / a.w - b.y / b.w) * HEIGHT / 2;
                                 largest = Math.max(largest, Math.hypot(dx, dy));
                             }
                         }
-                        height[key] = h;
-                        levels[key] = levelCode;
-                        stamp[key] = frame;
+                        vertex.height = h;
+                        vertex.levels = levelCode;
+                        vertex.frame = frame;
                     }
                 }
             }
@@ -240,8 +334,8 @@ class GeomorphTest {
     }
 
     /** Whether the patch's index patterns use a grid vertex: all inside, every 2^k-th on a side stitched k levels. */
-    private static boolean drawn(PatchList patches, int i, int column, int row) {
-        int last = CELLS;
+    private static boolean drawn(PatchList patches, int i, int cells, int column, int row) {
+        int last = cells;
         boolean north = row == 0, south = row == last, west = column == 0, east = column == last;
         if (north && !onStride(column, patches.sideStrideLog2(i, Side.NORTH))
                 || south && !onStride(column, patches.sideStrideLog2(i, Side.SOUTH))
@@ -257,8 +351,8 @@ class GeomorphTest {
     }
 
     /** terrain.vert's vertexLevel. */
-    private static int vertexLevel(PatchList p, int i, int column, int row) {
-        boolean north = row == 0, south = row == CELLS, west = column == 0, east = column == CELLS;
+    private static int vertexLevel(PatchList p, int i, int cells, int column, int row) {
+        boolean north = row == 0, south = row == cells, west = column == 0, east = column == cells;
         if (north && west) return p.cornerLevel(i, Corner.NORTH_WEST);
         if (north && east) return p.cornerLevel(i, Corner.NORTH_EAST);
         if (south && east) return p.cornerLevel(i, Corner.SOUTH_EAST);
@@ -270,46 +364,42 @@ class GeomorphTest {
         return p.level(i);
     }
 
-    /** terrain.vert's heightAt: pyramid level L at level-0 sample (x, z), wrapped. */
-    private float heightAt(int sx, int sz, int level) {
-        return pyramid.level(level).sample(sx >> level, sz >> level);
-    }
-
     /** terrain.vert's main, for the height: the level's sample moved towards the coarser surface by k. */
-    private float displayedHeight(PatchList p, int i, int column, int row, int sx, int sz, int level, float x,
-            float z, Vector3f eye) {
-        float h = heightAt(sx, sz, level);
-        double k = morphFactor(p, i, column, row, level, eye.distance(x, h, z));
+    private static float displayedHeight(Ground ground, PatchList p, int i, int cells, int column, int row, long gx,
+            long gz, int level) {
+        float h = ground.height(level, gx, gz);
+        double k = morphFactor(p, i, cells, column, row, level);
         if (k <= 0) {
             return h;
         }
-        int ox = ((sx >> level) & 1) << level;
-        int oz = ((sz >> level) & 1) << level;
-        float coarser = 0.5f * (heightAt(sx - ox, sz - oz, level + 1) + heightAt(sx + ox, sz + oz, level + 1));
+        long ox = ((gx >> level) & 1) << level;
+        long oz = ((gz >> level) & 1) << level;
+        float coarser = 0.5f * (ground.height(level + 1, gx - ox, gz - oz)
+                + ground.height(level + 1, gx + ox, gz + oz));
         return (float) (h + (coarser - h) * k);
     }
 
-    private static double sideK(PatchList p, int i, Side side, int level, double d) {
-        return p.sideLevel(i, side) == level ? ramp(p.sideMorphStart(i, side), p.sideMorphEnd(i, side), d) : 0;
+    private static double sideK(PatchList p, int i, Side side, int level) {
+        return p.sideLevel(i, side) == level ? p.sideMorph(i, side) : 0;
     }
 
-    private static double cornerK(PatchList p, int i, Corner c, int level, double d) {
-        return Math.max(Math.max(sideK(p, i, c.northSouth(), level, d), sideK(p, i, c.eastWest(), level, d)),
-                ramp(p.cornerMorphStart(i, c), p.cornerMorphEnd(i, c), d));
+    private static double cornerK(PatchList p, int i, Corner c, int level) {
+        return Math.max(Math.max(sideK(p, i, c.northSouth(), level), sideK(p, i, c.eastWest(), level)),
+                p.cornerMorph(i, c));
     }
 
     /** terrain.vert's morphFactor. */
-    private static double morphFactor(PatchList p, int i, int column, int row, int level, double d) {
-        boolean north = row == 0, south = row == CELLS, west = column == 0, east = column == CELLS;
-        double k = level == p.level(i) ? ramp(p.morphStart(i), p.morphEnd(i), d) : 0;
-        if (north && west) return Math.max(k, cornerK(p, i, Corner.NORTH_WEST, level, d));
-        if (north && east) return Math.max(k, cornerK(p, i, Corner.NORTH_EAST, level, d));
-        if (south && east) return Math.max(k, cornerK(p, i, Corner.SOUTH_EAST, level, d));
-        if (south && west) return Math.max(k, cornerK(p, i, Corner.SOUTH_WEST, level, d));
-        if (north) return Math.max(k, sideK(p, i, Side.NORTH, level, d));
-        if (east) return Math.max(k, sideK(p, i, Side.EAST, level, d));
-        if (south) return Math.max(k, sideK(p, i, Side.SOUTH, level, d));
-        if (west) return Math.max(k, sideK(p, i, Side.WEST, level, d));
+    private static double morphFactor(PatchList p, int i, int cells, int column, int row, int level) {
+        boolean north = row == 0, south = row == cells, west = column == 0, east = column == cells;
+        double k = level == p.level(i) ? p.morph(i) : 0;
+        if (north && west) return Math.max(k, cornerK(p, i, Corner.NORTH_WEST, level));
+        if (north && east) return Math.max(k, cornerK(p, i, Corner.NORTH_EAST, level));
+        if (south && east) return Math.max(k, cornerK(p, i, Corner.SOUTH_EAST, level));
+        if (south && west) return Math.max(k, cornerK(p, i, Corner.SOUTH_WEST, level));
+        if (north) return Math.max(k, sideK(p, i, Side.NORTH, level));
+        if (east) return Math.max(k, sideK(p, i, Side.EAST, level));
+        if (south) return Math.max(k, sideK(p, i, Side.SOUTH, level));
+        if (west) return Math.max(k, sideK(p, i, Side.WEST, level));
         return k;
     }
 }

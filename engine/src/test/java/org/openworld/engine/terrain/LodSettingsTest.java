@@ -22,7 +22,7 @@ class LodSettingsTest {
         assertEquals(List.of("lod.patch-vertices", "lod.rule", "lod.pixel-error", "lod.shadow-texel-error",
                 "lod.base-resolution", "lod.mode", "lod.reflection-coarsening", "lod.shadow-coarsening", "lod.morph"),
                 keys);
-        assertFalse(LodSettings.DEFAULTS.morph(), "geomorphing is off by default (see LodSettings#morph)");
+        assertTrue(LodSettings.DEFAULTS.morph(), "geomorphing is on by default (see LodSettings#morph)");
         assertEquals(32, LodSettings.DEFAULTS.cells());
         assertEquals(LodMode.QUADTREE, LodSettings.DEFAULTS.mode());
         assertEquals(LodRule.SCREEN_ERROR, LodSettings.DEFAULTS.rule());

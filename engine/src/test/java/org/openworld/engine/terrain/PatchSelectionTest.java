@@ -202,28 +202,6 @@ class PatchSelectionTest {
         assertEquals(fromAbove.size(), narrowed.size(), "as seen from 500 m over the hills' boxes");
     }
 
-    /**
-     * A streamed world's boxes span all its heights (here 2.4 km), and a node starts to morph one box diagonal beyond
-     * where it appears: by the boxes alone every band is empty (start = end, the level steps), while the heights the
-     * residency knows (40 m here) give the bands back.
-     */
-    @Test
-    void knownHeightsGiveTheMorphBandsBack() {
-        float[] errors = {0, 1.4f, 3.2f, 7.3f, 17, 38};
-        TerrainQuadtree tree = TerrainQuadtree.uniform(1024, 2, 32, errors, -944, 1504);
-        Residency narrow = knownHeights(0, 40);
-        DetailLimit limit = DetailLimit.projected(new Matrix4f().perspective((float) Math.toRadians(60), 16f / 9,
-                0.5f, 40_000), 1280, 720, 2);
-        Vector3f camera = new Vector3f(0, 60, 0);
-        float[] offsets = {0, 0};
-        PatchList boxes = new PatchList();
-        PatchList known = new PatchList();
-        new PatchSelection(tree).select(camera, offsets, limit, LodMode.QUADTREE, null, boxes);
-        new PatchSelection(tree, narrow).select(camera, offsets, limit, LodMode.QUADTREE, null, known);
-        assertEquals(0, bands(boxes), "patches with a morph band, by the boxes alone, of " + boxes.size());
-        assertTrue(bands(known) > known.size() / 2, bands(known) + " of " + known.size() + " patches with a band");
-    }
-
     /** Every node resident, and known to lie between these heights. */
     private static Residency knownHeights(float lowest, float highest) {
         return new Residency() {
@@ -239,15 +217,6 @@ class PatchSelectionTest {
                 return true;
             }
         };
-    }
-
-    /** Patches whose morph band is not empty (start before end). */
-    private static int bands(PatchList patches) {
-        int n = 0;
-        for (int i = 0; i < patches.size(); i++) {
-            n += patches.morphStart(i) < patches.morphEnd(i) ? 1 : 0;
-        }
-        return n;
     }
 
     /**

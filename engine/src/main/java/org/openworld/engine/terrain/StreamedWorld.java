@@ -1,0 +1,245 @@
+package org.openworld.engine.terrain;
+
+import java.util.Locale;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.Consumer;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.settings.SettingsException;
+
+/**
+ * The unbounded world ({@code terrain.world=UNBOUNDED}, issue 20) without its textures: the heights of
+ * {@link BandedHeights}, streamed level by level around the camera by a {@link HeightClipmap}, and a
+ * {@link TerrainQuadtree} over one root whose copies, laid on a lattice of the root's side around the camera, are each
+ * a different piece of the world. It says which nodes can be drawn and which heights they span
+ * ({@link Residency}); {@link UnboundedWorld} hands the blocks it makes to the GPU. Being GL-free, the tests run the
+ * very same streaming and level choice against heights kept in memory.
+ *
+ * <p><b>Roots.</b> A root is a node of level R: N · 2^R level-0 samples a side, about {@value #ROOT_METRES} m. The
+ * quadtree is the same for every root; only where the vertex shader reads the heights differs (the root's offset,
+ * in samples, added to its sample index: {@code shaders/terrain/terrain.vert} with {@code TERRAIN_CLIPMAP}). The
+ * world being statistically the same everywhere, a level's error is one figure ({@link BandedHeights#levelErrors})
+ * and every box spans the world's height bounds ({@link BandedHeights#lowest}, {@link BandedHeights#highest}),
+ * narrowed for the level rule where the node's blocks are resident ({@link #heightRange}).
+ *
+ * <p><b>Streaming.</b> The clipmap keeps levels 0 .. R, each a window of {@code size²} samples (from
+ * {@code terrain.memory-budget}), and makes the blocks a moving camera lacks on worker threads, ahead of it by its
+ * velocity; each step up to {@value #UPLOADS_PER_FRAME} finished blocks are handed on. A node is split only when its
+ * children are {@linkplain #drawable resident} at every level they read, so a block not yet made shows as the
+ * coarser ground that covers it, never a hole. At start, and after a jump of the camera, it waits until every window
+ * is whole: a first frame is the same whatever the machine's speed, and no far block arrives to split a node in view
+ * (a split held back steps when it comes, see {@link QuadtreeLod}).
+ */
+final class StreamedWorld implements Residency, AutoCloseable {
+
+    /** The side a root aims at, metres: a few roots around the camera reach beyond the fog. */
+    static final double ROOT_METRES = 8192;
+    /** Samples per side of a streamed block. */
+    static final int BLOCK = 64;
+    /** Blocks handed on per step at most: 64 · 64 · 10 bytes each, 320 KiB a frame. */
+    static final int UPLOADS_PER_FRAME = 8;
+    /** GPU bytes per sample of a level: height R32F, slopes RG16F, snow and sky RG8. */
+    static final int TEXEL_BYTES = 4 + 4 + 2;
+
+    private final BandedHeights heights;
+    private final HeightClipmap clipmap;
+    private final TerrainQuadtree tree;
+    private final ExecutorService workers;
+    private final float[] levelRange = new float[2];
+    private final int levels;
+    private final int rootRadius;
+    private final Consumer<String> progress;
+    /** Where the camera was at the last step; null before the first. */
+    private CameraPose last;
+
+    /**
+     * Makes the bands and the quadtree, and the clipmap empty; the first {@link #follow} fills it around the camera,
+     * wherever its direction put it.
+     *
+     * @param cells N, the cells per patch side
+     */
+    StreamedWorld(TerrainSettings s, int seed, int cells, StageTimes times, Consumer<String> progress) {
+        heights = times.time("bands", () -> new BandedHeights(s, seed));
+        int cellsLog2 = Integer.numberOfTrailingZeros(cells);
+        int root = (int) Math.max(1, Math.round(Math.log(ROOT_METRES / (cells * s.spacing())) / Math.log(2)));
+        levels = Math.max(root, cellsLog2) + 1;
+        if (levels > heights.levels()) {
+            throw new SettingsException("the unbounded world needs " + levels + " levels for " + cells
+                    + "-cell patches at " + s.spacing() + " m, but its wavelengths (up to " + s.maxWavelength()
+                    + " m) make only " + heights.levels() + ": raise terrain.max-wavelength");
+        }
+        float[] errors = times.time("errors", () -> heights.levelErrors(levels));
+        tree = TerrainQuadtree.uniform(cells << root, s.spacing(), cells, errors, (float) heights.lowest(),
+                (float) heights.highest());
+        rootRadius = (int) Math.ceil(TerrainSystem.COPY_DISTANCE / tree.extent());
+        int size = clipSize(s, levels, heights.spacing(levels - 1), tree.extent(), rootRadius);
+        // half the cores, at low priority: the frame's own thread (and a software rasteriser's) come first
+        workers = Executors.newFixedThreadPool(Math.max(1, Runtime.getRuntime().availableProcessors() / 2), r -> {
+            Thread t = new Thread(r, "terrain-blocks");
+            t.setDaemon(true);
+            t.setPriority(Thread.MIN_PRIORITY);
+            return t;
+        });
+        clipmap = new HeightClipmap(heights, levels, size, BLOCK, StreamedSnow.border(s), workers);
+        this.progress = progress;
+        progress.accept(String.format(Locale.ROOT, "terrain: %d levels of %d² samples stream around the camera "
+                + "(%.0f MiB of %d MiB)", levels, size, textureBytes() / (double) (1 << 20), s.memoryBudget()));
+    }
+
+    /**
+     * Samples per side of each level's window: the most {@code terrain.memory-budget} holds at
+     * {@value #TEXEL_BYTES} bytes a sample (heights, slopes, snow). The coarsest window must hold every root drawn:
+     * they reach (radius + 1) root sides from the camera, and the camera may lie as little as a quarter of the window
+     * inside it (the clipmap's lead).
+     */
+    private static int clipSize(TerrainSettings s, int levels, double coarsestSpacing, double rootSide, int radius) {
+        long budget = (long) s.memoryBudget() << 20;
+        int least = Integer.highestOneBit((int) Math.ceil(4 * (radius + 1) * rootSide / coarsestSpacing) - 1) << 1;
+        long leastBytes = (long) TEXEL_BYTES * levels * least * least;
+        long leastMib = (leastBytes + (1 << 20) - 1) >> 20;
+        if (leastBytes > budget) {
+            throw new SettingsException("terrain.memory-budget=" + s.memoryBudget() + " MiB is too little for the "
+                    + "unbounded world: its " + levels + " levels need " + least + "² samples each to reach "
+                    + (int) ((radius + 1) * rootSide / 1000) + " km, " + leastMib + " MiB or more");
+        }
+        return HeightClipmap.sizeFor(budget * Float.BYTES / TEXEL_BYTES, levels, BLOCK);
+    }
+
+    /**
+     * Once per simulation step: moves the windows with the camera (ahead of it by its velocity since the last step)
+     * and hands the blocks finished since to {@code sink}, a few per step. A jump (a shot's pose, a cut in a camera
+     * path: more than a quarter of level 0's window in one step) is no flight to stream behind: it waits, as the
+     * start does, until every window around the new place is full.
+     */
+    void follow(CameraPose pose, double step, HeightClipmap.BlockSink sink) {
+        if (last == null || Math.hypot(pose.x() - last.x(), pose.z() - last.z())
+                > clipmap.size() / 4.0 * heights.spacing(0)) {
+            fill(pose, sink);
+            return;
+        }
+        double vx = step > 0 ? (pose.x() - last.x()) / step : 0;
+        double vz = step > 0 ? (pose.z() - last.z()) / step : 0;
+        last = pose;
+        clipmap.follow(pose.x(), pose.z(), vx, vz);
+        clipmap.drain(UPLOADS_PER_FRAME, sink);
+    }
+
+    /** Follows the camera, waiting until every level's whole window around it is resident. */
+    private void fill(CameraPose pose, HeightClipmap.BlockSink sink) {
+        long start = System.nanoTime();
+        clipmap.follow(pose.x(), pose.z(), 0, 0);
+        last = pose;
+        while (!clipmap.complete()) {
+            if (clipmap.drain(Integer.MAX_VALUE, sink) == 0) {
+                try {
+                    Thread.sleep(1);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new IllegalStateException("interrupted while streaming the terrain", e);
+                }
+            }
+        }
+        progress.accept(String.format(Locale.ROOT, "terrain: %-10s %7.0f ms", "streaming",
+                (System.nanoTime() - start) / 1e6));
+    }
+
+    /**
+     * Whether a node of the root at (offsetX, offsetZ) can be drawn: its own level and every coarser one it may read
+     * (the next for morphing, up to log2 N coarser along a stitched side) are resident over its samples and the
+     * row and column beyond its far sides, which its last vertices read.
+     */
+    @Override
+    public boolean drawable(int node, float offsetX, float offsetZ) {
+        return levelsOf(node, offsetX, offsetZ, null);
+    }
+
+    /**
+     * The heights a resident node may draw: the range of the levels it reads over its samples, widened by its own
+     * level's error (the finer levels its descendants draw lie within it of its surface), as a tile's box spans all
+     * the levels below it; false when not resident.
+     */
+    @Override
+    public boolean heightRange(int node, float offsetX, float offsetZ, float[] out) {
+        out[0] = Float.POSITIVE_INFINITY;
+        out[1] = Float.NEGATIVE_INFINITY;
+        if (!levelsOf(node, offsetX, offsetZ, out)) {
+            return false;
+        }
+        float error = tree.error(node);
+        out[0] -= error;
+        out[1] += error;
+        return true;
+    }
+
+    /** Whether the node's levels are resident; with {@code range}, their heights' union widened into it. */
+    private boolean levelsOf(int node, float offsetX, float offsetZ, float[] range) {
+        int level = tree.level(node);
+        long originX = rootOrigin(offsetX) + tree.sampleX(node);
+        long originZ = rootOrigin(offsetZ) + tree.sampleZ(node);
+        long span = (long) tree.cells() << level;
+        int coarsest = Math.min(levels - 1, level + tree.cellsLog2());
+        for (int l = level; l <= coarsest; l++) {
+            long x0 = originX >> l;
+            long z0 = originZ >> l;
+            long x1 = ((originX + span) >> l) + 1;
+            long z1 = ((originZ + span) >> l) + 1;
+            if (range == null ? !clipmap.resident(l, x0, z0, x1, z1)
+                    : !clipmap.heightRange(l, x0, z0, x1, z1, levelRange)) {
+                return false;
+            }
+            if (range != null) {
+                range[0] = Math.min(range[0], levelRange[0]);
+                range[1] = Math.max(range[1], levelRange[1]);
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The world's level-0 sample index of the north-west corner of the root whose centre lies at this offset,
+     * metres, on either axis: roots lie on a lattice of their own side, so the offset is a whole number of samples
+     * (terrain.vert's worldOrigin).
+     */
+    long rootOrigin(float offset) {
+        return Math.round(offset / heights.spacing(0)) - tree.size() / 2;
+    }
+
+    /** Roots drawn on each side of the camera's: enough to reach {@link TerrainSystem#COPY_DISTANCE}. */
+    int rootRadius() {
+        return rootRadius;
+    }
+
+    TerrainQuadtree tree() {
+        return tree;
+    }
+
+    BandedHeights heights() {
+        return heights;
+    }
+
+    /** The levels streamed: 0 to the roots' level. */
+    int levels() {
+        return levels;
+    }
+
+    /** Samples per side of every level's window. */
+    int clipSize() {
+        return clipmap.size();
+    }
+
+    /** The border of samples each block comes with. */
+    int border() {
+        return clipmap.border();
+    }
+
+    /** Bytes the three texture arrays take on the GPU. */
+    long textureBytes() {
+        return clipmap.textureBytes() / Float.BYTES * TEXEL_BYTES;
+    }
+
+    @Override
+    public void close() {
+        clipmap.close();
+        workers.shutdownNow();
+    }
+}
