@@ -8,8 +8,9 @@ import java.lang.management.MemoryMXBean;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPose;
@@ -17,6 +18,7 @@ import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.camera.HeightReference;
 import org.openworld.engine.camera.Keyframe;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.terrain.TerrainSettings;
 import org.openworld.engine.trees.TreeSystem;
 
 /**
@@ -53,8 +55,9 @@ class SoakTest {
 
     private static final MemoryMXBean MEMORY = ManagementFactory.getMemoryMXBean();
 
-    @Test
-    void glObjectsAndHeapDoNotGrowOverALongFlight() {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void glObjectsAndHeapDoNotGrowOverALongFlight(TerrainSettings.World world) {
         List<EngineSystem> systems = new ArrayList<>(List.of(new CameraSystem()));
         systems.addAll(SystemsOwnershipTest.systems());
         systems.add(new TreeSystem());
@@ -64,7 +67,9 @@ class SoakTest {
         List<Long> firstHeap = new ArrayList<>();
         List<Long> lastHeap = new ArrayList<>();
         long start = System.nanoTime();
-        try (Engine engine = GlTestSupport.engine(GL.context(), 64, 36, SMALL_WORLD,
+        List<String> settings = new ArrayList<>(SMALL_WORLD);
+        settings.add("terrain.world=" + world);
+        try (Engine engine = GlTestSupport.engine(GL.context(), 64, 36, settings,
                 systems.toArray(EngineSystem[]::new))) {
             engine.world().setResource(CameraDirection.class, CameraDirection.play(orbit(), 0, true));
             for (int frame = 1; frame <= FRAMES; frame++) {
@@ -84,7 +89,7 @@ class SoakTest {
             }
             engine.collectFrames(true, record -> frames[0]++);
         }
-        System.out.printf("soak: %d frames in %.1f s; GL objects %d then %s; heap after GC %s then %s bytes%n",
+        System.out.printf("soak, " + world + ": %d frames in %.1f s; GL objects %d then %s; heap after GC %s then %s bytes%n",
                 FRAMES, (System.nanoTime() - start) / 1e9, liveAfterFirstQuarter, range(lastLive), firstHeap,
                 lastHeap);
         assertEquals(FRAMES, frames[0], "every frame rendered and timed");
