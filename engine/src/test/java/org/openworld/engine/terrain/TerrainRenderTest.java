@@ -87,30 +87,38 @@ class TerrainRenderTest {
         }
     }
 
-    /**
-     * The default world (2048² samples, seed 1) from the demo's starting pose at noon, with the default materials:
-     * snow (bright, grey) high in the picture, grass (green) low.
-     */
-    @Test
-    void theTerrainPublishesTheSnowLineOfTheRuleInUseInMetres() {
+    /** The snow line in metres, of the snow map's rule and then of the altitude bands', on both worlds. */
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void theTerrainPublishesTheSnowLineOfTheRuleInUseInMetres(TerrainSettings.World world) {
         TerrainSystem terrain = new TerrainSystem();
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                List.of("terrain.size=256", "terrain.spacing=8", "terrain.snow-base=0.4", "terrain.snow-full=0.7"),
+                List.of("terrain.size=256", "terrain.spacing=8", "terrain.snow-base=0.4", "terrain.snow-full=0.7",
+                        "terrain.world=" + world),
                 terrain)) {
-            HeightMap base = terrain.data().pyramid().base();
-            double range = base.max() - base.min();
-            // at init, before any update: the snow map's 40 % to 70 % of the way up the generated relief
+            // the normalised height's 0 and 1: the tile's lowest and highest sample; the unbounded world, which has
+            // neither, puts 0 the sea fraction of the relief below the sea and 1 the relief above that
+            TerrainSettings s = TerrainSettings.DEFAULTS;
+            HeightMap base = terrain.data() != null ? terrain.data().pyramid().base() : null;
+            double lowest = base != null ? base.min() : -s.seaFraction() * s.relief();
+            double range = base != null ? base.max() - base.min() : s.relief();
+            // at init, before any update: the snow map's 40 % to 70 % of the way up
             SnowLine line = engine.world().resource(SnowLine.class);
-            assertEquals(base.min() + 0.4 * range, line.start(), 1e-3);
-            assertEquals(base.min() + 0.7 * range, line.full(), 1e-3);
+            assertEquals(lowest + 0.4 * range, line.start(), 1e-3);
+            assertEquals(lowest + 0.7 * range, line.full(), 1e-3);
             // the rule switched while running: the next update publishes the altitude band's line
             engine.settings().set("materials.snow-mode", "altitude-bands");
             engine.update();
             line = engine.world().resource(SnowLine.class);
-            assertEquals(base.min() + SnowLines.BAND_LINE * range, (line.start() + line.full()) / 2, 1e-3);
+            assertEquals(lowest + SnowLines.BAND_LINE * range, (line.start() + line.full()) / 2, 1e-3);
         }
     }
 
+    /**
+     * The default world (2048² samples, seed 1) from the demo's starting pose at noon, with the default materials:
+     * snow (bright, grey) high in the picture, grass (green) low. The tile only: what lies in front of the camera is
+     * the map's (the pose is inside the unbounded world's ground; 150 m over it a snowy hill fills the lower rows).
+     */
     @Test
     void defaultWorldShowsSnowAboveAndGreenBelow() throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
