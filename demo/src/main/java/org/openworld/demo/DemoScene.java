@@ -4,6 +4,8 @@ import java.util.List;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.World;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.minimap.MinimapSystem;
 import org.openworld.engine.particles.ParticleSystem;
@@ -20,8 +22,21 @@ import org.openworld.engine.water.WaterSystem;
  */
 final class DemoScene {
 
-    /** Where the camera starts when no pose is given: above a valley of the default world, looking north. */
+    /** Where the camera starts on the default tile: 400 m up (214 m over a valley), looking north. */
     static final CameraPose DEFAULT_POSE = new CameraPose(0, 400, 900, 0, -8, CameraPose.DEFAULT_FOV);
+    /** How far over the ground the camera starts where the ground under {@link #DEFAULT_POSE} is higher. */
+    static final double DEFAULT_CLEARANCE = 200;
+
+    /**
+     * Where the camera starts when no pose is given: {@link #DEFAULT_POSE}, raised to {@link #DEFAULT_CLEARANCE} over
+     * the world's ground where that lies higher. The unbounded world's ground there is at 480 m, so its start would
+     * otherwise be inside a mountain; the tile's (186 m) leaves the pose, and every picture taken from it, as it was.
+     */
+    static CameraPose defaultPose(World world) {
+        CameraPose p = DEFAULT_POSE;
+        double ground = world.findResource(HeightField.class).orElse(HeightField.FLAT).heightAt(p.x(), p.z());
+        return new CameraPose(p.x(), Math.max(p.y(), ground + DEFAULT_CLEARANCE), p.z(), p.yaw(), p.pitch(), p.fov());
+    }
 
     private DemoScene() {
     }

@@ -37,13 +37,16 @@ final class Poses {
         return Optional.of(path);
     }
 
-    /** A still picture's direction: the {@code --camera} pose, the path's pose at {@code --at}, or the default view. */
-    static CameraDirection still(PoseOptions options, Optional<CameraPath> path) {
+    /**
+     * A still picture's direction: the {@code --camera} pose, the path's pose at {@code --at}, or the default view over
+     * this world's ground.
+     */
+    static CameraDirection still(PoseOptions options, Optional<CameraPath> path, World world) {
         if (options.camera != null) {
             return CameraDirection.fixed(options.camera);
         }
         return path.map(p -> CameraDirection.hold(p, options.at()))
-                .orElse(CameraDirection.fixed(DemoScene.DEFAULT_POSE));
+                .orElse(CameraDirection.fixed(DemoScene.defaultPose(world)));
     }
 
     /** Tells the world's camera director to follow {@code direction} from the next update on. */

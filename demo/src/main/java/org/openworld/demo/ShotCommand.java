@@ -54,7 +54,7 @@ final class ShotCommand implements Callable<Integer> {
         Outputs.png(out, force);
         long start = System.nanoTime();
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
-            prepare(launch, Poses.still(pose, path));
+            prepare(launch, Poses.still(pose, path, launch.engine.world()));
             if (ui) {
                 renderWithUi(launch);
             } else {

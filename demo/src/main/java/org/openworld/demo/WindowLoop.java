@@ -67,7 +67,8 @@ final class WindowLoop implements SettingsPanel.Host {
         engine().world().setResource(input);
         Poses.direct(engine().world(), replay
                 .map(path -> CameraDirection.play(path, pose.at(), true))
-                .orElse(CameraDirection.controlsFrom(pose.explicitPose().orElse(DemoScene.DEFAULT_POSE))));
+                .orElse(CameraDirection.controlsFrom(pose.explicitPose()
+                        .orElseGet(() -> DemoScene.defaultPose(engine().world())))));
         panel = new SettingsPanel(engine().settings(), this);
     }
 

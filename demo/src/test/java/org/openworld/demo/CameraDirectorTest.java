@@ -14,11 +14,14 @@ import java.util.Arrays;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.Texture3D;
+import org.openworld.engine.terrain.TerrainSettings;
 import picocli.CommandLine;
 
 /**
@@ -36,14 +39,21 @@ class CameraDirectorTest {
     @TempDir
     Path dir;
 
-    @Test
-    void aShotIsTheFrameAfterManyFramesAtItsPose() throws Exception {
+    /**
+     * On both worlds: the unbounded one streams its levels around the camera, and a shot waits for them, so it shows
+     * what later frames at its pose show. The pose lies over the ground of either world (210 m over the unbounded
+     * one's).
+     */
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void aShotIsTheFrameAfterManyFramesAtItsPose(TerrainSettings.World world) throws Exception {
         String pose = "-300,600,700,20,-12";
+        String[] still = concat(STILL, "--set", "terrain.world=" + world);
         Path shot = dir.resolve("shot.png");
-        assertEquals(0, Main.execute(concat(STILL, "shot", "--out", shot.toString(), "--camera", pose)));
+        assertEquals(0, Main.execute(concat(still, "shot", "--out", shot.toString(), "--camera", pose)));
 
         Image settled;
-        try (Launch launch = Launch.start(options(STILL), false, "test")) {
+        try (Launch launch = Launch.start(options(still), false, "test")) {
             Poses.direct(launch.engine.world(), CameraDirection.fixed(camera(pose)));
             for (int frame = 0; frame < 6; frame++) {
                 launch.engine.update();

@@ -11,9 +11,12 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.bench.SummaryJson;
 import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.terrain.TerrainSettings;
 
 /**
  * The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. The tests that run a
@@ -27,11 +30,13 @@ class CommandLineTest {
     @RegisterExtension
     final ConsoleCapture console = new ConsoleCapture();
 
-    @Test
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
     @Tag("gl")
-    void shotWritesAnImageOfTheAskedSize() throws Exception {
+    void shotWritesAnImageOfTheAskedSize(TerrainSettings.World world) throws Exception {
         Path png = dir.resolve("shot.png");
-        assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90"), console.stderr());
+        assertEquals(0, Main.execute("shot", "--out", png.toString(), "--size", "160x90", "--set",
+                "terrain.world=" + world), console.stderr());
         Image image = Image.read(png);
         assertEquals(160, image.width());
         assertEquals(90, image.height());
@@ -66,13 +71,17 @@ class CommandLineTest {
         return all;
     }
 
-    @Test
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
     @Tag("gl")
-    void cameraOptionMovesTheView() throws Exception {
+    void cameraOptionMovesTheView(TerrainSettings.World world) throws Exception {
         Path up = dir.resolve("up.png");
         Path down = dir.resolve("down.png");
-        assertEquals(0, Main.execute("shot", "--out", up.toString(), "--size", "96x54", "--camera", "0,1500,400,0,60"));
-        assertEquals(0, Main.execute("shot", "--out", down.toString(), "--size", "96x54", "--camera", "0,1500,400,0,-60"));
+        String chosen = "terrain.world=" + world;
+        assertEquals(0, Main.execute("shot", "--out", up.toString(), "--size", "96x54", "--camera", "0,1500,400,0,60",
+                "--set", chosen));
+        assertEquals(0, Main.execute("shot", "--out", down.toString(), "--size", "96x54", "--camera",
+                "0,1500,400,0,-60", "--set", chosen));
         // Looking up sees only sky; looking down sees only ground.
         assertTrue(blueness(Image.read(up), 0, 54) > 15, "looking up should see blue sky");
         assertTrue(blueness(Image.read(down), 0, 54) < 5, "looking down should see the ground");

@@ -12,10 +12,13 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.SkyMaps;
@@ -29,13 +32,15 @@ import org.openworld.engine.minimap.MinimapSystem;
 import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.shadow.ShadowSystem;
 import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.terrain.TerrainSettings;
 import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
  * Every engine system on real GL, owning through {@code context.own}: start-up and shutdown leave no GL object
  * behind (also after an init that fails half-way, and after targets are re-made while running), and what the
- * systems own carries labels named like their timer spans.
+ * systems own carries labels named like their timer spans. What the terrain owns differs between its two worlds (the
+ * tile's maps, or the unbounded world's clipmap and its workers), so the lifetimes are checked on both.
  */
 @GlTest
 class SystemsOwnershipTest {
@@ -52,16 +57,26 @@ class SystemsOwnershipTest {
                 new WaterSystem(), new MinimapSystem(), new ParticleSystem());
     }
 
+    /** The small world on the given terrain. */
+    static List<String> smallWorld(TerrainSettings.World world) {
+        List<String> settings = new ArrayList<>(SMALL_WORLD);
+        settings.add("terrain.world=" + world);
+        return settings;
+    }
+
+    /** The engine, its camera 120 m over the ground (the two worlds' heights differ there). */
     private static Engine start(List<EngineSystem> systems, List<String> settings) {
         Engine engine = GlTestSupport.engine(GL.context(), 96, 64, settings, systems.toArray(EngineSystem[]::new));
-        engine.world().resource(Camera.class).setPose(new CameraPose(0, 120, 300, 0, -10, 60));
+        double ground = engine.world().resource(HeightField.class).heightAt(0, 300);
+        engine.world().resource(Camera.class).setPose(new CameraPose(0, ground + 120, 300, 0, -10, 60));
         return engine;
     }
 
-    @Test
-    void startUpRenderingAndShutdownLeaveNoGlObject() {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void startUpRenderingAndShutdownLeaveNoGlObject(TerrainSettings.World world) {
         int live;
-        try (Engine engine = start(systems(), SMALL_WORLD)) {
+        try (Engine engine = start(systems(), smallWorld(world))) {
             engine.update();
             engine.render();
             engine.render();
@@ -72,9 +87,10 @@ class SystemsOwnershipTest {
         assertTrue(live > 40, "the systems made their objects: " + live);
     }
 
-    @Test
-    void objectsRemadeWhileRunningAreClosedAsTheyAreReplaced() {
-        try (Engine engine = start(systems(), SMALL_WORLD)) {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void objectsRemadeWhileRunningAreClosedAsTheyAreReplaced(TerrainSettings.World world) {
+        try (Engine engine = start(systems(), smallWorld(world))) {
             engine.update();
             engine.render();
             Map<GlObjects.Kind, Integer> before = resources();
@@ -118,8 +134,9 @@ class SystemsOwnershipTest {
         }
     }
 
-    @Test
-    void anInitThatFailsHalfWayLeavesNothingBehind() {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void anInitThatFailsHalfWayLeavesNothingBehind(TerrainSettings.World world) {
         EngineSystem failing = new EngineSystem() {
             @Override
             public SystemSpec spec() {
@@ -135,7 +152,8 @@ class SystemsOwnershipTest {
         List<EngineSystem> systems = new ArrayList<>(systems());
         systems.add(failing);
 
-        IllegalStateException e = assertThrows(IllegalStateException.class, () -> start(systems, SMALL_WORLD));
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> start(systems, smallWorld(world)));
 
         assertEquals("no snow in assets/", e.getMessage());
         assertEquals(0, GL.context().objects().live(), "left alive: " + GL.context().objects());

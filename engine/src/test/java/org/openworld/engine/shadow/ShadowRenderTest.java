@@ -17,6 +17,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.Engine;
@@ -26,6 +27,7 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -35,13 +37,15 @@ import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.GlObjects;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.terrain.TerrainSettings;
 import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
  * The sun's shadows on real GL, over {@link WallWorld}: flat ground at −20 m and a wall 100 m high just west of the
  * centre (x from −16 to 0 m), lit by a sun in the east 35° up, so the wall's shadow lies on the ground west of it,
- * 100 / tan 35° = 143 m long (x from −159 to −16 m).
+ * 100 / tan 35° = 143 m long (x from −159 to −16 m). The two rules that need no wall (maps re-made once when their
+ * size changes; no shadow with the sun down) hold on the unbounded world's ground too.
  */
 @GlTest
 class ShadowRenderTest {
@@ -65,7 +69,13 @@ class ShadowRenderTest {
     }
 
     static List<String> settings(String... more) {
-        List<String> s = new ArrayList<>(WallWorld.terrain(wall));
+        return settings(TerrainSettings.World.TILE, more);
+    }
+
+    /** The wall's map (a tile), or the unbounded world, for the tests whose rules do not need the wall. */
+    static List<String> settings(TerrainSettings.World world, String... more) {
+        List<String> s = new ArrayList<>(world == TerrainSettings.World.TILE ? WallWorld.terrain(wall)
+                : List.of("terrain.world=" + world));
         s.addAll(List.of("shadow.resolution=512", "shadow.distance=600"));
         s.addAll(List.of(more));
         return s;
@@ -328,9 +338,10 @@ class ShadowRenderTest {
         assertTrue(paper > 0.05, "the paper's map, refitted, changed at only " + paper + " of its texels");
     }
 
-    @Test
-    void changingTheResolutionOrCascadeCountRebuildsTheMapsOnce() {
-        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings("shadow.cascades=3"),
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void changingTheResolutionOrCascadeCountRebuildsTheMapsOnce(TerrainSettings.World world) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings(world, "shadow.cascades=3"),
                 new CullingSystem(), new TerrainSystem(), new ShadowSystem())) {
             engine.world().setResource(EAST_SUN);
             engine.update();
@@ -353,14 +364,19 @@ class ShadowRenderTest {
         }
     }
 
-    @Test
-    void withTheSunDownNothingIsShadowed() {
+    /** On both worlds, looking down from {@link #ABOVE}'s 250 m over the ground. */
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void withTheSunDownNothingIsShadowed(TerrainSettings.World world) {
         Sun down = new Sun(new Vector3f(0.9f, -0.1f, 0), new Vector3f(1), new Vector3f(0.25f));
-        Image night = render(settings(), engine -> engine.world().setResource(down));
-        Image off = render(settings(), engine -> {
+        Consumer<Engine> overTheGround = engine -> {
+            double ground = engine.world().resource(HeightField.class).heightAt(ABOVE.x(), ABOVE.z());
+            engine.world().resource(Camera.class).setPose(new CameraPose(ABOVE.x(),
+                    ground + ABOVE.y() - WallWorld.GROUND, ABOVE.z(), ABOVE.yaw(), ABOVE.pitch(), ABOVE.fov()));
             engine.world().setResource(down);
-            engine.setEnabled("shadow", false);
-        });
+        };
+        Image night = render(settings(world), overTheGround);
+        Image off = render(settings(world), overTheGround.andThen(engine -> engine.setEnabled("shadow", false)));
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
                 assertEquals(off.luma(x, y), night.luma(x, y), 1e-9, "no map, no shadow: (" + x + ", " + y + ")");

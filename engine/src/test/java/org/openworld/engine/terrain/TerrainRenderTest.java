@@ -10,12 +10,15 @@ import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.HeightField;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.TimeOfDay;
@@ -36,29 +39,36 @@ class TerrainRenderTest {
     static final HeadlessGl GL = new HeadlessGl();
 
     /**
-     * Under either rule, levels are chosen from a point on the ground in the middle of the tile, then frozen; the
-     * camera climbs and looks down at the cut from outside. Coloured by level with no sky behind, any gap between
-     * patches (in x/z from a T-junction, or vertical from two levels disagreeing on a shared vertex's height) shows
-     * the black clear colour.
+     * Under either rule, levels are chosen from a point on the ground at the origin, then frozen; the camera climbs
+     * and looks down at the cut from outside, 400 m over the ground 400 m south. Coloured by level with no sky
+     * behind, any gap between patches (in x/z from a T-junction, or vertical from two levels disagreeing on a shared
+     * vertex's height) shows the black clear colour. On both worlds; the unbounded one has no flat grid (it would
+     * put every leaf of its 25 roots in the cut), so only the quadtree's two rules there. Its windows follow the
+     * live camera, not the frozen point, and a node is split only where its children's blocks are resident: from
+     * 600 m south the origin lies outside level 0's window (1 km, around the camera) and the cut there is coarser.
      */
-    @Test
-    void everyLevelPresentAndNoCrackLetsTheBackgroundThrough() throws IOException {
-        for (String mode : List.of("quadtree", "flat-grid", "quadtree/screen-error", "flat-grid/screen-error")) {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void everyLevelPresentAndNoCrackLetsTheBackgroundThrough(TerrainSettings.World world) throws IOException {
+        List<String> modes = world == TerrainSettings.World.TILE
+                ? List.of("quadtree", "flat-grid", "quadtree/screen-error", "flat-grid/screen-error")
+                : List.of("quadtree", "quadtree/screen-error");
+        for (String mode : modes) {
             String rule = mode.endsWith("screen-error") ? "screen-error" : "paper";
             try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
                     List.of("terrain.size=256", "terrain.relief=100", "lod.patch-vertices=33", "lod.base-resolution=16",
                             "lod.pixel-error=4", "lod.mode=" + mode.replace("/screen-error", ""), "lod.rule=" + rule,
-                            "terrain-debug.colouring=levels", "terrain-debug.freeze-lod=on"),
+                            "terrain-debug.colouring=levels", "terrain-debug.freeze-lod=on", "terrain.world=" + world),
                     new TerrainSystem(), new CullingSystem())) {
-                TerrainSystem terrain = terrain(engine);
-                HeightMap map = terrain.data().pyramid().base();
+                HeightField ground = engine.world().resource(HeightField.class);
                 Camera camera = engine.world().resource(Camera.class);
-                camera.setPose(new CameraPose(0, map.heightAt(0, 0) + 2, 0, 0, -10, 60));
+                camera.setPose(new CameraPose(0, ground.heightAt(0, 0) + 2, 0, 0, -10, 60));
                 frame(engine);
-                // from outside: high above the south edge, looking north and steeply down over the tile
-                camera.setPose(new CameraPose(0, map.max() + 300, map.extent() * 0.6, 0, -60, 50));
+                // from outside: above the ground south of the origin, looking north and steeply down
+                camera.setPose(new CameraPose(0, ground.heightAt(0, 400) + 400, 400, 0, -60, 50));
                 Image image = frame(engine);
-                image.writePng(Path.of("target/test-images/terrain-cut-" + mode.replace('/', '-') + ".png"));
+                String name = world + "-" + mode.replace('/', '-');
+                image.writePng(Path.of("target/test-images/terrain-cut-" + name + ".png"));
 
                 int background = 0;
                 Set<Integer> colours = new HashSet<>();
@@ -71,36 +81,44 @@ class TerrainRenderTest {
                         colours.add(hueBucket(r, g, b));
                     }
                 }
-                assertEquals(0, background, mode + ": pixels where the background shows through the terrain");
-                assertTrue(colours.size() >= 4, mode + ": expected at least four level colours, saw " + colours.size());
+                assertEquals(0, background, name + ": pixels where the background shows through the terrain");
+                assertTrue(colours.size() >= 4, name + ": expected at least four level colours, saw " + colours.size());
             }
+        }
+    }
+
+    /** The snow line in metres, of the snow map's rule and then of the altitude bands', on both worlds. */
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void theTerrainPublishesTheSnowLineOfTheRuleInUseInMetres(TerrainSettings.World world) {
+        TerrainSystem terrain = new TerrainSystem();
+        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
+                List.of("terrain.size=256", "terrain.spacing=8", "terrain.snow-base=0.4", "terrain.snow-full=0.7",
+                        "terrain.world=" + world),
+                terrain)) {
+            // the normalised height's 0 and 1: the tile's lowest and highest sample; the unbounded world, which has
+            // neither, puts 0 the sea fraction of the relief below the sea and 1 the relief above that
+            TerrainSettings s = TerrainSettings.DEFAULTS;
+            HeightMap base = terrain.data() != null ? terrain.data().pyramid().base() : null;
+            double lowest = base != null ? base.min() : -s.seaFraction() * s.relief();
+            double range = base != null ? base.max() - base.min() : s.relief();
+            // at init, before any update: the snow map's 40 % to 70 % of the way up
+            SnowLine line = engine.world().resource(SnowLine.class);
+            assertEquals(lowest + 0.4 * range, line.start(), 1e-3);
+            assertEquals(lowest + 0.7 * range, line.full(), 1e-3);
+            // the rule switched while running: the next update publishes the altitude band's line
+            engine.settings().set("materials.snow-mode", "altitude-bands");
+            engine.update();
+            line = engine.world().resource(SnowLine.class);
+            assertEquals(lowest + SnowLines.BAND_LINE * range, (line.start() + line.full()) / 2, 1e-3);
         }
     }
 
     /**
      * The default world (2048² samples, seed 1) from the demo's starting pose at noon, with the default materials:
-     * snow (bright, grey) high in the picture, grass (green) low.
+     * snow (bright, grey) high in the picture, grass (green) low. The tile only: what lies in front of the camera is
+     * the map's (the pose is inside the unbounded world's ground; 150 m over it a snowy hill fills the lower rows).
      */
-    @Test
-    void theTerrainPublishesTheSnowLineOfTheRuleInUseInMetres() {
-        TerrainSystem terrain = new TerrainSystem();
-        try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                List.of("terrain.size=256", "terrain.spacing=8", "terrain.snow-base=0.4", "terrain.snow-full=0.7"),
-                terrain)) {
-            HeightMap base = terrain.data().pyramid().base();
-            double range = base.max() - base.min();
-            // at init, before any update: the snow map's 40 % to 70 % of the way up the generated relief
-            SnowLine line = engine.world().resource(SnowLine.class);
-            assertEquals(base.min() + 0.4 * range, line.start(), 1e-3);
-            assertEquals(base.min() + 0.7 * range, line.full(), 1e-3);
-            // the rule switched while running: the next update publishes the altitude band's line
-            engine.settings().set("materials.snow-mode", "altitude-bands");
-            engine.update();
-            line = engine.world().resource(SnowLine.class);
-            assertEquals(base.min() + SnowLines.BAND_LINE * range, (line.start() + line.full()) / 2, 1e-3);
-        }
-    }
-
     @Test
     void defaultWorldShowsSnowAboveAndGreenBelow() throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
@@ -133,20 +151,22 @@ class TerrainRenderTest {
 
     /**
      * Culling frozen on the ground, then seen from above: only the patches inside the frozen frustum are drawn (fewer
-     * than the same view culls normally), and the frozen frustum's outline shows where it was.
+     * than the same view culls normally), and the frozen frustum's outline shows where it was. On both worlds.
      */
-    @Test
-    void frozenCullingKeepsTheOldFrustumWhenTheCameraFliesOut() throws IOException {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void frozenCullingKeepsTheOldFrustumWhenTheCameraFliesOut(TerrainSettings.World world) throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                List.of("terrain.size=512", "terrain.spacing=8", "culling.freeze=on", "terrain-debug.freeze-lod=on"),
+                List.of("terrain.size=512", "terrain.spacing=8", "culling.freeze=on", "terrain-debug.freeze-lod=on",
+                        "terrain.world=" + world),
                 new TerrainSystem(), new CullingSystem(), new SkySystem())) {
             Camera camera = engine.world().resource(Camera.class);
-            HeightMap map = terrain(engine).data().pyramid().base();
-            camera.setPose(new CameraPose(0, map.heightAt(0, 600) + 30, 600, 0, 0, 60));
+            HeightField ground = engine.world().resource(HeightField.class);
+            camera.setPose(new CameraPose(0, ground.heightAt(0, 600) + 30, 600, 0, 0, 60));
             frame(engine);
             camera.setPose(new CameraPose(0, 3500, 2600, 0, -50, 60));
             Image image = frame(engine);
-            image.writePng(Path.of("target/test-images/terrain-frozen-culling.png"));
+            image.writePng(Path.of("target/test-images/terrain-frozen-culling-" + world + ".png"));
             double[] frozenPatches = new double[1];
             engine.collectFrames(true, r -> frozenPatches[0] = r.counters().get("terrain.main.patches"));
 
@@ -157,11 +177,6 @@ class TerrainRenderTest {
             assertTrue(frozenPatches[0] > 0 && frozenPatches[0] < livePatches[0],
                     "frozen frustum draws " + frozenPatches[0] + " patches, the live one " + livePatches[0]);
         }
-    }
-
-    private static TerrainSystem terrain(Engine engine) {
-        return (TerrainSystem) engine.order().systems().stream().filter(s -> s instanceof TerrainSystem)
-                .findFirst().orElseThrow();
     }
 
     private static Image frame(Engine engine) {
