@@ -78,11 +78,15 @@ class TerrainRenderTest {
                         if (r + g + b < 6) {
                             background++;
                         }
-                        colours.add(hueBucket(r, g, b));
+                        int hue = hueBucket(r, g, b);
+                        if (hue >= 0) {
+                            colours.add(hue);
+                        }
                     }
                 }
                 assertEquals(0, background, name + ": pixels where the background shows through the terrain");
-                assertTrue(colours.size() >= 4, name + ": expected at least four level colours, saw " + colours.size());
+                // levels 0, 1 and 2 of the cut frozen at the origin lie in view (grey, unsaturated pixels are no level)
+                assertTrue(colours.size() >= 3, name + ": expected at least three level colours, saw " + colours);
             }
         }
     }
