@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Function;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
@@ -14,6 +15,7 @@ import org.openworld.engine.GlTestSupport;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.HeightField;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.gl.Image;
@@ -56,13 +58,19 @@ class CasterLevelsRenderTest {
      * pixels drawn darker than 0.85 × the same picture without shadows. One world for all, maps redrawn every frame.
      */
     static double[] shadowed(List<String> lod, double... elevations) {
-        List<String> settings = new ArrayList<>(WORLD);
+        return shadowed(WORLD, lod, ground -> POSE, elevations);
+    }
+
+    /** The same for a world and a pose placed over its ground. */
+    static double[] shadowed(List<String> world, List<String> lod, Function<HeightField, CameraPose> pose,
+                             double... elevations) {
+        List<String> settings = new ArrayList<>(world);
         settings.addAll(lod);
         settings.add("shadow.refresh=ALWAYS");
         double[] fractions = new double[elevations.length];
         try (Engine engine = GlTestSupport.engine(GL.context(), W, H, settings, new CullingSystem(),
                 new TerrainSystem(), new ShadowSystem())) {
-            engine.world().resource(Camera.class).setPose(POSE);
+            engine.world().resource(Camera.class).setPose(pose.apply(engine.world().resource(HeightField.class)));
             for (int i = 0; i < elevations.length; i++) {
                 engine.world().setResource(southSun(elevations[i]));
                 Image lit = frame(engine, false);
@@ -108,5 +116,20 @@ class CasterLevelsRenderTest {
         // the counter-example, which the tolerance tells apart
         assertTrue(coarseCasters[0] > reference[0] + 2 * TOLERANCE, "the paper rule's casters, a level coarser "
                 + "than the ground: " + coarseCasters[0] + " of the picture shadowed, full resolution " + reference[0]);
+    }
+
+    /**
+     * The unbounded world's relief casts its shadows too, through the same caster cut (its streamed heights, its
+     * uniform per-level errors): 300 m over the ground at the start of {@code crossing.path}, looking east and down
+     * at the hills, a 10° sun in the south shadows far more of the picture than a 54° one, whose shadows are short.
+     * Measured (480 × 270): 54°: 0.3 %, 10°: 16.8 %.
+     */
+    @Test
+    void theUnboundedWorldsReliefCastsShadows() {
+        double[] fractions = shadowed(List.of("terrain.world=unbounded"), List.of(),
+                ground -> new CameraPose(-9000, ground.heightAt(-9000, 0) + 300, 0, 90, -10, 60), 54, 10);
+        String series = "unbounded world: sun 54° " + fractions[0] + ", 10° " + fractions[1];
+        System.out.println("caster levels, " + series);
+        assertTrue(fractions[1] > 0.05 && fractions[1] > fractions[0] + 0.03, series);
     }
 }

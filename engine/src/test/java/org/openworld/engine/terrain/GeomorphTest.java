@@ -3,7 +3,6 @@ package org.openworld.engine.terrain;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.Map;
 
@@ -209,7 +208,7 @@ class GeomorphTest {
 
         /** Follows the camera as TerrainSystem does each step (at 60 a second), and lays the roots around it. */
         public float[] offsets(Vector3f eye) {
-            world.follow(new CameraPose(eye.x, eye.y, eye.z, 90, -8, 60), last.isFinite() ? 1 / 60.0 : 0,
+            world.follow(new CameraPose(eye.x, eye.y, eye.z, 90, -8, 45), last.isFinite() ? 1 / 60.0 : 0,
                     (level, ix0, iz0, texelX, texelZ, block, bordered) -> {
                         int border = world.border();
                         int side = block + 2 * border;
