@@ -39,9 +39,8 @@ import org.openworld.engine.gl.Uniform;
  * coarsest window spans 131 km, so some level always does within the 3 km reach).
  *
  * <p><b>Cost.</b> Per texel {@code 8 · log(3000 m / d_L) / log 1.4} bilinear reads (23 distances on level 0, 9 on
- * level 7), each four texel fetches and four fetches of the table: on llvmpipe about 6 to 15 ms a block (measured
- * from the start's 512 blocks, 3.3 to 7.8 s on a busy two-core machine), where a GPU takes well under a
- * millisecond.
+ * level 7), each four texel fetches and four fetches of the table. On llvmpipe 6 ms a block (the start's 512
+ * blocks in 3.0 s on a quiet two-core machine, up to 7.8 s on a busy one); on a GPU well under a millisecond.
  *
  * <p><b>Limits.</b> A block's horizon near a fine window's edge is read from a coarser level, and a block's value is
  * fixed once shaded: where the window lay when it was shaded decides what its search could read there, so a place

@@ -105,8 +105,8 @@ final class UnboundedWorld implements AutoCloseable {
     }
 
     /**
-     * Uploads a block given with its border: its heights, its slopes by central differences, and its snow; then
-     * the sky's pass writes its share of the sky seen.
+     * Uploads a block given with its border: its heights, its slopes by central differences, and its snow; its
+     * share of the sky seen waits for the sky's pass ({@link StreamedSky#arrived}).
      */
     private void upload(int level, long ix0, long iz0, int texelX, int texelZ, int block, float[] bordered) {
         int border = stream.border();
