@@ -50,6 +50,12 @@ import org.openworld.engine.gl.Uniform;
  */
 final class StreamedSky {
 
+    /**
+     * The block index a slot holds before its first block: none the world reaches (level 0's blocks, 128 m, number
+     * under 10⁵ within the 10 000 km before it repeats).
+     */
+    private static final int NOTHING = Integer.MIN_VALUE;
+
     private final BandedHeights heights;
     private final int size;
     private final int block;
@@ -69,9 +75,6 @@ final class StreamedSky {
     /** Blocks uploaded and not yet given their visibility, in the order they came. */
     private final Set<Block> pending = new LinkedHashSet<>();
     private final DrawStats stats = new DrawStats();
-
-    /** The block index no slot holds before its first block: far beyond any the world reaches (a few million). */
-    private static final int NOTHING = Integer.MIN_VALUE;
 
     /**
      * The program ({@code terrain.sky}), the table of held blocks ({@code terrain.clipmap.held}) and a target for each
