@@ -1,5 +1,6 @@
 #version 330 core
-// The far material's bake (terrain/bake.frag): one triangle over the whole target.
+// One triangle over the whole target (or viewport): the far material's bake (terrain/bake.frag) and the unbounded
+// world's sky visibility per block (terrain/sky.frag).
 layout(location = 0) in vec2 position;
 
 void main() {

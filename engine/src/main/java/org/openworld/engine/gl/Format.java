@@ -30,6 +30,8 @@ public enum Format {
     RGB16F(GL_RGB16F, GL_RGB, GL_FLOAT, 6),
     /** Four half floats per texel, uploaded from floats, e.g. a table of linear colours above 1. */
     RGBA16F(GL_RGBA16F, GL_RGBA, GL_FLOAT, 8),
+    /** Two 32-bit signed integers per texel, read with texelFetch from an integer sampler, e.g. a pair of indices. */
+    RG32I(GL_RG32I, GL_RG_INTEGER, GL_INT, 8),
     /** Four full floats per texel: values read back exactly (a probe of positions). */
     RGBA32F(GL_RGBA32F, GL_RGBA, GL_FLOAT, 16),
     /** 24-bit depth and an 8-bit stencil: the scene's depth, with the water's stencil marks. */
@@ -81,7 +83,7 @@ public enum Format {
     /** Values per texel in uploaded data: 1 red, 2 RG, 3 RGB, 4 RGBA, 1 for depth, 1 packed depth + stencil. */
     public int components() {
         return switch (format) {
-            case GL_RG -> 2;
+            case GL_RG, GL_RG_INTEGER -> 2;
             case GL_RGB -> 3;
             case GL_RGBA -> 4;
             default -> 1;

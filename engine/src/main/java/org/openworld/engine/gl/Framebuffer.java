@@ -8,10 +8,10 @@ import org.lwjgl.system.MemoryUtil;
 
 /**
  * A framebuffer object with texture attachments: optional colour, optional depth (or depth + stencil), which it owns;
- * or one layer of a {@link DepthTextureArray}, or level 0 of one or more colour textures that one draw fills at once
- * (e.g. baked once, then mipmapped), which it borrows. The engine's scene target is RGBA8 + depth24/stencil8; the
- * water's reflection is colour + depth; each shadow cascade is a depth layer; the sky's panorama is two colour
- * textures.
+ * or one layer of a {@link DepthTextureArray} or of a colour {@link TextureArray}, or level 0 of one or more colour
+ * textures that one draw fills at once (e.g. baked once, then mipmapped), which it borrows. The engine's scene target
+ * is RGBA8 + depth24/stencil8; the water's reflection is colour + depth; each shadow cascade is a depth layer; the
+ * sky's panorama is two colour textures; the unbounded world's sky visibility is written into a clipmap level.
  */
 public final class Framebuffer implements Labelled {
 
@@ -63,6 +63,19 @@ public final class Framebuffer implements Labelled {
         checkComplete();
     }
 
+    /** A colour-only target drawing into one layer of {@code colors}, which stays the caller's to close. */
+    private Framebuffer(GlContext gl, TextureArray colors, int layer) {
+        this.gl = gl;
+        this.width = colors.width();
+        this.height = colors.height();
+        this.color = null;
+        this.depth = null;
+        this.id = gl.objects().create(GlObjects.Kind.FRAMEBUFFER, GL30C::glGenFramebuffers);
+        glBindFramebuffer(GL_FRAMEBUFFER, id);
+        glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, colors.id(), 0, layer);
+        checkComplete();
+    }
+
     /** A colour-only target drawing into level 0 of each of {@code colors}, which stay the caller's to close. */
     private Framebuffer(GlContext gl, Texture2D[] colors) {
         this.gl = gl;
@@ -99,6 +112,17 @@ public final class Framebuffer implements Labelled {
             throw new IllegalArgumentException("layer " + layer + " of a " + depth.layers() + "-layer array");
         }
         return new Framebuffer(gl, depth, layer);
+    }
+
+    /**
+     * A target for one layer of a colour array, e.g. a level of a clipmap written in place; closing it leaves the
+     * array alone.
+     */
+    public static Framebuffer onLayer(GlContext gl, TextureArray colors, int layer) {
+        if (layer < 0 || layer >= colors.layers()) {
+            throw new IllegalArgumentException("layer " + layer + " of a " + colors.layers() + "-layer array");
+        }
+        return new Framebuffer(gl, colors, layer);
     }
 
     private void checkComplete() {

@@ -1,6 +1,7 @@
 package org.openworld.engine.terrain;
 
 import java.util.Arrays;
+import java.util.function.IntToDoubleFunction;
 import java.util.stream.IntStream;
 
 /**
@@ -76,7 +77,8 @@ public final class SkyVisibility {
             sin[m] = Math.sin(2 * Math.PI * m / DIRECTIONS);
         }
         double d = grid.spacing();
-        int steps = (int) Math.ceil(Math.log(REACH_METRES / d) / Math.log(STEP_GROWTH)) + 1;
+        double[] distances = distances(d);
+        int steps = distances.length;
         // per distance: the level read, where this grid's samples fall on it (g = col · scale + shift, in its
         // samples), and the step along each azimuth in its samples; all fixed, so the loop below only adds
         HeightMap[] levelAt = new HeightMap[steps];
@@ -86,12 +88,8 @@ public final class SkyVisibility {
         double[][] stepX = new double[steps][DIRECTIONS];
         double[][] stepZ = new double[steps][DIRECTIONS];
         for (int j = 0; j < steps; j++) {
-            double r = d * Math.pow(STEP_GROWTH, j);
-            int k = level;
-            while (k + 1 < pyramid.levelCount() && pyramid.level(k + 1).spacing() <= r / LEVEL_SPAN) {
-                k++;
-            }
-            HeightMap map = pyramid.level(k);
+            double r = distances[j];
+            HeightMap map = pyramid.level(levelAt(r, level, pyramid.levelCount(), k -> pyramid.level(k).spacing()));
             levelAt[j] = map;
             scale[j] = d / map.spacing();
             shift[j] = map.size() / 2.0 - n / 2.0 * scale[j];
@@ -124,6 +122,31 @@ public final class SkyVisibility {
             }
         });
         return new SkyVisibility(n, d, values, grid.periodic());
+    }
+
+    /**
+     * The distances at which the horizon is searched from a grid of samples {@code d} metres apart:
+     * {@code d · STEP_GROWTH^j} for j = 0, 1, ... while under {@link #REACH_METRES}, and the first beyond.
+     */
+    static double[] distances(double d) {
+        int steps = Math.max(0, (int) Math.ceil(Math.log(REACH_METRES / d) / Math.log(STEP_GROWTH)) + 1);
+        double[] r = new double[steps];
+        for (int j = 0; j < steps; j++) {
+            r[j] = d * Math.pow(STEP_GROWTH, j);
+        }
+        return r;
+    }
+
+    /**
+     * The level read at distance {@code r}: from {@code from}, the coarsest of the {@code count} levels whose samples
+     * lie at most {@code r / LEVEL_SPAN} apart ({@code spacing} gives a level's, growing with the level).
+     */
+    static int levelAt(double r, int from, int count, IntToDoubleFunction spacing) {
+        int k = from;
+        while (k + 1 < count && spacing.applyAsDouble(k + 1) <= r / LEVEL_SPAN) {
+            k++;
+        }
+        return k;
     }
 
     /**

@@ -49,6 +49,8 @@ final class StreamedWorld implements Residency, AutoCloseable {
     private final int levels;
     private final int rootRadius;
     private final Consumer<String> progress;
+    /** Per level L and level k: how far from a level-L block the sky's search reads level k, metres (0: not). */
+    private final double[][] skyReach;
     /** Where the camera was at the last step; null before the first. */
     private CameraPose last;
 
@@ -82,6 +84,13 @@ final class StreamedWorld implements Residency, AutoCloseable {
         });
         clipmap = new HeightClipmap(heights, levels, size, BLOCK, StreamedSnow.border(s), workers);
         this.progress = progress;
+        skyReach = new double[levels][levels];
+        for (int l = 0; l < levels; l++) {
+            for (double r : SkyVisibility.distances(heights.spacing(l))) {
+                int k = SkyVisibility.levelAt(r, l, levels, heights::spacing);
+                skyReach[l][k] = Math.max(skyReach[l][k], r);
+            }
+        }
         progress.accept(String.format(Locale.ROOT, "terrain: %d levels of %d² samples stream around the camera "
                 + "(%.0f MiB of %d MiB)", levels, size, textureBytes() / (double) (1 << 20), s.memoryBudget()));
     }
@@ -193,6 +202,42 @@ final class StreamedWorld implements Residency, AutoCloseable {
             }
         }
         return true;
+    }
+
+    /** Whether level {@code level}'s block (bx, bz) is resident: its slot holds it. */
+    boolean holds(int level, long bx, long bz) {
+        return clipmap.resident(level, bx * BLOCK, bz * BLOCK, (bx + 1) * BLOCK, (bz + 1) * BLOCK);
+    }
+
+    /**
+     * Whether the heights the sky's search ({@link StreamedSky}) reads from level {@code level}'s block (bx, bz) have
+     * arrived: on each level k it reads, the samples within its reach on k of the block, as far as k's window
+     * holds them (what lies beyond a window is not waited for: the search falls back on a coarser level there).
+     */
+    boolean skyReady(int level, long bx, long bz) {
+        double d = heights.spacing(level);
+        int size = clipmap.size();
+        for (int k = level; k < levels; k++) {
+            double reach = skyReach[level][k];
+            if (reach == 0) {
+                continue;
+            }
+            double dk = heights.spacing(k);
+            // level-k samples from reach before the block's first to the one after reach beyond its last
+            long x0 = Math.max(clipmap.windowX(k), (long) Math.floor((bx * BLOCK * d - reach) / dk));
+            long z0 = Math.max(clipmap.windowZ(k), (long) Math.floor((bz * BLOCK * d - reach) / dk));
+            long x1 = Math.min(clipmap.windowX(k) + size, end(bx, d, reach, dk));
+            long z1 = Math.min(clipmap.windowZ(k) + size, end(bz, d, reach, dk));
+            if (x0 < x1 && z0 < z1 && !clipmap.resident(k, x0, z0, x1, z1)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** One past the last level-k sample (dk apart) a search reaching {@code reach} from block b (d apart) reads. */
+    private static long end(long b, double d, double reach, double dk) {
+        return (long) Math.floor(((b + 1) * BLOCK * d + reach) / dk) + 2;
     }
 
     /**

@@ -144,7 +144,7 @@ public final class TerrainSystem implements EngineSystem {
     private void initUnbounded(EngineContext context, TerrainSettings terrain, int seed, int cells,
                                StageTimes times) {
         progress.accept("terrain: the unbounded world, seed " + seed);
-        unbounded = context.own(new UnboundedWorld(context, terrain, seed, cells, times, progress));
+        unbounded = context.own(new UnboundedWorld(context, terrain, seed, cells, UNIT_HEIGHTS, times, progress));
         StreamedWorld stream = unbounded.stream();
         context.world().setResource(HeightField.class, stream.heights());
         tree = stream.tree();
@@ -277,5 +277,10 @@ public final class TerrainSystem implements EngineSystem {
      */
     public TerrainData data() {
         return data;
+    }
+
+    /** The unbounded world, once initialised (tests read its textures); null for a tile. */
+    UnboundedWorld unbounded() {
+        return unbounded;
     }
 }

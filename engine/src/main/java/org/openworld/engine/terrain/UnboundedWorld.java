@@ -1,7 +1,10 @@
 package org.openworld.engine.terrain;
 
+import static org.lwjgl.opengl.GL11C.glFinish;
+
 import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
+import java.util.Locale;
 import java.util.function.Consumer;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.camera.CameraPose;
@@ -24,19 +27,24 @@ final class UnboundedWorld implements AutoCloseable {
     private final StreamedWorld stream;
     final TextureArray heightTexture;
     final TextureArray slopeTexture;
-    /** r: the snow's coverage ({@link StreamedSnow}); g: the share of the sky seen, 1 everywhere for now. */
+    /** r: the snow's coverage ({@link StreamedSnow}); g: the share of the sky seen ({@link StreamedSky}). */
     final TextureArray snowTexture;
     private final StreamedSnow snow;
+    private final StreamedSky sky;
     private final FloatBuffer staging;
     private final ByteBuffer snowStaging;
+    private final Consumer<String> progress;
+    /** Whether the first step's sky pass was timed. */
+    private boolean skyTimed;
 
     /**
-     * Makes the bands, the quadtree and the textures (handed to the context's owner as {@code terrain.clipmap...});
-     * the first {@link #follow} fills them around the camera, wherever its direction put it.
+     * Makes the bands, the quadtree, the textures (handed to the context's owner as {@code terrain.clipmap...}) and
+     * the sky's pass; the first {@link #follow} fills them around the camera, wherever its direction put it.
      *
      * @param cells N, the cells per patch side
+     * @param unit  the first of the three texture units the sky's pass binds (the frame binds them again)
      */
-    UnboundedWorld(EngineContext context, TerrainSettings s, int seed, int cells, StageTimes times,
+    UnboundedWorld(EngineContext context, TerrainSettings s, int seed, int cells, int unit, StageTimes times,
                    Consumer<String> progress) {
         stream = new StreamedWorld(s, seed, cells, times, progress);
         int size = stream.clipSize();
@@ -52,6 +60,8 @@ final class UnboundedWorld implements AutoCloseable {
         staging = MemoryUtil.memAllocFloat(2 * block * block);
         snowStaging = MemoryUtil.memAlloc(2 * block * block);
         markUnwritten(size, levels);
+        sky = new StreamedSky(context, stream, snowTexture, unit);
+        this.progress = progress;
     }
 
     /**
@@ -76,12 +86,28 @@ final class UnboundedWorld implements AutoCloseable {
         }
     }
 
-    /** Once per simulation step: {@link StreamedWorld#follow}, uploading what it hands on. */
+    /**
+     * Once per simulation step: {@link StreamedWorld#follow}, uploading what it hands on, then the sky's pass over
+     * the blocks whose surroundings are there. The first step's pass, over every window, is timed.
+     */
     void follow(CameraPose pose, double step) {
         stream.follow(pose, step, this::upload);
+        if (skyTimed) {
+            sky.shadeReady(stream, heightTexture, slopeTexture);
+            return;
+        }
+        long start = System.nanoTime();
+        int blocks = sky.shadeReady(stream, heightTexture, slopeTexture);
+        glFinish(); // the pass runs when the driver gets to it; the start waits for it, and so does its time
+        progress.accept(String.format(Locale.ROOT, "terrain: %-10s %7.0f ms (%d blocks)", "sky view",
+                (System.nanoTime() - start) / 1e6, blocks));
+        skyTimed = true;
     }
 
-    /** Uploads a block given with its border: its heights, its slopes by central differences, and its snow. */
+    /**
+     * Uploads a block given with its border: its heights, its slopes by central differences, and its snow; its
+     * share of the sky seen waits for the sky's pass ({@link StreamedSky#arrived}).
+     */
     private void upload(int level, long ix0, long iz0, int texelX, int texelZ, int block, float[] bordered) {
         int border = stream.border();
         int side = block + 2 * border;
@@ -102,9 +128,10 @@ final class UnboundedWorld implements AutoCloseable {
         slopeTexture.upload(level, texelX, texelZ, block, block, staging.flip());
         snowStaging.clear();
         for (byte b : snow.block(level, ix0, iz0, block, bordered, border)) {
-            snowStaging.put(b).put((byte) 255);
+            snowStaging.put(b).put((byte) 255); // g: the whole sky until the sky's pass writes it
         }
         snowTexture.upload(level, texelX, texelZ, block, block, snowStaging.flip());
+        sky.arrived(level, Math.floorDiv(ix0, block), Math.floorDiv(iz0, block));
     }
 
     /** The world's heights, streaming and level choice. */
@@ -117,5 +144,6 @@ final class UnboundedWorld implements AutoCloseable {
         stream.close();
         MemoryUtil.memFree(staging);
         MemoryUtil.memFree(snowStaging);
+        sky.close();
     }
 }

@@ -84,4 +84,31 @@ class SkyVisibilityTest {
             }
         }
     }
+
+    @Test
+    void theSearchGrowsFromOneSampleToTheReach() {
+        for (double d : new double[] {1, 2, 8, 256}) {
+            double[] r = SkyVisibility.distances(d);
+            assertEquals(d, r[0], 0, "the first distance is one sample");
+            for (int j = 1; j < r.length; j++) {
+                assertEquals(SkyVisibility.STEP_GROWTH, r[j] / r[j - 1], 1e-12);
+            }
+            assertTrue(r[r.length - 1] >= SkyVisibility.REACH_METRES, "the last reaches " + r[r.length - 1]);
+            assertTrue(r.length == 1 || r[r.length - 2] < SkyVisibility.REACH_METRES, "one step beyond at most");
+        }
+        assertEquals(0, SkyVisibility.distances(2 * SkyVisibility.REACH_METRES).length, "beyond the reach: none");
+    }
+
+    @Test
+    void eachDistanceReadsTheCoarsestLevelAQuarterOfItApart() {
+        int count = 8;
+        for (int from = 0; from < count; from++) {
+            for (double r : SkyVisibility.distances(Math.scalb(2.0, from))) {
+                int k = SkyVisibility.levelAt(r, from, count, level -> Math.scalb(2.0, level));
+                assertTrue(k >= from && k < count, "level " + k);
+                assertTrue(k == from || Math.scalb(2.0, k) <= r / 4, r + " m reads level " + k);
+                assertTrue(k == count - 1 || Math.scalb(2.0, k + 1) > r / 4, r + " m could read level " + (k + 1));
+            }
+        }
+    }
 }
