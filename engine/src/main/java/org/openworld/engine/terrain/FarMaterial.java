@@ -10,6 +10,7 @@ import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.OffscreenState;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
@@ -119,29 +120,13 @@ final class FarMaterial {
             return;
         }
         materials.bind(bakes.get(settings.tiling()), settings, materialUnit);
-        int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
-        int[] viewport = new int[4];
-        glGetIntegerv(GL_VIEWPORT, viewport);
-        int[] caps = {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE};
-        boolean[] enabled = new boolean[caps.length];
-        for (int i = 0; i < caps.length; i++) {
-            enabled[i] = glIsEnabled(caps[i]);
-            glDisable(caps[i]);
-        }
-        try (Framebuffer target = Framebuffer.onTextures(gl, colour, slope)) {
+        try (OffscreenState state = OffscreenState.enter();
+             Framebuffer target = Framebuffer.onTextures(gl, colour, slope)) {
             target.bind();
             // linear albedo in, sRGB stored (the precision goes to the dark tones); the half-float slopes as they are
             glEnable(GL_FRAMEBUFFER_SRGB);
             triangle.draw(new DrawStats());
             glDisable(GL_FRAMEBUFFER_SRGB);
-        } finally {
-            glBindFramebuffer(GL_FRAMEBUFFER, previous);
-            glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-            for (int i = 0; i < caps.length; i++) {
-                if (enabled[i]) {
-                    glEnable(caps[i]);
-                }
-            }
         }
         colour.generateMipmaps();
         slope.generateMipmaps();

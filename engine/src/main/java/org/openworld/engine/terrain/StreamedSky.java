@@ -14,6 +14,7 @@ import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.OffscreenState;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.TextureArray;
@@ -161,29 +162,13 @@ final class StreamedSky {
         slopeTexture.bind(unit + 1);
         held.bind(unit + 2);
         program.use();
-        int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
-        int[] viewport = new int[4];
-        glGetIntegerv(GL_VIEWPORT, viewport);
-        int[] caps = {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE};
-        boolean[] enabled = new boolean[caps.length];
-        for (int i = 0; i < caps.length; i++) {
-            enabled[i] = glIsEnabled(caps[i]);
-            glDisable(caps[i]);
-        }
-        glColorMask(false, true, false, false); // the snow in r stays
-        try {
+        try (OffscreenState state = OffscreenState.enter()) {
+            glColorMask(false, true, false, false); // the snow in r stays
             for (Block b : ready) {
                 shade(b);
             }
         } finally {
             glColorMask(true, true, true, true);
-            glBindFramebuffer(GL_FRAMEBUFFER, previous);
-            glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-            for (int i = 0; i < caps.length; i++) {
-                if (enabled[i]) {
-                    glEnable(caps[i]);
-                }
-            }
         }
         return ready.size();
     }
