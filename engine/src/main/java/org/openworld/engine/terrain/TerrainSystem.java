@@ -193,16 +193,25 @@ public final class TerrainSystem implements EngineSystem {
         copyCentreZ = cz;
         int radius = unbounded != null ? unbounded.stream().rootRadius()
                 : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
+        copyOffsets = copies(cx, cz, radius, extent);
+        world.add(entity, new Cullable(tree.bounds(), copyOffsets));
+    }
+
+    /**
+     * The offsets, metres, of the copies (roots) on a square of {@code radius} around copy (cx, cz), each
+     * {@code extent} a side: x, z pairs, row by row from the north-west.
+     */
+    static float[] copies(long cx, long cz, int radius, double extent) {
         int side = 2 * radius + 1;
-        copyOffsets = new float[2 * side * side];
+        float[] offsets = new float[2 * side * side];
         int c = 0;
         for (int dz = -radius; dz <= radius; dz++) {
             for (int dx = -radius; dx <= radius; dx++) {
-                copyOffsets[c++] = (float) ((cx + dx) * extent);
-                copyOffsets[c++] = (float) ((cz + dz) * extent);
+                offsets[c++] = (float) ((cx + dx) * extent);
+                offsets[c++] = (float) ((cz + dz) * extent);
             }
         }
-        world.add(entity, new Cullable(tree.bounds(), copyOffsets));
+        return offsets;
     }
 
     @Override

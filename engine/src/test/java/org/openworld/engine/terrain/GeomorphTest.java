@@ -206,7 +206,7 @@ class GeomorphTest {
             return world.tree();
         }
 
-        /** Follows the camera as TerrainSystem does each step (at 60 a second), and lays the roots around it. */
+        /** Follows the camera as TerrainSystem does each step (at 60 a second), and lays the roots around it as it does. */
         public float[] offsets(Vector3f eye) {
             world.follow(new CameraPose(eye.x, eye.y, eye.z, 90, -8, 45), last.isFinite() ? 1 / 60.0 : 0,
                     (level, ix0, iz0, texelX, texelZ, block, bordered) -> {
@@ -219,18 +219,8 @@ class GeomorphTest {
                     });
             last.set(eye);
             double extent = world.tree().extent();
-            int radius = world.rootRadius();
-            long cx = Math.round(eye.x / extent);
-            long cz = Math.round(eye.z / extent);
-            float[] roots = new float[2 * (2 * radius + 1) * (2 * radius + 1)];
-            int c = 0;
-            for (int dz = -radius; dz <= radius; dz++) {
-                for (int dx = -radius; dx <= radius; dx++) {
-                    roots[c++] = (float) ((cx + dx) * extent);
-                    roots[c++] = (float) ((cz + dz) * extent);
-                }
-            }
-            return roots;
+            return TerrainSystem.copies(Math.round(eye.x / extent), Math.round(eye.z / extent), world.rootRadius(),
+                    extent);
         }
 
         public long origin(float offset) {
