@@ -1,10 +1,12 @@
 package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL30C.GL_BLEND;
+import static org.lwjgl.opengl.GL30C.GL_CLIP_DISTANCE0;
 import static org.lwjgl.opengl.GL30C.GL_CULL_FACE;
 import static org.lwjgl.opengl.GL30C.GL_DEPTH_TEST;
 import static org.lwjgl.opengl.GL30C.GL_DRAW_FRAMEBUFFER_BINDING;
 import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
+import static org.lwjgl.opengl.GL30C.GL_SCISSOR_TEST;
 import static org.lwjgl.opengl.GL30C.GL_VIEWPORT;
 import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
 import static org.lwjgl.opengl.GL30C.glDisable;
@@ -16,15 +18,17 @@ import static org.lwjgl.opengl.GL30C.glViewport;
 
 /**
  * What a pass into a texture, run in the middle of a frame (a bake, a streamed block's pass), changes and must give
- * back: the draw framebuffer, the viewport, and the depth test, blending and face culling, which it turns off for a
- * full-screen triangle. Opened at the pass's start, closed at its end:
+ * back: the draw framebuffer, the viewport, and the depth test, blending, face culling, scissor test and first clip
+ * distance, which it turns off for a full-screen triangle (inside a pass that scissors its target or clips at a
+ * plane, as the water's reflection does, they would cut the triangle short). Opened at the pass's start, closed at
+ * its end:
  * <pre>
  *   try (OffscreenState state = OffscreenState.enter()) { ...bind a target, set a viewport, draw... }
  * </pre>
  */
 public final class OffscreenState implements AutoCloseable {
 
-    private static final int[] CAPS = {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE};
+    private static final int[] CAPS = {GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_SCISSOR_TEST, GL_CLIP_DISTANCE0};
 
     private final int framebuffer;
     private final int[] viewport = new int[4];
@@ -39,7 +43,10 @@ public final class OffscreenState implements AutoCloseable {
         }
     }
 
-    /** Notes the framebuffer, viewport and tests in use, and turns the depth test, blending and culling off. */
+    /**
+     * Notes the framebuffer, viewport and tests in use, and turns the depth test, blending, culling, scissor and clip
+     * distance off.
+     */
     public static OffscreenState enter() {
         return new OffscreenState();
     }
