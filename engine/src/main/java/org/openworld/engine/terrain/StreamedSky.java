@@ -29,8 +29,11 @@ import org.openworld.engine.gl.Uniform;
  *
  * <p><b>When.</b> A block is shaded once the heights its search reads have arrived ({@link StreamedWorld#skyReady}):
  * on each level, those within its reach of the block, as far as that level's window holds them. Until then its g is
- * 1, the whole sky; at start, and after a jump, every block is shaded before the first frame, so a picture does not
- * depend on the order the blocks came in. A block whose slot moves on before its turn is forgotten.
+ * 1, the whole sky. A colour pass about to draw its patches first shades the waiting blocks they read, so no pass
+ * reads a block before its turn and a picture does not depend on the order the blocks came in; the picture's pass
+ * then shades a few more, as many as may arrive in a step, in the order they came. At start, and after a jump,
+ * every block is waiting, and the first frame shades only those its passes draw (107 of 512 at the demo's default
+ * shot); the rest follow over the next frames. A block whose slot moves on before its turn is forgotten.
  *
  * <p><b>What the window holds.</b> At distance r the search reads the level whose samples lie about r / 4 apart.
  * Near the edge of a window that level may not hold the point (a block near the edge of a fine window reaches
@@ -40,8 +43,9 @@ import org.openworld.engine.gl.Uniform;
  * coarsest window spans 131 km, so some level always does within the 3 km reach).
  *
  * <p><b>Cost.</b> Per texel {@code 8 · log(3000 m / d_L) / log 1.4} bilinear reads (23 distances on level 0, 9 on
- * level 7), each four texel fetches and four fetches of the table. On llvmpipe 6 ms a block (the start's 512
- * blocks in 3.0 s on a quiet two-core machine, up to 7.8 s on a busy one); on a GPU well under a millisecond.
+ * level 7), each four texel fetches and four fetches of the table. On llvmpipe 6 ms a block (all 512 of the
+ * windows in 3.0 s on a quiet two-core machine, the 107 of the default shot's first frame in 0.6 s); on a GPU well
+ * under a millisecond.
  *
  * <p><b>Limits.</b> A block's horizon near a fine window's edge is read from a coarser level, and a block's value is
  * fixed once shaded: where the window lay when it was shaded decides what its search could read there, so a place
@@ -128,7 +132,8 @@ final class StreamedSky {
 
     /**
      * Notes that the slot of level {@code l}'s block (bx, bz) now holds it, its heights, slopes and snow just
-     * uploaded (with g = 1, the whole sky, until its turn comes in {@link #shadeReady}).
+     * uploaded (with g = 1, the whole sky, until its turn comes in {@link #shadeSome} or
+     * {@link #shadeUnder}).
      */
     void arrived(int l, long bx, long bz) {
         int slots = size / block;
@@ -139,14 +144,12 @@ final class StreamedSky {
     }
 
     /**
-     * Writes the visibility of each block waiting whose surroundings have arrived ({@link StreamedWorld#skyReady}),
-     * and forgets those whose slot has moved on; returns how many were written. Leaves the framebuffer, viewport,
-     * colour mask, depth test, blending and face culling as they were; the program in use and the bindings of the
-     * three units change.
+     * Writes the visibility of the waiting blocks whose surroundings have arrived ({@link StreamedWorld#skyReady}),
+     * {@code most} at most, in the order they came; forgets those whose slot has moved on. Returns how many it wrote.
      */
-    int shadeReady(StreamedWorld stream, TextureArray heightTexture, TextureArray slopeTexture) {
+    int shadeSome(StreamedWorld stream, TextureArray heightTexture, TextureArray slopeTexture, int most) {
         List<Block> ready = new ArrayList<>();
-        for (Iterator<Block> it = pending.iterator(); it.hasNext(); ) {
+        for (Iterator<Block> it = pending.iterator(); it.hasNext() && ready.size() < most; ) {
             Block b = it.next();
             if (!stream.holds(b.level, b.x, b.z)) {
                 it.remove();
@@ -155,6 +158,48 @@ final class StreamedSky {
                 it.remove();
             }
         }
+        return shade(ready, heightTexture, slopeTexture);
+    }
+
+    /**
+     * Writes the visibility of the waiting blocks, with their surroundings arrived, that these patches read: on the
+     * patch's level, its samples and the next beyond its far sides (the shading filters the level's texels
+     * linearly), so a pass that draws them reads no block still waiting. Returns how many it wrote.
+     */
+    int shadeUnder(PatchList patches, float[] copyOffsets, StreamedWorld stream, TextureArray heightTexture,
+                   TextureArray slopeTexture) {
+        int cells = stream.tree().cells();
+        List<Block> ready = new ArrayList<>();
+        for (int i = 0; i < patches.size() && !pending.isEmpty(); i++) {
+            int l = patches.level(i);
+            long originX = stream.rootOrigin(copyOffsets[2 * patches.copy(i)]) + patches.originSampleX(i);
+            long originZ = stream.rootOrigin(copyOffsets[2 * patches.copy(i) + 1]) + patches.originSampleZ(i);
+            long span = (long) cells * patches.sampleStep(i);
+            long bz1 = Math.floorDiv(((originZ + span) >> l) + 1, block);
+            long bx1 = Math.floorDiv(((originX + span) >> l) + 1, block);
+            for (long bz = Math.floorDiv(originZ >> l, block); bz <= bz1; bz++) {
+                for (long bx = Math.floorDiv(originX >> l, block); bx <= bx1; bx++) {
+                    Block b = new Block(l, bx, bz);
+                    if (pending.contains(b) && stream.skyReady(l, bx, bz)) {
+                        pending.remove(b);
+                        ready.add(b);
+                    }
+                }
+            }
+        }
+        return shade(ready, heightTexture, slopeTexture);
+    }
+
+    /** Blocks uploaded and not yet given their visibility. */
+    int waiting() {
+        return pending.size();
+    }
+
+    /**
+     * The passes of these blocks. Leaves the framebuffer, viewport, colour mask, depth test, blending and face
+     * culling as they were; the program in use and the bindings of the three units change.
+     */
+    private int shade(List<Block> ready, TextureArray heightTexture, TextureArray slopeTexture) {
         if (ready.isEmpty()) {
             return 0;
         }

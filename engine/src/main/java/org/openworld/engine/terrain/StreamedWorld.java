@@ -1,8 +1,8 @@
 package org.openworld.engine.terrain;
 
 import java.util.Locale;
-import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.ThreadPoolExecutor;
 import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.settings.SettingsException;
@@ -44,7 +44,9 @@ final class StreamedWorld implements Residency, AutoCloseable {
     private final BandedHeights heights;
     private final HeightClipmap clipmap;
     private final TerrainQuadtree tree;
-    private final ExecutorService workers;
+    private final ThreadPoolExecutor workers;
+    /** Workers in flight: half the cores, so the frame's own thread (and a software rasteriser's) come first. */
+    private final int flightWorkers = Math.max(1, Runtime.getRuntime().availableProcessors() / 2);
     private final float[] levelRange = new float[2];
     private final int levels;
     private final int rootRadius;
@@ -75,8 +77,8 @@ final class StreamedWorld implements Residency, AutoCloseable {
                 (float) heights.highest());
         rootRadius = (int) Math.ceil(TerrainSystem.COPY_DISTANCE / tree.extent());
         int size = clipSize(s, levels, heights.spacing(levels - 1), tree.extent(), rootRadius);
-        // half the cores, at low priority: the frame's own thread (and a software rasteriser's) come first
-        workers = Executors.newFixedThreadPool(Math.max(1, Runtime.getRuntime().availableProcessors() / 2), r -> {
+        // at low priority: the frame's own thread comes first
+        workers = (ThreadPoolExecutor) Executors.newFixedThreadPool(flightWorkers, r -> {
             Thread t = new Thread(r, "terrain-blocks");
             t.setDaemon(true);
             t.setPriority(Thread.MIN_PRIORITY);
@@ -133,9 +135,15 @@ final class StreamedWorld implements Residency, AutoCloseable {
         clipmap.drain(UPLOADS_PER_FRAME, sink);
     }
 
-    /** Follows the camera, waiting until every level's whole window around it is resident. */
+    /**
+     * Follows the camera, waiting until every level's whole window around it is resident: on every core, as nothing
+     * else runs meanwhile (the waiting thread only uploads, a quarter of the time).
+     */
     private void fill(CameraPose pose, HeightClipmap.BlockSink sink) {
         long start = System.nanoTime();
+        int cores = Runtime.getRuntime().availableProcessors();
+        workers.setMaximumPoolSize(cores);
+        workers.setCorePoolSize(cores);
         clipmap.follow(pose.x(), pose.z(), 0, 0);
         last = pose;
         while (!clipmap.complete()) {
@@ -148,6 +156,8 @@ final class StreamedWorld implements Residency, AutoCloseable {
                 }
             }
         }
+        workers.setCorePoolSize(flightWorkers); // the extra threads end as they next fall idle
+        workers.setMaximumPoolSize(flightWorkers);
         progress.accept(String.format(Locale.ROOT, "terrain: %-10s %7.0f ms", "streaming",
                 (System.nanoTime() - start) / 1e6));
     }

@@ -246,6 +246,10 @@ public final class TerrainSystem implements EngineSystem {
             patches.withoutMorph();
         }
         double selectMs = (System.nanoTime() - t0) / 1e6;
+        if (unbounded != null && pass != Pass.SHADOW) {
+            // the share of the sky seen where the shading reads it, and a few blocks more with the picture
+            unbounded.shadeFor(patches, copyOffsets, pass == Pass.MAIN ? StreamedWorld.UPLOADS_PER_FRAME : 0);
+        }
         Counters counters = world.resource(Counters.class);
         String prefix = "terrain." + pass.label() + ".";
         counters.add(prefix + "patches", patches.size());

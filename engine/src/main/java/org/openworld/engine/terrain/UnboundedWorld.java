@@ -34,7 +34,7 @@ final class UnboundedWorld implements AutoCloseable {
     private final FloatBuffer staging;
     private final ByteBuffer snowStaging;
     private final Consumer<String> progress;
-    /** Whether the first step's sky pass was timed. */
+    /** Whether the first pass's sky pass was timed. */
     private boolean skyTimed;
 
     /**
@@ -86,22 +86,34 @@ final class UnboundedWorld implements AutoCloseable {
         }
     }
 
-    /**
-     * Once per simulation step: {@link StreamedWorld#follow}, uploading what it hands on, then the sky's pass over
-     * the blocks whose surroundings are there. The first step's pass, over every window, is timed.
-     */
+    /** Once per simulation step: {@link StreamedWorld#follow}, uploading what it hands on. */
     void follow(CameraPose pose, double step) {
         stream.follow(pose, step, this::upload);
-        if (skyTimed) {
-            sky.shadeReady(stream, heightTexture, slopeTexture);
-            return;
-        }
+    }
+
+    /**
+     * Before a pass shades these patches: the sky's pass over the waiting blocks they read, then over up to
+     * {@code more} others whose surroundings are there, in the order they came (the picture's pass takes as many
+     * as may arrive in a step, so the sky keeps pace with the streaming and a block is seldom left for the pass
+     * that first draws it). At start, and after a jump, every block is waiting, and the first frame shades only
+     * those its passes draw: on a software rasteriser the whole windows' pass was most of the start. The first
+     * call after the start's streaming is timed.
+     */
+    void shadeFor(PatchList patches, float[] copyOffsets, int more) {
         long start = System.nanoTime();
-        int blocks = sky.shadeReady(stream, heightTexture, slopeTexture);
-        glFinish(); // the pass runs when the driver gets to it; the start waits for it, and so does its time
-        progress.accept(String.format(Locale.ROOT, "terrain: %-10s %7.0f ms (%d blocks)", "sky view",
-                (System.nanoTime() - start) / 1e6, blocks));
-        skyTimed = true;
+        int blocks = sky.shadeUnder(patches, copyOffsets, stream, heightTexture, slopeTexture);
+        if (!skyTimed && blocks + sky.waiting() > 0) { // a window's first frame may come before its first step
+            glFinish(); // the pass runs when the driver gets to it; the first frame waits for it, and so does its time
+            progress.accept(String.format(Locale.ROOT, "terrain: %-10s %7.0f ms (%d blocks the first pass draws, "
+                    + "%d to come)", "sky view", (System.nanoTime() - start) / 1e6, blocks, sky.waiting()));
+            skyTimed = true;
+        }
+        sky.shadeSome(stream, heightTexture, slopeTexture, more);
+    }
+
+    /** Blocks whose share of the sky seen has not been written yet. */
+    int skyWaiting() {
+        return sky.waiting();
     }
 
     /**

@@ -1,12 +1,15 @@
 package org.openworld.engine.terrain;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengl.GL30C.GL_RG;
 import static org.lwjgl.opengl.GL30C.GL_TEXTURE_2D_ARRAY;
 import static org.lwjgl.opengl.GL30C.GL_UNSIGNED_BYTE;
 import static org.lwjgl.opengl.GL30C.glGetTexImage;
 
+import java.io.IOException;
 import java.nio.ByteBuffer;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -21,10 +24,14 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.water.WaterSystem;
 
 /**
  * The unbounded world's share of the sky seen ({@link StreamedSky}), read back from the g channel of the snow map's
- * layers once the start has streamed every window, against {@link SkyVisibility}'s formula evaluated on the CPU from
+ * layers once every block has had its pass, against {@link SkyVisibility}'s formula evaluated on the CPU from
  * {@link BandedHeights} itself: the same azimuths, distances and level choice, with the heights computed where the
  * pass reads them from the clipmap's textures.
  */
@@ -66,8 +73,12 @@ class StreamedSkyTest {
                     -30, 60));
             engine.update();
             engine.render();
-
             UnboundedWorld unbounded = terrain.unbounded();
+            for (int frame = 0; frame < 200 && unbounded.skyWaiting() > 0; frame++) { // eight blocks a frame
+                engine.render();
+            }
+            assertEquals(0, unbounded.skyWaiting(), "blocks still waiting for their pass");
+
             int size = unbounded.stream().clipSize();
             int levels = unbounded.stream().levels();
             ByteBuffer texels = MemoryUtil.memAlloc(2 * size * size * levels);
@@ -115,6 +126,56 @@ class StreamedSkyTest {
             } finally {
                 MemoryUtil.memFree(texels);
             }
+        }
+    }
+
+    /**
+     * The first frame shades only the blocks its passes draw, and draws none before its pass: the frame is the same,
+     * pixel for pixel, when drawn again, unmoved, once every block has had its pass. The view takes in a lake, so
+     * that the water's reflection draws ground too (OffscreenStateTest checks that a block's pass inside it is not
+     * cut short by its scissor and clip plane). With the passes not shading what they draw, the ground would show
+     * the whole sky (V = 1) until the blocks' turn came, a few a step.
+     */
+    @Test
+    void theFirstFrameShadesWhatItDrawsAndNoMore() throws IOException {
+        TerrainSystem terrain = new TerrainSystem();
+        try (Engine engine = GlTestSupport.engine(GL.context(), 160, 90, List.of("terrain.world=unbounded"),
+                new CullingSystem(), terrain, new WaterSystem())) {
+            BandedHeights world = (BandedHeights) engine.world().resource(HeightField.class);
+            CameraPose pose = new CameraPose(700, world.heightAt(700, -300) + 300, -300, 0, -30, 60);
+            // a lake 40 m deep where the view meets the ground, 520 m ahead
+            engine.world().resource(Settings.class).set("water.level",
+                    Double.toString(world.heightAt(700, -300 - 520) + 40));
+            engine.world().resource(Camera.class).setPose(pose);
+            engine.update();
+            engine.render();
+            Image first = engine.readImage();
+            double[] mirrored = new double[1];
+            engine.collectFrames(true, f -> mirrored[0] = f.counters().getOrDefault("terrain.reflection.patches", 0.0));
+            assertTrue(mirrored[0] > 0, "the reflection draws ground");
+            UnboundedWorld unbounded = terrain.unbounded();
+            int waiting = unbounded.skyWaiting();
+            int slots = unbounded.stream().clipSize() / StreamedWorld.BLOCK;
+            int blocks = unbounded.stream().levels() * slots * slots;
+            for (int frame = 0; frame < 200 && unbounded.skyWaiting() > 0; frame++) {
+                engine.render(); // the rest of the blocks, eight a frame, the simulation's time standing still
+            }
+            assertEquals(0, unbounded.skyWaiting(), "blocks still waiting for their pass");
+            Image again = engine.readImage();
+            first.writePng(Path.of("target/test-images/unbounded-sky-first.png"));
+            int differ = 0;
+            for (int y = 0; y < 90; y++) {
+                for (int x = 0; x < 160; x++) {
+                    for (int c = 0; c < 3; c++) {
+                        if (first.channel(x, y, c) != again.channel(x, y, c)) {
+                            differ++;
+                            break;
+                        }
+                    }
+                }
+            }
+            assertEquals(0, differ, "pixels that differ once every block has had its pass");
+            assertTrue(waiting > blocks / 2, waiting + " of " + blocks + " blocks left after the first frame");
         }
     }
 
