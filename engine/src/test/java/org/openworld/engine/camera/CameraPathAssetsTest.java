@@ -83,18 +83,33 @@ class CameraPathAssetsTest {
         assertEquals(360, turned, 1e-6);
     }
 
+    /** Ground for the crossings: they must keep 400 m above whatever lies below. */
+    private static final HeightField HILLS = (x, z) -> 300 * Math.sin(x / 700) * Math.cos(z / 900);
+
     @Test
     void crossingFliesEighteenKilometresDueEastAtThreeHundredMetresASecondFourHundredAboveTheGround()
             throws CameraPathFormatException {
-        CameraPath crossing = CameraPathParser.parseResource("assets/paths/crossing.path");
-        assertEquals(60, crossing.duration(), 1e-9);
-        HeightField hills = (x, z) -> 300 * Math.sin(x / 700) * Math.cos(z / 900);
-        for (int step = 0; step <= 600; step++) {
+        fliesDueEast(CameraPathParser.parseResource("assets/paths/crossing.path"), 60);
+    }
+
+    /** The memory check's path: {@code crossing.path} flown on, to 36 km at 120 s. */
+    @Test
+    void crossingTwiceIsTheCrossingFlownOnToThirtySixKilometres() throws CameraPathFormatException {
+        fliesDueEast(CameraPathParser.parseResource("assets/paths/crossing-twice.path"), 120);
+    }
+
+    /**
+     * The path lasts {@code seconds} and flies from x = −9 km due east at 300 m/s, 400 m above the ground, looking
+     * ahead and 8° down, all the way.
+     */
+    private static void fliesDueEast(CameraPath path, double seconds) {
+        assertEquals(seconds, path.duration(), 1e-9);
+        for (int step = 0; step <= Math.round(seconds * 10); step++) {
             double t = step * 0.1;
-            CameraPose pose = crossing.sample(t, hills);
+            CameraPose pose = path.sample(t, HILLS);
             assertEquals(-9000 + 300 * t, pose.x(), 1e-6, "a straight line at 300 m/s, t=" + t);
             assertEquals(0, pose.z(), 1e-9);
-            assertEquals(400, pose.y() - hills.heightAt(pose.x(), pose.z()), 1e-6, "400 m above the ground");
+            assertEquals(400, pose.y() - HILLS.heightAt(pose.x(), pose.z()), 1e-6, "400 m above the ground");
             assertEquals(90, pose.yaw(), 1e-9);
             assertEquals(-8, pose.pitch(), 1e-9);
         }
