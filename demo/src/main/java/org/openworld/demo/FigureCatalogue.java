@@ -248,11 +248,14 @@ final class FigureCatalogue {
         return new Figure(id, 7, caption, note, Tool.STRIP, arguments);
     }
 
-    /** A shot at the catalogue's seed: {@code --seed --time --camera=} and one {@code --set} per setting. */
+    /**
+     * A shot at the catalogue's seed on the tile, the paper's world: {@code --seed --time --camera=}, {@code --set
+     * terrain.world=tile} (the default is the unbounded world), then one {@code --set} per setting.
+     */
     private static Figure shot(String id, int number, String caption, String note, String time, String pose,
             String... settings) {
         List<String> arguments = new ArrayList<>(List.of("--seed", Integer.toString(SEED), "--time", time,
-                "--camera=" + pose));
+                "--camera=" + pose, "--set", "terrain.world=tile"));
         for (String setting : settings) {
             arguments.add("--set");
             arguments.add(setting);

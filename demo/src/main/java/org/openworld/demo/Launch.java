@@ -11,7 +11,9 @@ import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsException;
 import org.openworld.engine.settings.SettingsFile;
+import org.openworld.engine.terrain.TerrainSettings;
 
 /**
  * One place that turns the common options into a running engine: settings with the user's {@code --set} values,
@@ -19,6 +21,8 @@ import org.openworld.engine.settings.SettingsFile;
  * with the demo's systems, and the time of day. Each command then sets the camera's pose.
  */
 final class Launch implements AutoCloseable {
+
+    private static final String WORLD_KEY = "terrain.world";
 
     final GlContext gl;
     /** The running engine; the window's "Rebuild world" replaces it. */
@@ -36,7 +40,9 @@ final class Launch implements AutoCloseable {
 
     /**
      * Settings of the demo's systems: the defaults, then the {@code --preset}, then the {@code --config} file, then
-     * {@code --seed}, then every {@code --set} (all checked before any window opens).
+     * {@code --seed}, then every {@code --set} (all checked before any window opens). An imported map is always the
+     * tile ({@link TerrainSettings}); a {@code --set terrain.world=unbounded} beside one is refused, since only a
+     * {@code --set} is surely the user's word (a settings file holds every key, the default world too).
      */
     static Settings settings(RenderOptions options) {
         Settings settings = Engine.settingsFor(DemoScene.systems());
@@ -49,7 +55,20 @@ final class Launch implements AutoCloseable {
         if (options.seed != null) {
             settings.set("engine.seed", Integer.toString(options.seed));
         }
-        options.set.forEach(settings::apply);
+        String namedWorld = null;
+        for (String assignment : options.set) {
+            settings.apply(assignment); // checks key=value, so the split below is safe
+            int eq = assignment.indexOf('=');
+            if (assignment.substring(0, eq).trim().equals(WORLD_KEY)) {
+                namedWorld = assignment.substring(eq + 1).trim();
+            }
+        }
+        TerrainSettings terrain = settings.get(TerrainSettings.class);
+        if (terrain.imports() && "unbounded".equalsIgnoreCase(namedWorld)) {
+            throw new SettingsException(WORLD_KEY + "=unbounded cannot go with terrain.import-file="
+                    + terrain.importFile() + ": an imported map is one tile; leave out " + WORLD_KEY
+                    + " (an import always draws the tile)");
+        }
         return settings;
     }
 

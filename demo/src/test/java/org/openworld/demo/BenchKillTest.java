@@ -210,8 +210,8 @@ class BenchKillTest {
                     "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", // a quicker start; the timings are not tested
                     "-cp", System.getProperty("java.class.path"), Main.class.getName(), "bench",
                     "--path", "../assets/paths/orbit.path", "--size", "64x36", "--frames", Integer.toString(FRAMES),
-                    "--warmup", "0", "--set", "terrain.size=256", "--set", "system.water=off",
-                    "--set", "system.shadow=off", "--out", out.toString()));
+                    "--warmup", "0", "--set", "terrain.world=tile", "--set", "terrain.size=256",
+                    "--set", "system.water=off", "--set", "system.shadow=off", "--out", out.toString()));
             command.addAll(List.of(options));
             Process process = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile())
                     .start();

@@ -16,6 +16,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.bench.SummaryJson;
 import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.settings.SettingsException;
 import org.openworld.engine.terrain.TerrainSettings;
 
 /**
@@ -51,7 +52,8 @@ class CommandLineTest {
     void shotWithUiDrawsThePanelOverThePicture() throws Exception {
         Path plain = dir.resolve("plain.png");
         Path ui = dir.resolve("ui.png");
-        String[] common = {"--size", "320x180", "--set", "terrain.size=256", "--time", "12:00"};
+        String[] common = {"--size", "320x180", "--set", "terrain.world=tile", "--set", "terrain.size=256",
+                "--time", "12:00"};
         assertEquals(0, Main.execute(concat(new String[] {"shot", "--out", plain.toString()}, common)));
         assertEquals(0, Main.execute(concat(new String[] {"shot", "--ui", "--out", ui.toString()}, common)));
         Image a = Image.read(plain);
@@ -219,7 +221,37 @@ class CommandLineTest {
                 && console.stderr().contains("20 MiB or more"), console.stderr());
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("shot", "--out", dir.resolve("y.png").toString(),
                 "--size", "96x54", "--set", "terrain.world=unbounded", "--set", "terrain.import-file=map.png"));
-        assertTrue(console.stderr().contains("needs terrain.world=TILE"), console.stderr());
+        assertTrue(console.stderr().contains("terrain.world=unbounded cannot go with terrain.import-file=map.png"),
+                console.stderr());
+    }
+
+    /**
+     * The unbounded world is the default, and an imported map is always the tile: given alone, beside a settings
+     * file that holds the default world, or after the world was named and named again; refused only when the
+     * command line names the unbounded world beside it, in either order.
+     */
+    @Test
+    void anImportedMapIsAlwaysTheTile() throws Exception {
+        assertEquals(TerrainSettings.World.UNBOUNDED, worldOf(null));
+        assertEquals(TerrainSettings.World.TILE, worldOf(null, "terrain.import-file=map.png"));
+        Path saved = dir.resolve("saved.settings");
+        Files.writeString(saved, "terrain.world=unbounded\n");
+        assertEquals(TerrainSettings.World.TILE, worldOf(saved, "terrain.import-file=map.png"));
+        assertEquals(TerrainSettings.World.TILE,
+                worldOf(null, "terrain.world=unbounded", "terrain.import-file=map.png", "terrain.world=tile"));
+        for (List<String> both : List.of(List.of("terrain.world=unbounded", "terrain.import-file=map.png"),
+                List.of("terrain.import-file=map.png", "terrain.world=UNBOUNDED"))) {
+            var e = assertThrows(SettingsException.class, () -> worldOf(null, both.toArray(String[]::new)));
+            assertTrue(e.getMessage().contains("terrain.world=unbounded")
+                    && e.getMessage().contains("terrain.import-file=map.png"), e.getMessage());
+        }
+    }
+
+    private static TerrainSettings.World worldOf(Path config, String... set) {
+        var options = new RenderOptions();
+        options.config = config;
+        options.set.addAll(List.of(set));
+        return Launch.settings(options).get(TerrainSettings.class).world();
     }
 
     @Test

@@ -7,8 +7,14 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
 
-/** Builds engines for headless GL tests: small images, classpath shaders, default settings. */
+/**
+ * Builds engines for headless GL tests: small images, classpath shaders, default settings but for the world, which is
+ * the tile ({@code terrain.world=tile}) unless a test names one: most tests draw a small {@code terrain.size} map and
+ * look at what one seed makes there, which the unbounded world (the default) does not hold.
+ */
 public final class GlTestSupport {
+
+    private static final String WORLD = "terrain.world";
 
     private GlTestSupport() {
     }
@@ -17,10 +23,16 @@ public final class GlTestSupport {
         return engine(gl, width, height, List.of(), systems);
     }
 
-    /** An engine whose settings have these {@code key=value} assignments applied before the systems start. */
+    /**
+     * An engine whose settings have these {@code key=value} assignments applied before the systems start, on the
+     * tile unless they name {@code terrain.world}.
+     */
     public static Engine engine(GlContext gl, int width, int height, List<String> settings, EngineSystem... systems) {
         List<EngineSystem> list = List.of(systems);
         Settings all = Engine.settingsFor(list);
+        if (all.keys().contains(WORLD)) {
+            all.set(WORLD, "tile"); // before the test's own, so a test that names the world gets it
+        }
         settings.forEach(all::apply);
         return new Engine(gl, ShaderSources.classpath(), all, list, width, height);
     }

@@ -23,8 +23,11 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       from 0
  * @param snowFull       normalised height at which snow is certain; p(h) = clamp((h − base)/(full − base), 0, 1)
  * @param snowMorphology radius of the opening and the closing that clean up the random snow map, in snow map pixels
- * @param world          {@link World#TILE}: one map, repeated if generated (the paper's); {@link World#UNBOUNDED}: the
- *                       heights made per level ({@link BandedHeights}) and streamed around the camera, never repeating
+ * @param world          {@link World#UNBOUNDED} (the default): the heights made per level ({@link BandedHeights}) and
+ *                       streamed around the camera, never repeating; {@link World#TILE}: one map, repeated if generated
+ *                       (the paper's). An imported map is always the tile: with {@code importFile} set the record
+ *                       holds {@code TILE} whatever it was given, so a saved or default {@code unbounded} never
+ *                       refuses an import (the demo's command line refuses the two named together)
  * @param memoryBudget   the unbounded world's GPU memory for streamed heights, slopes and snow, MiB: it sets how many
  *                       samples each level keeps around the camera ({@link HeightClipmap})
  */
@@ -53,8 +56,8 @@ public record TerrainSettings(
         double snowFull,
         @Setting(doc = "radius of the snow map's opening and closing", unit = "px", min = 0, max = 8, atStart = true)
         int snowMorphology,
-        @Setting(doc = "TILE: one map, repeated if generated; UNBOUNDED: made per level around the camera, never "
-                + "repeating", atStart = true) World world,
+        @Setting(doc = "UNBOUNDED: made per level around the camera, never repeating; TILE: one map, repeated if "
+                + "generated; an imported map is always the tile", atStart = true) World world,
         @Setting(doc = "unbounded world: GPU memory for the streamed heights, slopes and snow", unit = "MiB", min = 2,
                 max = 4096, atStart = true) int memoryBudget) {
 
@@ -78,7 +81,7 @@ public record TerrainSettings(
             0.35,   // snow may start at a third of the relief (seed 1's median ground is at 0.35)...
             0.60,   // ...and is certain on the top 40 %: snow on the upper slopes, as in the paper's figure 1b
             1,      // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
-            World.TILE,
+            World.UNBOUNDED, // the open world the engine is named for; the paper's figures ask for the tile
             20);    // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
@@ -86,7 +89,8 @@ public record TerrainSettings(
 
     /**
      * Checks what single ranges cannot: the size is a power of two, the cut-offs are ordered and overlap the
-     * wavelengths the grid can hold, and the snow heights are ordered.
+     * wavelengths the grid can hold, and the snow heights are ordered. An imported map makes the world the tile:
+     * the one place that rule lives, so every reader of {@link #world()} sees the world that is drawn.
      */
     public TerrainSettings {
         if (Integer.bitCount(size) != 1) {
@@ -112,9 +116,9 @@ public record TerrainSettings(
         if (importFile == null) {
             throw new IllegalArgumentException("the import file must be a path or empty, not null");
         }
-        if (world == World.UNBOUNDED && !importFile.isBlank()) {
-            throw new IllegalArgumentException("an imported map (" + importFile + ") is one tile: it needs "
-                    + "terrain.world=TILE, not UNBOUNDED");
+        if (!importFile.isBlank()) {
+            // One map of the file's size, made whole at start: it cannot be streamed per level.
+            world = World.TILE;
         }
     }
 

@@ -22,6 +22,21 @@ class TerrainSettingsTest {
     }
 
     @Test
+    void theWorldIsUnboundedUnlessAMapIsImported() {
+        assertEquals(TerrainSettings.World.UNBOUNDED, TestTerrain.settings().world());
+        assertEquals(TerrainSettings.World.TILE, TestTerrain.settings("terrain.world=tile").world());
+        // an import is one tile whichever order the keys come in, and stays one if the world is named after it
+        assertEquals(TerrainSettings.World.TILE, TestTerrain.settings("terrain.import-file=maps/alps.png").world());
+        assertEquals(TerrainSettings.World.TILE,
+                TestTerrain.settings("terrain.world=unbounded", "terrain.import-file=maps/alps.png").world());
+        assertEquals(TerrainSettings.World.TILE,
+                TestTerrain.settings("terrain.import-file=maps/alps.png", "terrain.world=unbounded").world());
+        // without the import, the unbounded world can be named again
+        assertEquals(TerrainSettings.World.UNBOUNDED, TestTerrain.settings("terrain.import-file=maps/alps.png",
+                "terrain.import-file=", "terrain.world=unbounded").world());
+    }
+
+    @Test
     void sizeMustBeAPowerOfTwo() {
         var e = assertThrows(SettingsException.class, () -> TestTerrain.settings("terrain.size=1000"));
         assertTrue(e.getMessage().contains("terrain.size") && e.getMessage().contains("power of two"), e.getMessage());
