@@ -34,7 +34,8 @@ import org.openworld.engine.core.HeightField;
  * <p>10 000 texts and 2 000 files (the file adds only its reading), 1.5 s and 0.8 s on the project's 2-core machine
  * (measured with {@link SettingsFuzzTest}: the three formats, 32 000 inputs, in 10 s; 24 s beside other builds). A
  * failure prints jqwik's seed, which replays the run ({@code @Property(seed = "...")}), and the input as a Java
- * literal. Found so far: numbers of 1e308 parsed, and the path sampled as NaN (now refused beyond ±1e9).
+ * literal. Found so far: numbers of 1e308 parsed, and the path sampled as NaN (now refused beyond ±1e9); keys
+ * 1e-320 s apart, whose pitch slope overflowed to NaN (now refused under 1 ms apart).
  */
 class CameraPathFuzzTest {
 

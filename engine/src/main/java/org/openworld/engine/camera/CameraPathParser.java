@@ -33,6 +33,13 @@ public final class CameraPathParser {
      */
     static final double MAX_MAGNITUDE = 1e9;
 
+    /**
+     * Shortest time between keys, seconds: the format's precision ({@link CameraPathRecorder#MIN_INTERVAL}), less a
+     * micro-second for times printed to 1 ms whose difference rounds a hair below it. Closer keys are a mistake, and
+     * 10⁻³²⁰ s apart a turn's slope overflows and samples as NaN.
+     */
+    static final double MIN_KEY_GAP = CameraPathRecorder.MIN_INTERVAL - 1e-6;
+
     private static final String DIRECTIVE = "heights";
 
     private CameraPathParser() {
@@ -124,8 +131,8 @@ public final class CameraPathParser {
     private static Keyframe keyframe(Line line, Keyframe previous, String previousTime)
             throws CameraPathFormatException {
         double time = line.number(0, "time");
-        if (previous != null && time <= previous.time()) {
-            throw line.error(line.token(0), "a time later than the previous key's " + previousTime);
+        if (previous != null && !(time - previous.time() >= MIN_KEY_GAP)) {
+            throw line.error(line.token(0), "a time at least 0.001 s after the previous key's " + previousTime);
         }
         double x = line.number(1, "x");
         double y = line.number(2, "y");

@@ -19,7 +19,7 @@ public final class CameraPathWriter {
 
     private static final String HEADER = """
             # OpenWorld camera path (docs/camera-paths.md). One keyframe a line: time x y z yaw pitch fov
-            #   time   seconds, strictly increasing
+            #   time   seconds, increasing, keys at least 1 ms apart
             #   x y z  metres: x east, y up, z south (north is -z);
             #          y is above sea level (heights sea) or eye height above the ground (heights ground)
             #   yaw    degrees clockwise from north: 0 north, 90 east, 180 south, 270 west

@@ -65,8 +65,27 @@ class CameraPathParserTest {
     @Test
     void reportsATimeThatDoesNotIncrease() {
         assertError("0 0 0 0 0 0\n2.5 0 0 0 0 0\n  2 0 0 0 0 0\n",
-                "3:3: expected a time later than the previous key's 2.5, found '2'");
-        assertError("0 0 0 0 0 0\n0 1 0 0 0 0\n", "2:1: expected a time later than the previous key's 0, found '0'");
+                "3:3: expected a time at least 0.001 s after the previous key's 2.5, found '2'");
+        assertError("0 0 0 0 0 0\n0 1 0 0 0 0\n",
+                "2:1: expected a time at least 0.001 s after the previous key's 0, found '0'");
+    }
+
+    /** Keys closer than the format's 1 ms: 1e-320 s apart, a pitch turn's slope overflowed and sampled as NaN. */
+    @Test
+    void reportsKeysCloserThanAMillisecond() {
+        assertError("0 0 0 0 0 -89\n1e-320 0 0 0 0 89\n",
+                "2:1: expected a time at least 0.001 s after the previous key's 0, found '1e-320'");
+        assertError("5 0 0 0 0 0\n5.0009 0 0 0 0 0\n",
+                "2:1: expected a time at least 0.001 s after the previous key's 5, found '5.0009'");
+    }
+
+    /** Keys 1 ms apart as the writer prints them read back, though their difference rounds a hair below 0.001. */
+    @Test
+    void readsKeysOneMillisecondApart() throws CameraPathFormatException {
+        CameraPath path = CameraPathParser.parse("x.path", "100.001 0 0 0 0 -89\n100.002 0 0 0 0 89\n");
+        assertTrue(100.002 - 100.001 < 0.001);
+        CameraPose middle = path.sample(100.0015, (x, z) -> 0);
+        assertEquals(0, middle.pitch(), 1e-6);
     }
 
     @Test
