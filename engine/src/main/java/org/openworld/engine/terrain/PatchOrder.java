@@ -21,13 +21,18 @@ final class PatchOrder {
     private float[] distance = new float[0];
     private int size;
 
+    private final float[] range = new float[2];
+
     /**
      * Orders the patches of {@code list} by distance from {@code eye}.
      *
-     * @param bounds  the quadtree's boxes, indexed by {@link PatchList#node(int)}
-     * @param offsets x, z pairs, metres, indexed by {@link PatchList#copy(int)}
+     * @param bounds    the quadtree's boxes, indexed by {@link PatchList#node(int)}
+     * @param residency the heights a node spans where known more tightly than its box (the unbounded world's boxes
+     *                  span the whole world's heights: a camera below its highest peak would find every patch
+     *                  around it near)
+     * @param offsets   x, z pairs, metres, indexed by {@link PatchList#copy(int)}
      */
-    void sort(PatchList list, BoundsTree bounds, float[] offsets, Vector3fc eye) {
+    void sort(PatchList list, BoundsTree bounds, Residency residency, float[] offsets, Vector3fc eye) {
         size = list.size();
         if (keys.length < size) {
             keys = new long[size * 2];
@@ -36,7 +41,11 @@ final class PatchOrder {
         }
         for (int i = 0; i < size; i++) {
             int copy = list.copy(i);
-            distance[i] = (float) bounds.distance(list.node(i), offsets[2 * copy], offsets[2 * copy + 1], eye);
+            int node = list.node(i);
+            float x = offsets[2 * copy];
+            float z = offsets[2 * copy + 1];
+            distance[i] = (float) (residency.heightRange(node, x, z, range)
+                    ? bounds.distance(node, x, z, range[0], range[1], eye) : bounds.distance(node, x, z, eye));
             // a non-negative float's bits order as the float does, so the index rides in the low half
             keys[i] = (long) Float.floatToIntBits(distance[i]) << 32 | i;
         }

@@ -37,7 +37,7 @@ class PatchOrderTest {
             Vector3f eye = new Vector3f((float) rng.nextDouble(-3000, 3000), (float) rng.nextDouble(-100, 900),
                     (float) rng.nextDouble(-3000, 3000));
 
-            order.sort(list, bounds, offsets, eye);
+            order.sort(list, bounds, Residency.ALL, offsets, eye);
 
             assertEquals(list.size(), order.size());
             Set<Integer> seen = new HashSet<>();
@@ -57,6 +57,43 @@ class PatchOrderTest {
                 assertEquals(k < nearer, order.distance(order.order()[k]) < metres, "rank " + k + " of " + metres + " m");
             }
         }
+    }
+
+    /**
+     * Where the streamed world knows a node's heights more tightly than its box, the distance is to the box with those
+     * heights: boxes spanning the world's heights put a camera 400 m above a valley beside every patch.
+     */
+    @Test
+    void theHeightsAResidencyKnowsReplaceTheBoxes() {
+        float[] boxes = {0, -500, 0, 100, 3000, 100, 200, -500, 0, 300, 3000, 100};
+        BoundsTree bounds = new BoundsTree(boxes, new int[2], new int[2]);
+        Residency knowsNodeOne = new Residency() {
+            @Override
+            public boolean drawable(int node, float offsetX, float offsetZ) {
+                return true;
+            }
+
+            @Override
+            public boolean heightRange(int node, float offsetX, float offsetZ, float[] out) {
+                if (node != 1) {
+                    return false;
+                }
+                out[0] = 100;
+                out[1] = 200;
+                return true;
+            }
+        };
+        PatchList list = new PatchList();
+        list.add(0, 0, 0, 0, 1, 0, 0);
+        list.add(1, 0, 0, 0, 1, 0, 0);
+        PatchOrder order = new PatchOrder();
+        Vector3f eye = new Vector3f(150, 600, 50); // above the gap between the two, below the boxes' tops
+
+        order.sort(list, bounds, knowsNodeOne, new float[] {0, 0}, eye);
+
+        assertEquals(50, order.distance(0), 1e-3, "node 0: its box, beside the eye");
+        assertEquals(Math.hypot(50, 400), order.distance(1), 1e-3, "node 1: 400 m above its known heights");
+        assertEquals(0, order.order()[0]);
     }
 
     /** Brute force: the distance from the eye to the closest point of the box moved by the copy's offset. */
