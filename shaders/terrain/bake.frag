@@ -65,7 +65,7 @@ void main() {
     s.wsNormal = normalize(vec3(-slope.x, 1.0, -slope.y));
     s.height01 = clamp((s.wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
     s.snow = texture(snowMap, uv).r;
-    MatTexel m = terrainMaterial(s, MAT_COARSE_FAR, macroTint(wsXZ));
+    MatTexel m = terrainMaterial(s, matCoarseWeight(MAT_COARSE_FAR), macroTint(wsXZ));
     farColour = vec4(m.albedo, m.gloss);
     // the gradient too, so the far program reads the ground's slope from this texel instead of a third texture
     farSlope = vec4(m.slope * 0.5 + 0.5, slope);

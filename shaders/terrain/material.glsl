@@ -3,18 +3,20 @@
 // Engine side: org.openworld.engine.terrain.TerrainMaterials (binds everything below), TerrainTextures (synthesis).
 //
 //   vec3 shadeTerrain(TerrainSurface s)       linear RGB, lit, before fog: steps 1-5 below, as the near terrain does
-//   MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint)
+//   MatTexel terrainMaterial(TerrainSurface s, float coarseWeight, vec2 macroTint)
 //                                             steps 1-3: albedo, detail slope and gloss, unlit
 //   vec3 lightTerrain(TerrainSurface s, MatTexel m)   steps 4-5: the detail normal and the light
 // The far variant of the terrain (terrain.frag with TERRAIN_FAR) reads steps 1-3 baked once into world textures
-// (terrain/bake.frag, engine: FarMaterial) and lights them with lightTerrain.
+// (terrain/bake.frag, engine: FarMaterial) and lights them with lightTerrain; on the unbounded world, which has no
+// bake, it runs steps 1-3 at the coarse scale alone (MAT_COARSE_ONLY: half the lookups).
 //
 // Steps of shadeTerrain:
 //   1. texture coordinates: a fine tile (detailScale) and a coarse one 6.3 times larger and turned by 34 degrees,
 //      mixed by distance, with a macro noise over tens of metres on top: no tiling grid from afar (paper section 6);
 //      with MAT_STOCHASTIC (materials.tiling=stochastic) each scale is tiled stochastically, with MAT_WANG
 //      (materials.tiling=quilted) each is laid with quilted Wang tiles, so neither repeats;
-//      with MAT_TRIPLANAR (materials.cliffs=triplanar, near terrain only) the rock is also projected along X and Z
+//      with MAT_TRIPLANAR (materials.cliffs=triplanar, near terrain only) the rock is also projected along X and Z;
+//      with MAT_COARSE_ONLY (the unbounded world's far terrain) only the coarse tile is read
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
 //      with noise-bent edges; snow slides off steep slopes
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
@@ -273,11 +275,15 @@ MatCoords matCoords(vec2 p, float coarseWeight) {
     vec2 coarse = turn * fine / MAT_COARSE_FACTOR;
     MatCoords c;
 #ifdef MAT_STOCHASTIC
-    c.fine = matTiles(fine);
     c.coarse = matTiles(coarse);
+  #ifndef MAT_COARSE_ONLY
+    c.fine = matTiles(fine);
+  #endif
 #elif defined(MAT_WANG)
-    c.fine = matCell(fine);
     c.coarse = matCell(coarse);
+  #ifndef MAT_COARSE_ONLY
+    c.fine = matCell(fine);
+  #endif
 #else
     c.fine = fine;
     c.coarse = coarse;
@@ -289,6 +295,16 @@ MatCoords matCoords(vec2 p, float coarseWeight) {
 // One material at both scales: repeated, Wang or stochastic tiles (matLookup), the same for albedo and detail.
 MatTexel matSample(float layer, MatCoords c) {
     const mat2 unturn = mat2(0.8253, -0.5646, 0.5646, 0.8253); // rotation by -MAT_COARSE_TURN: coarse slopes to world
+#ifdef MAT_COARSE_ONLY
+    vec4 albedoCoarse = matLookup(uMatAlbedo, layer, c.coarse);
+    vec4 detailCoarse = matLookup(uMatDetail, layer, c.coarse);
+    MatTexel t;
+    t.albedo = albedoCoarse.rgb;
+    t.slope = unturn * (detailCoarse.rg * 2.0 - 1.0);
+    t.height = detailCoarse.b;
+    t.gloss = detailCoarse.a;
+    return t;
+#else
     vec4 albedoFine = matLookup(uMatAlbedo, layer, c.fine);
     vec4 detailFine = matLookup(uMatDetail, layer, c.fine);
     vec4 albedoCoarse = matLookup(uMatAlbedo, layer, c.coarse);
@@ -299,6 +315,7 @@ MatTexel matSample(float layer, MatCoords c) {
     t.height = mix(detailFine.b, detailCoarse.b, c.coarseWeight);
     t.gloss = mix(detailFine.a, detailCoarse.a, c.coarseWeight);
     return t;
+#endif
 }
 
 #ifdef MAT_TRIPLANAR
@@ -342,13 +359,18 @@ float matCover(float amount, float relief) {
     return smoothstep(relief - s, relief + s, amount * (1.0 + 2.0 * s) - s);
 }
 
-// Steps 1-3 at s, seen from eyeDistance metres, under the macro variation macroTint (matMacroTint): the surface's
-// albedo, detail slope and gloss, before light.
-MatTexel terrainMaterial(TerrainSurface s, float eyeDistance, vec2 macroTint) {
+// The coarse tile's weight seen from eyeDistance metres: from 0.3 within MAT_COARSE_NEAR to 0.8 beyond MAT_COARSE_FAR.
+float matCoarseWeight(float eyeDistance) {
+    return mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance));
+}
+
+// Steps 1-3 at s with the coarse tile weighing coarseWeight (matCoarseWeight, or 1 where only it is read), under the
+// macro variation macroTint (matMacroTint): the surface's albedo, detail slope and gloss, before light.
+MatTexel terrainMaterial(TerrainSurface s, float coarseWeight, vec2 macroTint) {
     float n0y = s.wsNormal.y;
 
     // 1. texture coordinates at two scales, projected from above, and the macro variation
-    MatCoords c = matCoords(s.wsPos.xz, mix(0.3, 0.8, smoothstep(MAT_COARSE_NEAR, MAT_COARSE_FAR, eyeDistance)));
+    MatCoords c = matCoords(s.wsPos.xz, coarseWeight);
     float macro = macroTint.x;
     float tint = macroTint.y;
     float edge = (macro - 0.5) * 2.0 * MAT_EDGE_NOISE;
@@ -426,5 +448,6 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
 
 // Steps 1-5: the surface at s, lit.
 vec3 shadeTerrain(TerrainSurface s) {
-    return lightTerrain(s, terrainMaterial(s, length(cameraPos() - s.wsPos), matMacroTint(s.wsPos.xz)));
+    float coarseWeight = matCoarseWeight(length(cameraPos() - s.wsPos));
+    return lightTerrain(s, terrainMaterial(s, coarseWeight, matMacroTint(s.wsPos.xz)));
 }

@@ -6,14 +6,20 @@
 //   (none)                 near patches: every material layer, fading into the far material over farBand;
 //                          with MAT_TRIPLANAR (materials.cliffs=triplanar) the rock projected three ways
 //   TERRAIN_FAR            patches wholly beyond farBand.y: the baked far material and the ground's slope (two
-//                          lookups), the sky's reflection from the vertices (terrain.vert)
+//                          lookups), the sky's reflection and light from the vertices (terrain.vert); with
+//                          TERRAIN_CLIPMAP the material's coarse scale alone (MAT_COARSE_ONLY), as the near
+//                          program shows it at farBand.y, since the unbounded world bakes none
 //   TERRAIN_LEVELS         with TERRAIN_FAR: one colour per level of detail, lit (figure 6)
 //   TERRAIN_TANGENT_SPACE  the tangent frame as colour (figure 4), no material
 //   TERRAIN_CLIPMAP        the unbounded world (terrain.world=unbounded): the slope and the snow from the streamed
-//                          clipmap's layer of the patch's level, every patch near (no baked far material yet)
+//                          clipmap's layer of the patch's level; the near program fades its fine scale out over
+//                          farBand instead of fading into a baked material
 #include "common/frame.glsl"
 #include "common/color.glsl"
 #include "terrain/material.glsl"
+#ifdef TERRAIN_CLIPMAP
+#include "terrain/clipmap.glsl"
+#endif
 
 in vec3 wsPos;
 in vec4 air;                   // the air to this point, per vertex (terrain.vert)
@@ -44,12 +50,9 @@ vec3 levelColour(int level) {
 
 void main() {
 #ifdef TERRAIN_CLIPMAP
-    // level L's sample i lies at x = i · d_L and is texel i mod clipSize, whose centre is at (i + 0.5) / clipSize:
-    // wrapping bilinear filtering then reads the window as if it were the whole world
-    float levelExtent = clipExtent * exp2(float(lodLevel));
-    vec3 clipUv = vec3(wsPos.xz / levelExtent + 0.5 / float(textureSize(slopes, 0).x), float(lodLevel));
+    vec3 clipUv = clipmapCoordinates(wsPos.xz, lodLevel, clipExtent, textureSize(slopes, 0).x);
     vec2 slope = texture(slopes, clipUv).xy;
-    vec2 snowAndSky = texture(snowMap, clipUv).rg; // read by the near material only
+    vec2 snowAndSky = texture(snowMap, clipUv).rg; // the sky seen: the far program's comes per vertex
 #else
     vec2 uv = wsPos.xz / extent + 0.5;
   #ifdef TERRAIN_FAR
@@ -73,7 +76,7 @@ void main() {
     color = color * color;
 #else
     MatTexel m;
-  #ifdef TERRAIN_FAR
+  #if defined(TERRAIN_FAR) && !defined(TERRAIN_CLIPMAP)
     vec4 far = texture(farColour, uv);
     m.albedo = far.rgb;
     m.slope = farSlopes.rg * 2.0 - 1.0;
@@ -86,15 +89,22 @@ void main() {
     vec2 snowAndSky = texture(snowMap, uv).rg;
     #endif
     s.snow = snowAndSky.r;
+    #ifdef TERRAIN_FAR // the unbounded world's far ground: the coarse scale alone, its sky per vertex
+    s.skyVisibility = 1.0;
+    m = terrainMaterial(s, 1.0, matMacroTint(wsPos.xz));
+    #else
     s.skyVisibility = snowAndSky.g;
     float eyeDistance = length(cameraPos() - wsPos);
-    m = terrainMaterial(s, eyeDistance, matMacroTint(wsPos.xz));
-    #ifndef TERRAIN_CLIPMAP // fade into the baked far material (the streamed world has none yet)
-    vec4 far = texture(farColour, uv);
     float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
+      #ifdef TERRAIN_CLIPMAP // the fine scale fades out, so the near ground meets the far at the coarse scale alone
+    m = terrainMaterial(s, mix(matCoarseWeight(eyeDistance), 1.0, toFar), matMacroTint(wsPos.xz));
+      #else // fade into the baked far material
+    m = terrainMaterial(s, matCoarseWeight(eyeDistance), matMacroTint(wsPos.xz));
+    vec4 far = texture(farColour, uv);
     m.albedo = mix(m.albedo, far.rgb, toFar);
     m.slope = mix(m.slope, texture(farSlope, uv).rg * 2.0 - 1.0, toFar);
     m.gloss = mix(m.gloss, far.a, toFar);
+      #endif
     #endif
   #endif
     vec3 color = lightTerrain(s, m);

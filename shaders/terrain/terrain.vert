@@ -9,6 +9,9 @@
 #ifdef TERRAIN_FAR
 #include "common/environment.glsl"
 #endif
+#ifdef TERRAIN_CLIPMAP
+#include "terrain/clipmap.glsl"
+#endif
 
 layout(location = 0) in vec2 gridPos;         // column, row in 0..N
 layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample z, samples per grid step, level
@@ -31,9 +34,15 @@ uniform sampler2D heights;
 uniform int periodic;       // 1: the map wraps (generated), 0: it clamps (imported)
 #endif
 #ifdef TERRAIN_FAR
+  #ifdef TERRAIN_CLIPMAP
+uniform sampler2DArray slopes;  // (dh/dx, dh/dz) of each level's window, as in terrain.frag
+uniform sampler2DArray snowMap; // g: the share of the sky seen (StreamedSky), as in terrain.frag
+uniform float clipExtent;       // metres across level 0's window
+  #else
 uniform sampler2D farSlope; // ba: the ground's (dh/dx, dh/dz) over the tile (FarMaterial), as in terrain.frag
 uniform sampler2D snowMap;  // g: the share of the sky the relief leaves (SkyVisibility), as in terrain.frag
 uniform float extent;       // metres per map tile
+  #endif
 uniform float uMatSkyOcclusion; // material.glsl's switch (materials.sky-occlusion)
 #endif
 
@@ -126,9 +135,16 @@ void main() {
     // The sky's reflection per vertex too, at two levels the pixels blend by their gloss (material.glsl): on the
     // far ground its cube map lookup per pixel was a sixth of the terrain's pixel time on a software rasteriser. The
     // normal is the ground's, read at the level whose texels are as far apart as this patch's vertices.
+  #ifdef TERRAIN_CLIPMAP
+    vec3 clipUv = clipmapCoordinates(wsPos.xz, patchInfo.w, clipExtent, clipSize);
+    vec2 slope = textureLod(slopes, clipUv, 0.0).xy;
+    float visible = textureLod(snowMap, clipUv, 0.0).g;
+  #else
     vec2 uv = wsPos.xz / extent + 0.5;
     float samplesPerStep = float(patchInfo.z) / float(mapSize);
     vec2 slope = textureLod(farSlope, uv, max(log2(samplesPerStep * float(textureSize(farSlope, 0).x)), 0.0)).ba;
+    float visible = textureLod(snowMap, uv, max(log2(samplesPerStep * float(textureSize(snowMap, 0).x)), 0.0)).g;
+  #endif
     vec3 normal = normalize(vec3(-slope.x, 1.0, -slope.y));
     vec3 mirror = reflect(normalize(wsPos - cameraPos()), normal);
     skySharp = environmentRadiance(mirror, ENVIRONMENT_SHARP_LOD);
@@ -136,7 +152,6 @@ void main() {
     // and the sky light on it: per pixel, its nine factors read from the frame block cost the far ground a sixth
     // of its time on llvmpipe, and it varies as slowly over a far triangle as the reflection does; where the relief
     // hides part of the sky, the sunlit ground's light stands in for it (as material.glsl's matSkyLight)
-    float visible = textureLod(snowMap, uv, max(log2(samplesPerStep * float(textureSize(snowMap, 0).x)), 0.0)).g;
     skyLight = skyIrradiance(normal, mix(1.0, visible, uMatSkyOcclusion));
 #endif
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);

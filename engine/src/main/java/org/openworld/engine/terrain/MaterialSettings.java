@@ -20,7 +20,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param farTexels   distance from the eye beyond which the terrain reads the {@link FarMaterial} baked once instead
  *                    of every material layer, in texels of that material (2 m each on the default map, 1 m on a
  *                    1 km one), so a coarser bake starts further out; the near material fades into it over the last
- *                    {@link FarMaterial#BLEND_FRACTION} of that distance
+ *                    {@link FarMaterial#BLEND_FRACTION} of that distance. The unbounded world bakes none: beyond
+ *                    that many of its level-0 samples its far program reads the coarse tile alone
+ *                    ({@link TerrainShading})
  * @param tiling      how the detail textures cover the ground: repeated tiles, 16 Wang tiles quilted from them at
  *                    start-up (Cohen et al. 2003), laid aperiodically by a hash at one lookup per scale, or
  *                    stochastic tiling (Heitz and Neyret 2018), which hides the repetition at three times the texture
@@ -36,7 +38,8 @@ public record MaterialSettings(
         @Setting(doc = "gloss maps: sun highlights and sky reflection") boolean glossMap,
         @Setting(doc = "the relief hides its share of the sky's light (horizon occlusion)") boolean skyOcclusion,
         @Setting(doc = "side of the fine material texture tile", unit = "m", min = 0.25, max = 50) double detailScale,
-        @Setting(doc = "distance beyond which the terrain reads the baked far material, in its texels", min = 0,
+        @Setting(doc = "distance beyond which the terrain runs the far material, in its texels (the unbounded "
+                + "world's: level-0 samples)", min = 0,
                 max = 100000) double farTexels,
         @Setting(doc = "how the detail textures tile: repeat, quilted (Wang tiles) or stochastic (Heitz-Neyret)")
         Tiling tiling,

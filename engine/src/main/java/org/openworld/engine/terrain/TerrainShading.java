@@ -21,7 +21,14 @@ import org.openworld.engine.gl.Uniform;
  * program: two lookups in the {@link FarMaterial} baked at start (colour and gloss, detail slope). Between
  * (1 − {@link FarMaterial#BLEND_FRACTION})·D and D the near program fades its material into the baked one, which it
  * also reads, and from D on shows only that; so where a near patch meets a far one both show the same colour, and
- * nothing pops as a patch changes program.
+ * nothing pops as a patch changes program. Both programs light the far ground with the sky read per vertex.
+ *
+ * <p><b>The unbounded world's far ground.</b> A bake per level of the streamed clipmap would hold one texel per
+ * height sample: 5 to 10 pixels a texel at 1280×720 where the tile's 2 m bake shows 1 to 5, its texture grain
+ * averaged away. So there the far program makes the material as the near one does, at the coarse scale alone
+ * ({@code MAT_COARSE_ONLY}: six lookups instead of twelve), its sky read per vertex as on the tile, and the near
+ * program fades its fine scale out over the same band; D is counted in level 0's samples. On llvmpipe at 1280×720
+ * along the crossing this took the streamed frame from 274 to 220 ms (docs/terrain.md, section 5).
  *
  * <p><b>Shadows.</b> The near and far programs come twice: reading the sun's shadow maps, and compiled without the
  * lookup ({@code SUN_UNSHADOWED}, {@code shaders/common/shadow.glsl}) for the passes where no map is bound (no shadow
@@ -36,16 +43,20 @@ import org.openworld.engine.gl.Uniform;
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
  * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and three
  * more for each of the quilted and the stochastic tilings ({@link MaterialSettings.Tiling}: the two near programs and
- * the bake come in each).
+ * the bake come in each; on the unbounded world the two near and the two far programs).
  */
 final class TerrainShading {
 
-    /** A near program (one tiling, one kind of sunlight) with its material uniforms and its far band (null streamed). */
+    /** A near program (one tiling, one kind of sunlight) with its material uniforms and its far band. */
     private record Near(TerrainMaterials.Uniforms uniforms, Uniform.Vec2 farBand) {
     }
 
-    /** The near programs (one per tiling) and the far one for one kind of sunlight (null when streamed). */
-    private record Lit(Map<MaterialSettings.Tiling, Near> near, TerrainMaterials.Uniforms far) {
+    /**
+     * The near and the far programs for one kind of sunlight, per tiling: on the tile one far program for all, which
+     * reads the bake; on the unbounded world one per tiling, which samples the materials.
+     */
+    private record Lit(Map<MaterialSettings.Tiling, Near> near,
+                       Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far) {
     }
 
     private final Lit shadowed;
@@ -71,9 +82,9 @@ final class TerrainShading {
      * {@code quilting} stage) and the far material, handed to the system's owner; {@link #bake} bakes the far
      * material.
      *
-     * <p>The streamed world ({@link PatchLayout#streamed()}) has no far material yet: its programs read the slopes
-     * and the snow of the clipmap on the gradients' and the snow map's units, and every patch runs a near program;
-     * its far-ground cost is the near program's.
+     * <p>The streamed world ({@link PatchLayout#streamed()}) has no baked far material: its programs read the slopes
+     * and the snow of the clipmap on the gradients' and the snow map's units, and its far program samples the
+     * materials at the coarse scale alone.
      *
      * @param base          the tile's heights, for the far material; null for the streamed world
      * @param unitHeights   the unit of the height pyramid (clipmap); the gradients (slopes) and the snow map take
@@ -133,20 +144,30 @@ final class TerrainShading {
     private Lit lit(EngineContext context, String suffix, List<String> light, MaterialSettings.Cliffs cliffs,
                     int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
+        Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far = new EnumMap<>(MaterialSettings.Tiling.class);
+        TerrainMaterials.Uniforms baked = null;
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
                     with(with(light, tiling.defines()), cliffs.defines()), unitHeights);
             nearSamplers(p, unitHeights);
-            near.put(tiling, new Near(TerrainMaterials.uniforms(p), layout.streamed() ? null : p.vec2("farBand")));
+            near.put(tiling, new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
+            if (layout.streamed()) { // the materials at the coarse scale, seen from above as a far texel is
+                ShaderProgram f = variant(context, "program.far" + tiling.roleSuffix() + suffix,
+                        with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
+                nearSamplers(f, unitHeights);
+                far.put(tiling, TerrainMaterials.uniforms(f));
+            } else {
+                if (baked == null) {
+                    ShaderProgram f = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")),
+                            unitHeights);
+                    farSamplers(f, unitFar);
+                    f.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
+                    baked = TerrainMaterials.lightUniforms(f);
+                }
+                far.put(tiling, baked);
+            }
         }
-        if (layout.streamed()) {
-            return new Lit(near, null);
-        }
-        ShaderProgram far = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")),
-                unitHeights);
-        farSamplers(far, unitFar);
-        far.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
-        return new Lit(near, TerrainMaterials.lightUniforms(far));
+        return new Lit(near, far);
     }
 
     /** A near program's maps: the slopes, or the gradients, the snow map and the far material it fades into. */
@@ -185,11 +206,12 @@ final class TerrainShading {
      * Draws the ordered patches in the colouring asked for, near ones first; the maps are bound to their units.
      * Quilts the textures (or goes back to the tiles) first if {@code materials.tiling} turned to or from quilted,
      * and bakes the far material again if a setting it depends on changed. {@code sunShadowed}: the pass has the
-     * sun's shadow maps bound (RenderContext#sunShadowed), else the programs without the lookup draw.
+     * sun's shadow maps bound (RenderContext#sunShadowed), else the programs without the lookup draw. Returns how
+     * many patches the near program drew (all of them in the debug colourings).
      */
-    void draw(PatchList patches, PatchOrder order, float[] copyOffsets, MaterialSettings settings,
-              TerrainDebugSettings.Colouring colouring, boolean sunShadowed, PatchRenderer renderer,
-              DrawStats stats) {
+    int draw(PatchList patches, PatchOrder order, float[] copyOffsets, MaterialSettings settings,
+             TerrainDebugSettings.Colouring colouring, boolean sunShadowed, PatchRenderer renderer,
+             DrawStats stats) {
         if ((settings.tiling() == MaterialSettings.Tiling.QUILTED) != quilted) {
             materials = owned.replace("materials", materials, upload(settings.tiling()));
         }
@@ -198,30 +220,30 @@ final class TerrainShading {
             farMaterial.refresh(materials, settings, unitMaterials);
             farMaterial.bind(unitFar);
         }
-        switch (colouring) {
+        return switch (colouring) {
             case SHADED -> {
                 Lit lit = sunShadowed ? shadowed : unshadowed;
                 Near near = lit.near().get(settings.tiling());
                 materials.bind(near.uniforms(), settings, unitMaterials);
-                if (farMaterial == null) {
-                    renderer.draw(patches, order.order(), 0, all, copyOffsets, stats);
-                    return;
-                }
-                double farDistance = settings.farTexels() * farMaterial.texelMetres();
+                double texelMetres = farMaterial != null ? farMaterial.texelMetres() : layout.spacing();
+                double farDistance = settings.farTexels() * texelMetres;
                 int nearCount = order.nearerThan(farDistance);
                 near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
-                materials.bind(lit.far(), settings, unitMaterials);
+                materials.bind(lit.far().get(settings.tiling()), settings, unitMaterials);
                 renderer.draw(patches, order.order(), nearCount, all, copyOffsets, stats);
+                yield nearCount;
             }
             case LEVELS -> {
                 materials.bind(levelsUniforms, settings, unitMaterials);
                 renderer.draw(patches, order.order(), 0, all, copyOffsets, stats);
+                yield all;
             }
             case TANGENT_SPACE -> {
                 tangentSpace.use();
                 renderer.draw(patches, order.order(), 0, all, copyOffsets, stats);
+                yield all;
             }
-        }
+        };
     }
 }

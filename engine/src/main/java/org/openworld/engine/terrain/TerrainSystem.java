@@ -62,6 +62,8 @@ public final class TerrainSystem implements EngineSystem {
     private PatchLayout layout;
     private TerrainQuadtree tree;
     private PatchSelection selection;
+    /** Which nodes are on the GPU and the heights they span: all of a tile's, the streamed world's as it streams. */
+    private Residency residency = Residency.ALL;
     private final PatchList patches = new PatchList();
     private PatchPatterns patterns;
     private final PatchOrder order = new PatchOrder();
@@ -148,6 +150,7 @@ public final class TerrainSystem implements EngineSystem {
         StreamedWorld stream = unbounded.stream();
         context.world().setResource(HeightField.class, stream.heights());
         tree = stream.tree();
+        residency = stream;
         selection = new PatchSelection(tree, stream);
         layout = PatchLayout.clipmap(tree, stream.clipSize(), terrain);
         shading = new TerrainShading(context, layout, null, seed, UNIT_HEIGHTS, times);
@@ -256,7 +259,7 @@ public final class TerrainSystem implements EngineSystem {
         counters.add(prefix + "culled", selection.culledPatches());
         counters.add(prefix + "select-ms", selectMs);
         // 2. nearest first, so near ground hides far ground before it is shaded
-        order.sort(patches, tree.bounds(), copyOffsets, eye);
+        order.sort(patches, tree.bounds(), residency, copyOffsets, eye);
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
         // materials near and far and the view options
         bindMaps();
@@ -271,8 +274,9 @@ public final class TerrainSystem implements EngineSystem {
             if (debug.wireframe()) {
                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             }
-            shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class), debug.colouring(),
-                    context.sunShadowed(), renderer, context.stats());
+            int near = shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class),
+                    debug.colouring(), context.sunShadowed(), renderer, context.stats());
+            counters.add(prefix + "near", near);
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
         glDisable(GL_CULL_FACE);

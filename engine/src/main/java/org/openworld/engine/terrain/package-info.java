@@ -43,7 +43,8 @@
  * table of which block each slot holds keeps it off stale texels; beyond a window it falls back on a coarser level):
  * on llvmpipe several milliseconds a block, so the start shades only the blocks its first frame draws. Limits: one
  * geometric error per level (the world is statistically uniform), boxes the world's height bounds where no blocks
- * narrow them; no baked far material on it yet.
+ * narrow them; no baked far material: its far program samples the coarse tile alone ({@link
+ * org.openworld.engine.terrain.TerrainShading}).
  *
  * <p><b>Pyramid (2.5).</b> {@link org.openworld.engine.terrain.HeightPyramid#build} low-passes each level with the
  * binomial kernel (1 4 6 4 1)/16 (a Gaussian of σ ≈ 1 sample, response cos⁴(πf)) and keeps every other sample.

@@ -1,15 +1,22 @@
 package org.openworld.engine.terrain;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.Engine;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
@@ -21,10 +28,11 @@ import org.openworld.engine.gl.Image;
 import org.openworld.engine.sky.SkySystem;
 
 /**
- * The baked far material against the near one it stands in for: the same ground drawn all near
+ * The far material against the near one it stands in for: the same ground drawn all near
  * ({@code materials.far-texels} beyond everything) and all far ({@code 0}) must agree in its mean colour over every
  * block of the picture, since where the two meet the near program fades into the far one. A far material that lost
- * a layer, the macro tint, the snow or its place on the map would shift whole blocks. Pictures go to
+ * a layer, the macro tint, the snow or its place on the map would shift whole blocks. On the tile the far program
+ * reads the bake; on the unbounded world it samples the materials at the coarse scale alone. Pictures go to
  * {@code target/test-images/far-material-*.png}.
  */
 @GlTest
@@ -38,18 +46,24 @@ class FarMaterialRenderTest {
     @RegisterExtension
     static final HeadlessGl GL = new HeadlessGl();
 
-    @Test
-    void theFarMaterialShowsTheNearOnesMeanColourOverEveryBlock() throws IOException {
-        // a 1 km tile with snow on its heights, seen from above its middle: grass, rock and snow at 150 to 700 m
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void theFarMaterialShowsTheNearOnesMeanColourOverEveryBlock(TerrainSettings.World world) throws IOException {
+        // a 1 km tile (or the unbounded world) with snow on its heights, seen from above: grass, rock and snow at
+        // 150 to 700 m
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400"),
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400", "terrain.world=" + world),
                 new TerrainSystem(), new CullingSystem())) {
             engine.world().setResource(new TimeOfDay(11.0, 0));
             engine.world().resource(Camera.class).setPose(new CameraPose(0, 450, 350, 0, -35, 60));
             engine.settings().set("materials.far-texels", "100000");
-            Image near = frame(engine, "near");
+            String name = world.toString().toLowerCase(Locale.ROOT);
+            Image near = frame(engine, name + "-near");
+            Map<String, Double> counters = lastCounters(engine);
+            assertEquals(counters.get("terrain.main.patches"), counters.get("terrain.main.near"), "all near");
             engine.settings().set("materials.far-texels", "0");
-            Image far = frame(engine, "far");
+            Image far = frame(engine, name + "-far");
+            assertEquals(0, lastCounters(engine).get("terrain.main.near"), "all far");
 
             double sum = 0;
             double worst = 0;
@@ -154,17 +168,19 @@ class FarMaterialRenderTest {
      * the near one per pixel at the gloss's own level, so their sums differ a little, but a far ground that lost the
      * sky, or read it along another direction, would add far less at this low sun, seen across the slopes.
      */
-    @Test
-    void theFarGroundMirrorsTheSkyAsTheNearOneDoes() throws IOException {
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void theFarGroundMirrorsTheSkyAsTheNearOneDoes(TerrainSettings.World world) throws IOException {
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
-                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400"),
+                List.of("terrain.size=512", "terrain.spacing=2", "terrain.relief=400", "terrain.world=" + world),
                 new TerrainSystem(), new CullingSystem(), new SkySystem())) {
             engine.world().setResource(new TimeOfDay(17.5, 0));
             engine.world().resource(Camera.class).setPose(new CameraPose(0, 600, 400, 0, -15, 60));
             engine.settings().set("materials.far-texels", "100000");
-            double near = glossGain(engine, "near");
+            String name = world.toString().toLowerCase(Locale.ROOT);
+            double near = glossGain(engine, name + "-near");
             engine.settings().set("materials.far-texels", "0");
-            double far = glossGain(engine, "far");
+            double far = glossGain(engine, name + "-far");
             assertTrue(near > 0.5, "the gloss maps add lightness (L*) to the near ground: " + near);
             assertTrue(Math.abs(far - near) < 0.2 * near, "light the gloss maps add, far " + far + " against near "
                     + near);
@@ -206,6 +222,13 @@ class FarMaterialRenderTest {
         int n = BLOCK * BLOCK;
         return Lab.fromSrgb((int) Math.round((double) r / n), (int) Math.round((double) g / n),
                 (int) Math.round((double) b / n));
+    }
+
+    /** The counters of the last frame rendered. */
+    private static Map<String, Double> lastCounters(Engine engine) {
+        List<FrameRecord> frames = new ArrayList<>();
+        engine.collectFrames(true, frames::add);
+        return frames.get(frames.size() - 1).counters();
     }
 
     private static Image frame(Engine engine, String name) throws IOException {
