@@ -83,6 +83,7 @@ public final class BenchComparison {
         rows.add(both("triangles median", Summary::trianglesMedian));
         rows.add(both("draw calls median", Summary::drawCallsMedian));
         rows.add(memory("heap peak MiB", MemoryUse::heapPeakMib));
+        rows.add(memory("heap after GC peak MiB", MemoryUse::heapAfterGcPeakMib));
         rows.add(memory("RSS peak MiB", MemoryUse::rssPeakMib));
         rows.add(memory("texture peak MiB", MemoryUse::texturePeakMib));
         rows.add(memory("GPU memory used peak MiB", MemoryUse::gpuUsedPeakMib));

@@ -1,11 +1,19 @@
 package org.openworld.engine.bench;
 
 import java.io.IOException;
+import com.sun.management.GarbageCollectorMXBean;
+import com.sun.management.GcInfo;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryMXBean;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
 import java.util.Optional;
+import java.util.Set;
+import java.util.stream.Collectors;
 import org.openworld.engine.gl.GpuMemoryInfo;
 import org.openworld.engine.gl.TextureMemory;
 
@@ -17,8 +25,11 @@ import org.openworld.engine.gl.TextureMemory;
  *
  * <p>The heap is sampled, not watched: its use between two samples (garbage made and collected within a frame) is
  * not seen, so the peak is the largest heap at a frame's end. With a collector that runs when the young generation
- * fills, that is close to the true peak, since garbage piles up over several frames before each collection. Cost: two
- * reads per frame, no allocation worth counting, no GPU wait.
+ * fills, that is close to the true peak, since garbage piles up over several frames before each collection. That
+ * peak moves with how much garbage the collector lets pile up (a longer run grows its young generation), so the meter
+ * also keeps the most heap in use just after a collection ({@code GcInfo}'s usage after it, summed over the heap's
+ * pools): what the run holds, plus the old generation's garbage a young collection leaves. Cost: a few reads per
+ * frame, an allocation only after a collection, no GPU wait.
  */
 public final class MemoryMeter {
 
@@ -26,6 +37,13 @@ public final class MemoryMeter {
     private static final Path PROC_STATUS = Path.of("/proc/self/status");
 
     private final MemoryMXBean heap = ManagementFactory.getMemoryMXBean();
+    private final List<GarbageCollectorMXBean> collectors = ManagementFactory.getGarbageCollectorMXBeans().stream()
+            .filter(GarbageCollectorMXBean.class::isInstance).map(GarbageCollectorMXBean.class::cast).toList();
+    private final Set<String> heapPools = ManagementFactory.getMemoryPoolMXBeans().stream()
+            .filter(p -> p.getType() == MemoryType.HEAP).map(MemoryPoolMXBean::getName).collect(Collectors.toSet());
+    /** Per collector, the id of the last collection read; -1 before any. */
+    private final long[] collectionSeen;
+    private Double heapAfterGcPeakMib;
     private final Optional<GpuMemoryInfo> gpu;
     private final TextureMemory textures;
     private double heapPeakMib;
@@ -39,6 +57,8 @@ public final class MemoryMeter {
     public MemoryMeter(Optional<GpuMemoryInfo> gpu, TextureMemory textures) {
         this.gpu = gpu;
         this.textures = textures;
+        collectionSeen = new long[collectors.size()];
+        Arrays.fill(collectionSeen, -1);
     }
 
     /**
@@ -47,6 +67,16 @@ public final class MemoryMeter {
      */
     public void sample() {
         heapPeakMib = Math.max(heapPeakMib, heap.getHeapMemoryUsage().getUsed() / BYTES_PER_MIB);
+        for (int i = 0; i < collectors.size(); i++) {
+            GcInfo last = collectors.get(i).getLastGcInfo();
+            if (last != null && last.getId() != collectionSeen[i]) {
+                collectionSeen[i] = last.getId();
+                double after = last.getMemoryUsageAfterGc().entrySet().stream()
+                        .filter(e -> heapPools.contains(e.getKey())).mapToLong(e -> e.getValue().getUsed()).sum()
+                        / BYTES_PER_MIB;
+                heapAfterGcPeakMib = heapAfterGcPeakMib == null ? after : Math.max(heapAfterGcPeakMib, after);
+            }
+        }
         gpu.ifPresent(g -> gpuFreeLowMib = Math.min(gpuFreeLowMib, g.freeMib()));
         textureEndMib = textures.bytes() / BYTES_PER_MIB;
     }
@@ -58,7 +88,7 @@ public final class MemoryMeter {
     public MemoryUse result() {
         Double total = gpu.flatMap(GpuMemoryInfo::totalMib).orElse(null);
         Double freeLow = gpu.isPresent() && gpuFreeLowMib != Double.POSITIVE_INFINITY ? gpuFreeLowMib : null;
-        return new MemoryUse(heapPeakMib, rssPeakMib(), total, total != null && freeLow != null ? total - freeLow
+        return new MemoryUse(heapPeakMib, heapAfterGcPeakMib, rssPeakMib(), total, total != null && freeLow != null ? total - freeLow
                 : null, freeLow, textures.peakBytes() / BYTES_PER_MIB, textureEndMib);
     }
 

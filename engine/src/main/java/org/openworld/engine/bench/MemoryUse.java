@@ -8,6 +8,9 @@ import java.util.Locale;
  *
  * @param heapPeakMib    the most Java heap in use (live objects and garbage not yet collected) at the end of a
  *                       recorded frame, MiB
+ * @param heapAfterGcPeakMib the most Java heap in use just after a collection that ended during the recorded frames
+ *                       (what the run held, with the old generation's garbage a young collection leaves), MiB; null
+ *                       if no collection ended then, or in a file written before it was measured
  * @param rssPeakMib     the process's peak resident set size over its whole life, world building included
  *                       ({@code VmHWM} of {@code /proc/self/status}), MiB; null off Linux
  * @param gpuTotalMib    the GPU's dedicated memory ({@code GL_NVX_gpu_memory_info}), MiB; null where not reported
@@ -22,16 +25,19 @@ import java.util.Locale;
  *                       file written before it was counted
  * @param textureEndMib  what the engine's textures held at the end of the last recorded frame, same count, MiB
  */
-public record MemoryUse(Double heapPeakMib, Double rssPeakMib, Double gpuTotalMib, Double gpuUsedPeakMib,
-                        Double gpuFreeLowMib, Double texturePeakMib, Double textureEndMib) {
+public record MemoryUse(Double heapPeakMib, Double heapAfterGcPeakMib, Double rssPeakMib, Double gpuTotalMib,
+                        Double gpuUsedPeakMib, Double gpuFreeLowMib, Double texturePeakMib, Double textureEndMib) {
 
     /**
-     * One sentence for {@link Summary#describe()}, e.g. "Memory: heap peak 412 MiB, RSS peak 1210 MiB, textures peak
-     * 160 MiB, GPU ...".
+     * One sentence for {@link Summary#describe()}, e.g. "Memory: heap peak 412 MiB (after a collection 150 MiB), RSS
+     * peak 1210 MiB, textures peak 160 MiB, GPU ...".
      */
     public String describe() {
-        StringBuilder s = new StringBuilder("Memory: heap peak ").append(mib(heapPeakMib))
-                .append(", RSS peak ").append(rssPeakMib == null ? "not reported by the system" : mib(rssPeakMib));
+        StringBuilder s = new StringBuilder("Memory: heap peak ").append(mib(heapPeakMib));
+        if (heapAfterGcPeakMib != null) {
+            s.append(" (after a collection ").append(mib(heapAfterGcPeakMib)).append(')');
+        }
+        s.append(", RSS peak ").append(rssPeakMib == null ? "not reported by the system" : mib(rssPeakMib));
         if (texturePeakMib != null) {
             s.append(", textures peak ").append(mib(texturePeakMib));
         }

@@ -11,7 +11,7 @@ final class BenchFrames {
             Map.of("terrain.lod", "4"), "assets/paths/valley.path", 10, false);
 
     /** Memory as llvmpipe on Linux reports it: heap, RSS and the engine's texture count, no GPU memory. */
-    static final MemoryUse MEMORY = new MemoryUse(412.5, 1210.0, null, null, null, 160.25, 150.5);
+    static final MemoryUse MEMORY = new MemoryUse(412.5, 150.0, 1210.0, null, null, null, 160.25, 150.5);
 
     private BenchFrames() {
     }

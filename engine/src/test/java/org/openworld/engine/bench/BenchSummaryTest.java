@@ -59,7 +59,8 @@ class BenchSummaryTest {
                 "\"seed\": 42", "\"settings\"", "\"path\"", "\"warmup\": 10", "\"frames\": 3", "\"complete\": true", "\"frameMs\"",
                 "\"p99\"", "\"meanFps\"", "\"cpuMs\"", "\"passGpuMsMedian\"", "\"systemCpuMsMedian\"",
                 "\"countersMedian\"", "\"trianglesMedian\"", "\"drawCallsMedian\"", "\"profiled\": false",
-                "\"heapPeakMib\": 412.5", "\"rssPeakMib\": 1210.0", "\"gpuUsedPeakMib\": null")) {
+                "\"heapPeakMib\": 412.5", "\"heapAfterGcPeakMib\": 150.0", "\"rssPeakMib\": 1210.0",
+                "\"gpuUsedPeakMib\": null")) {
             assertTrue(text.contains(field), () -> field + " missing in\n" + text);
         }
     }
@@ -100,14 +101,16 @@ class BenchSummaryTest {
     }
 
     @Test
-    void aSummaryWrittenBeforeTexturesWereCountedReadsThemAsNull() throws IOException {
+    void aSummaryWrittenBeforeTexturesAndTheHeapAfterCollectionsWereMeasuredReadsThemAsNull() throws IOException {
         Path json = dir.resolve(BenchReport.SUMMARY_JSON);
         SummaryJson.write(Summary.of(BenchFrames.RUN, BenchFrames.threeFrames(), BenchFrames.MEMORY), json);
-        String old = Files.readString(json).replaceAll(",\\s*\"texture\\w+Mib\": [0-9.]+", "");
+        String old = Files.readString(json).replaceAll(",\\s*\"texture\\w+Mib\": [0-9.]+", "")
+                .replaceAll("\"heapAfterGcPeakMib\": [0-9.]+,\\s*", "");
         Files.writeString(json, old);
-        assertFalse(old.contains("texture"), old);
+        assertFalse(old.contains("texture") || old.contains("AfterGc"), old);
         MemoryUse read = SummaryJson.read(json).memory();
         assertEquals(412.5, read.heapPeakMib());
+        assertEquals(null, read.heapAfterGcPeakMib());
         assertEquals(null, read.texturePeakMib());
         assertEquals(null, read.textureEndMib());
         assertFalse(read.describe().contains("textures"), read.describe());
@@ -117,14 +120,14 @@ class BenchSummaryTest {
     void aProfiledRunWithGpuMemoryIsReadBackAndDescribed() throws IOException {
         RunInfo profiled = new RunInfo("NVIDIA H100", "4.6", "headless-egl", 640, 360, 42L, Map.of(), "valley.path", 10,
                 true);
-        MemoryUse memory = new MemoryUse(300.0, 900.0, 81920.0, 2048.0, 79872.0, 512.0, 500.0);
+        MemoryUse memory = new MemoryUse(300.0, 120.0, 900.0, 81920.0, 2048.0, 79872.0, 512.0, 500.0);
         Path run = dir.resolve("run");
         Summary written = BenchReport.write(profiled, BenchFrames.threeFrames(), memory, run, true);
         Summary read = SummaryJson.read(run.resolve(BenchReport.SUMMARY_JSON));
         assertEquals(written, read);
         assertTrue(read.profiled());
         assertEquals(memory, read.memory());
-        assertTrue(read.describe().contains("Memory: heap peak 300 MiB, RSS peak 900 MiB, textures peak 512 MiB, GPU "
+        assertTrue(read.describe().contains("Memory: heap peak 300 MiB (after a collection 120 MiB), RSS peak 900 MiB, textures peak 512 MiB, GPU "
                 + "used peak 2048 MiB of 81920 MiB."), read.describe());
         assertTrue(read.describe().contains("Profiled:"), read.describe());
     }
@@ -136,8 +139,8 @@ class BenchSummaryTest {
         assertTrue(text.contains("median 6.00 ms, p95 7.80 ms, p99 7.96 ms"), text);
         assertTrue(text.contains("157.9 fps"), text);
         assertTrue(text.contains("slowest GPU pass: terrain 4.00 ms median"), text);
-        assertTrue(text.contains("Memory: heap peak 413 MiB, RSS peak 1210 MiB, textures peak 160 MiB, GPU memory not "
-                + "reported by the driver."), text);
+        assertTrue(text.contains("Memory: heap peak 413 MiB (after a collection 150 MiB), RSS peak 1210 MiB, textures "
+                + "peak 160 MiB, GPU memory not reported by the driver."), text);
         assertFalse(text.contains("Profiled"), text);
     }
 

@@ -17,6 +17,22 @@ class MemoryMeterTest {
         assertNull(MemoryMeter.vmHwmMib("Name:\tjava\nVmRSS:\t  524288 kB\n"));
     }
 
+    /** A collection ended while 32 MiB were held: the heap after it holds them, and the figure is the largest seen. */
+    @Test
+    void theHeapAfterACollectionHoldsWhatIsHeld() {
+        MemoryMeter meter = new MemoryMeter(Optional.empty(), new TextureMemory());
+        long[] held = new long[32 * 1024 * 1024 / 8];
+        System.gc();
+        meter.sample();
+        double withArray = meter.result().heapAfterGcPeakMib();
+        assertTrue(withArray >= 32, () -> "heap after a collection " + withArray + " MiB with 32 MiB held");
+        assertEquals(held.length, 4 * 1024 * 1024);
+        held = null;
+        System.gc();
+        meter.sample();
+        assertEquals(withArray, meter.result().heapAfterGcPeakMib(), "the peak stays when the array is let go");
+    }
+
     @Test
     void theHeapPeakCoversAnArrayHeldAtASampleAndNoGpuMeansNulls() {
         MemoryMeter meter = new MemoryMeter(Optional.empty(), new TextureMemory());
