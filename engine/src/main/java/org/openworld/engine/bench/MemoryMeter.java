@@ -1,8 +1,8 @@
 package org.openworld.engine.bench;
 
-import java.io.IOException;
 import com.sun.management.GarbageCollectorMXBean;
 import com.sun.management.GcInfo;
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryMXBean;
 import java.lang.management.MemoryPoolMXBean;
@@ -43,10 +43,10 @@ public final class MemoryMeter {
             .filter(p -> p.getType() == MemoryType.HEAP).map(MemoryPoolMXBean::getName).collect(Collectors.toSet());
     /** Per collector, the id of the last collection read; -1 before any. */
     private final long[] collectionSeen;
-    private Double heapAfterGcPeakMib;
     private final Optional<GpuMemoryInfo> gpu;
     private final TextureMemory textures;
     private double heapPeakMib;
+    private Double heapAfterGcPeakMib;
     private double gpuFreeLowMib = Double.POSITIVE_INFINITY;
     private Double textureEndMib;
 
@@ -88,8 +88,9 @@ public final class MemoryMeter {
     public MemoryUse result() {
         Double total = gpu.flatMap(GpuMemoryInfo::totalMib).orElse(null);
         Double freeLow = gpu.isPresent() && gpuFreeLowMib != Double.POSITIVE_INFINITY ? gpuFreeLowMib : null;
-        return new MemoryUse(heapPeakMib, heapAfterGcPeakMib, rssPeakMib(), total, total != null && freeLow != null ? total - freeLow
-                : null, freeLow, textures.peakBytes() / BYTES_PER_MIB, textureEndMib);
+        Double usedPeak = total != null && freeLow != null ? total - freeLow : null;
+        return new MemoryUse(heapPeakMib, heapAfterGcPeakMib, rssPeakMib(), total, usedPeak, freeLow,
+                textures.peakBytes() / BYTES_PER_MIB, textureEndMib);
     }
 
     /** {@code VmHWM} of {@code /proc/self/status}, MiB; null where there is no such file (not Linux). */

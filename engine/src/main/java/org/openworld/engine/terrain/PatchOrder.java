@@ -6,10 +6,10 @@ import org.openworld.engine.core.BoundsTree;
 
 /**
  * The patches of a {@link PatchList} nearest first, by the distance from the eye to each patch's box (its quadtree
- * node's, in its copy of the tile). Drawn in this order, a near hill writes its depth before the ground it hides is
- * shaded, so early depth rejection skips the hidden pixels; and the patches wholly beyond a distance form the tail
- * of the order, so they can be drawn by a cheaper program. GL-free; reused from frame to frame, so once warm it
- * allocates nothing.
+ * node's, in its copy of the tile, with the heights the streamed world knows where it knows them). Drawn in this
+ * order, a near hill writes its depth before the ground it hides is shaded, so early depth rejection skips the hidden
+ * pixels; and the patches wholly beyond a distance form the tail of the order, so they can be drawn by a cheaper
+ * program. GL-free; reused from frame to frame, so once warm it allocates nothing.
  *
  * <p>Cost: a sort of one {@code long} per patch (the distance's bits above the patch's index): a few microseconds
  * for the hundred or so patches of a view.
@@ -20,7 +20,7 @@ final class PatchOrder {
     private int[] order = new int[0];
     private float[] distance = new float[0];
     private int size;
-
+    /** The heights of the node being measured, when the residency knows them. */
     private final float[] range = new float[2];
 
     /**
