@@ -138,36 +138,41 @@ final class TerrainShading {
     }
 
     /**
-     * The near programs ({@code program}, {@code program.quilted}, {@code program.stochastic}) and the far one
-     * ({@code program.far}), {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
+     * The near programs ({@code program}, {@code program.quilted}, {@code program.stochastic}) and the far ones
+     * ({@code program.far}: on the tile one that reads the bake, on the unbounded world one per tiling, with the
+     * tiling's suffix), {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
      */
     private Lit lit(EngineContext context, String suffix, List<String> light, MaterialSettings.Cliffs cliffs,
                     int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far = new EnumMap<>(MaterialSettings.Tiling.class);
-        TerrainMaterials.Uniforms baked = null;
+        TerrainMaterials.Uniforms baked = layout.streamed() ? null : bakedFar(context, suffix, light, unitHeights);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
                     with(with(light, tiling.defines()), cliffs.defines()), unitHeights);
             nearSamplers(p, unitHeights);
             near.put(tiling, new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
-            if (layout.streamed()) { // the materials at the coarse scale, seen from above as a far texel is
-                ShaderProgram f = variant(context, "program.far" + tiling.roleSuffix() + suffix,
-                        with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
-                nearSamplers(f, unitHeights);
-                far.put(tiling, TerrainMaterials.uniforms(f));
-            } else {
-                if (baked == null) {
-                    ShaderProgram f = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")),
-                            unitHeights);
-                    farSamplers(f, unitFar);
-                    f.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
-                    baked = TerrainMaterials.lightUniforms(f);
-                }
-                far.put(tiling, baked);
-            }
+            far.put(tiling, baked != null ? baked : coarseFar(context, suffix, light, tiling, unitHeights));
         }
         return new Lit(near, far);
+    }
+
+    /** The tile's far program: the baked material, lit, its sky per vertex. */
+    private TerrainMaterials.Uniforms bakedFar(EngineContext context, String suffix, List<String> light,
+                                               int unitHeights) {
+        ShaderProgram f = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")), unitHeights);
+        farSamplers(f, unitFar);
+        f.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
+        return TerrainMaterials.lightUniforms(f);
+    }
+
+    /** The unbounded world's far program for one tiling: the materials at the coarse scale, its sky per vertex. */
+    private TerrainMaterials.Uniforms coarseFar(EngineContext context, String suffix, List<String> light,
+                                                MaterialSettings.Tiling tiling, int unitHeights) {
+        ShaderProgram f = variant(context, "program.far" + tiling.roleSuffix() + suffix,
+                with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
+        nearSamplers(f, unitHeights);
+        return TerrainMaterials.uniforms(f);
     }
 
     /** A near program's maps: the slopes, or the gradients, the snow map and the far material it fades into. */
