@@ -95,12 +95,13 @@ void main() {
     #else
     s.skyVisibility = snowAndSky.g;
     float eyeDistance = length(cameraPos() - wsPos);
-    float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
       #ifdef TERRAIN_CLIPMAP // the fine scale fades out, so the near ground meets the far at the coarse scale alone
+    float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
     m = terrainMaterial(s, mix(matCoarseWeight(eyeDistance), 1.0, toFar), matMacroTint(wsPos.xz));
-      #else // fade into the baked far material
+      #else // fade into the baked far material, its weight computed after the material (fewer values live across it)
     m = terrainMaterial(s, matCoarseWeight(eyeDistance), matMacroTint(wsPos.xz));
     vec4 far = texture(farColour, uv);
+    float toFar = smoothstep(farBand.x, farBand.y, eyeDistance);
     m.albedo = mix(m.albedo, far.rgb, toFar);
     m.slope = mix(m.slope, texture(farSlope, uv).rg * 2.0 - 1.0, toFar);
     m.gloss = mix(m.gloss, far.a, toFar);
