@@ -3,11 +3,17 @@ package org.openworld.demo;
 import java.util.concurrent.Callable;
 import org.openworld.engine.core.SystemOrder;
 import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.HeadlessChoice;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
-/** {@code openworld info}: the OpenGL renderer and version, how the context was made, and the frame order. */
-@Command(name = "info", mixinStandardHelpOptions = true, description = "Print the OpenGL renderer, version and context mode, and the resolved frame order.")
+/**
+ * {@code openworld info}: the OpenGL renderer and version, how the context was made, what every headless mode and
+ * EGL device says on this machine, and the frame order.
+ */
+@Command(name = "info", mixinStandardHelpOptions = true, description = "Print the OpenGL renderer, version and "
+        + "context mode, what every headless mode says here, the EGL devices, and the resolved frame order.")
 final class InfoCommand implements Callable<Integer> {
 
     @Option(names = "--frame", description = "Print only the resolved frame order (needs no OpenGL).")
@@ -16,15 +22,26 @@ final class InfoCommand implements Callable<Integer> {
     @Option(names = "--window", description = "Make the context with a window instead of headless.")
     boolean window;
 
+    @Mixin
+    ContextOptions context = new ContextOptions();
+
     @Override
     public Integer call() {
         if (!frameOnly) {
-            try (GlContext gl = window ? GlContext.window("OpenWorld info", 320, 180, false) : GlContext.headless()) {
+            HeadlessChoice choice = context.choice(false, false);
+            try (GlContext gl = window ? GlContext.window("OpenWorld info", 320, 180, false)
+                    : GlContext.headless(choice)) {
                 System.out.println("renderer:  " + gl.renderer());
                 System.out.println("vendor:    " + gl.vendor());
                 System.out.println("version:   " + gl.version());
-                System.out.println("context:   " + gl.mode());
+                System.out.println("context:   " + gl.mode() + (gl.device().isEmpty() ? "" : ", device " + gl.device()));
+                gl.tried().forEach(line -> System.out.println("  before it: " + line));
             }
+            System.out.println();
+            System.out.println("Headless modes, each tried on its own (the first that works is the default):");
+            choice.survey().forEach(line -> System.out.println("  " + line));
+            System.out.println("EGL devices (--gpu N):");
+            HeadlessChoice.devices().forEach(line -> System.out.println("  " + line));
             System.out.println();
         }
         System.out.println("Frame order (the updates in this order; each pass draws in the order listed after):");

@@ -82,6 +82,15 @@ final class Launch implements AutoCloseable {
     }
 
     static Launch start(RenderOptions options, boolean window, boolean vsync, String title) {
+        return start(options, window, vsync, false, title);
+    }
+
+    /** As {@link #start(RenderOptions, boolean, String)}, on a context with a GLFW window for Dear ImGui ({@link Gui}). */
+    static Launch startWithGui(RenderOptions options, boolean window, String title) {
+        return start(options, window, false, true, title);
+    }
+
+    private static Launch start(RenderOptions options, boolean window, boolean vsync, boolean gui, String title) {
         Settings settings = settings(options);
         double daySpeed = options.daySpeed(0);
         ShaderSources shaders = options.dev ? devShaders() : ShaderSources.classpath();
@@ -89,7 +98,7 @@ final class Launch implements AutoCloseable {
         options.size.checkMemory();
         GlContext gl = window
                 ? GlContext.window(title, options.size.width(), options.size.height(), vsync, options.dev)
-                : GlContext.headless(options.dev);
+                : GlContext.headless(options.context.choice(options.dev, gui));
         try {
             options.size.checkGlLimits();
             Engine engine = new Engine(gl, shaders, settings, systems, options.size.width(), options.size.height());

@@ -3,6 +3,7 @@ package org.openworld.demo;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** The options every rendering command takes (docs/design.md, "Command line"). */
@@ -83,8 +84,12 @@ final class RenderOptions {
     @Option(names = "--window", description = "Render in a visible window.")
     boolean window;
 
-    @Option(names = "--headless", description = "Render without a window (EGL, or a hidden X11 window).")
+    @Option(names = "--headless", description = "Render without a window (EGL's device platform, GLFW's null "
+            + "platform with EGL, or a hidden X11 window; --gl picks one).")
     boolean headless;
+
+    @Mixin
+    ContextOptions context = new ContextOptions();
 
     /** Whether to open a window: what the user said, else the command's own default. */
     boolean windowed(boolean commandDefault) {

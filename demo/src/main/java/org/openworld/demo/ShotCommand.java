@@ -53,7 +53,8 @@ final class ShotCommand implements Callable<Integer> {
         var path = Poses.loadPath(pose);
         Outputs.png(out, force);
         long start = System.nanoTime();
-        try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
+        try (Launch launch = ui ? Launch.startWithGui(render, render.windowed(false), "OpenWorld shot")
+                : Launch.start(render, render.windowed(false), "OpenWorld shot")) {
             prepare(launch, Poses.still(pose, path, launch.engine.world()));
             if (ui) {
                 renderWithUi(launch);

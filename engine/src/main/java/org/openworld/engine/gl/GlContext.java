@@ -9,19 +9,27 @@ import java.util.List;
 import java.util.Locale;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
+import org.lwjgl.system.Configuration;
+import org.lwjgl.system.FunctionProvider;
 import org.lwjgl.system.MemoryStack;
+import org.openworld.engine.failure.ExitCode;
 
 /**
  * One OpenGL context, windowed or headless, and the one place that creates it: tests, {@code shot}, {@code bench},
  * {@code figures} and the interactive window all come through here.
  *
- * <p>Headless is tried in this order (docs/design.md, "Headless rendering"):
+ * <p>Headless is tried in this order (docs/design.md, "Headless rendering"), or one mode alone when a
+ * {@link HeadlessChoice} forces it:
  * <ol>
+ *   <li>{@code headless-egl-device}: EGL's device platform ({@link EglDevice}), a surfaceless context on a GPU (or on
+ *       Mesa's software device), with no display, no window system and no libGL: what a bare GPU server has;</li>
  *   <li>{@code headless-egl}: GLFW's null platform with an EGL context, no display needed (Mesa llvmpipe works);</li>
- *   <li>{@code headless-x11}: a hidden GLFW window on the X display in {@code DISPLAY} (Xvfb on NVIDIA machines,
- *       where the null-platform EGL path has been seen to fail).</li>
+ *   <li>{@code headless-x11}: a hidden GLFW window on the X display in {@code DISPLAY} (Xvfb, say).</li>
  * </ol>
- * A headless context renders into framebuffer objects, never into its (invisible) default framebuffer.
+ * A headless context renders into framebuffer objects, never into a default framebuffer (the device mode has none).
+ *
+ * <p>OpenGL's functions are loaded for each new context from that context's own API: {@code eglGetProcAddress} for
+ * a device context, LWJGL's default (libGL, else EGL) for a GLFW one ({@link #loadGl}).
  *
  * <p>A window needs a display: without one ({@code DISPLAY} and {@code WAYLAND_DISPLAY} unset, or GLFW unable to open
  * it) the error says "no display found" and offers the headless commands and {@code xvfb-run}; the advice to install
@@ -29,18 +37,34 @@ import org.lwjgl.system.MemoryStack;
  *
  * <p>We ask for OpenGL 4.5 core and accept 3.3 core, the floor every technique here is written for. With
  * {@code debug} ({@code --dev}) the context is a debug context ({@code GLFW_OPENGL_DEBUG_CONTEXT}, which GLFW passes
- * on to EGL as well) and every driver message is printed on stderr through {@link GlDebug#printMessages}.
+ * on to EGL as well; {@code EGL_CONTEXT_OPENGL_DEBUG} on a device) and every driver message is printed on stderr
+ * through {@link GlDebug#printMessages}.
  */
 public final class GlContext implements AutoCloseable {
 
     /** How the context was made; {@code openworld info} prints it. */
     public enum Mode {
-        WINDOW("window"), HEADLESS_EGL("headless-egl"), HEADLESS_X11("headless-x11");
+        WINDOW("window", "a window"),
+        HEADLESS_EGL_DEVICE("headless-egl-device", "EGL device platform, surfaceless"),
+        HEADLESS_EGL("headless-egl", "GLFW null platform + EGL"),
+        HEADLESS_X11("headless-x11", "hidden window on DISPLAY");
 
         private final String label;
+        private final String how;
 
-        Mode(String label) {
+        Mode(String label, String how) {
             this.label = label;
+            this.how = how;
+        }
+
+        /** The headless modes, in the order they are tried. */
+        public static List<Mode> headless() {
+            return List.of(HEADLESS_EGL_DEVICE, HEADLESS_EGL, HEADLESS_X11);
+        }
+
+        /** How the mode makes its context, in a few words. */
+        public String how() {
+            return how;
         }
 
         @Override
@@ -50,13 +74,13 @@ public final class GlContext implements AutoCloseable {
     }
 
     /** Versions we ask for, best first. */
-    private static final int[][] VERSIONS = {{4, 5}, {3, 3}};
+    static final int[][] VERSIONS = {{4, 5}, {3, 3}};
 
     private static final String INSTALL_HINT = """
             OpenGL 3.3 core or newer is needed. On Debian or Ubuntu without a GPU, install Mesa's software renderer:
                 sudo apt-get install -y libegl1 libegl-mesa0 libgl1-mesa-dri
-            On a machine with a GPU, install its vendor driver. For a hidden window instead of EGL, run under
-            an X server, for example: xvfb-run -a ./openworld ...""";
+            On a machine with a GPU, install its vendor driver and the glvnd loader (libegl1). For a hidden window
+            instead of EGL, run under an X server, for example: xvfb-run -a ./openworld ...""";
 
     private static final String NO_DISPLAY = "No display found for the window";
     private static final String NO_DISPLAY_HINT = "render without one with 'openworld shot' or 'openworld bench', "
@@ -64,21 +88,46 @@ public final class GlContext implements AutoCloseable {
 
     private final long window;
     private final Mode mode;
+    private final String device;
+    private final Runnable release;
     private final GlObjects objects = new GlObjects();
     private final TextureMemory textureMemory = new TextureMemory();
-    private final GLFWErrorCallback errorCallback;
     private final GlDebug debug;
+    private List<String> tried = List.of();
 
-    private GlContext(long window, Mode mode, GLFWErrorCallback errorCallback) {
+    /**
+     * Takes a context already current on this thread.
+     *
+     * @param window    its GLFW window, or {@code NULL} for a device context
+     * @param functions where OpenGL's functions come from, or {@code null} for LWJGL's default
+     * @param release   what frees the context and whatever made it
+     */
+    GlContext(long window, Mode mode, String device, FunctionProvider functions, Runnable release) {
         this.window = window;
         this.mode = mode;
-        this.errorCallback = errorCallback;
-        glfwMakeContextCurrent(window);
+        this.device = device;
+        this.release = release;
+        loadGl(functions);
         GL.createCapabilities();
         this.debug = new GlDebug();
     }
 
-    /** A headless context: EGL on GLFW's null platform first, then a hidden window on an X display. */
+    /**
+     * Loads OpenGL's entry points for a new context. LWJGL keeps one set for the process, so a device context
+     * (functions from EGL) and a GLFW one after it (libGL) each load their own; LWJGL's loading at first use is off,
+     * since on a bare GPU server there is no libGL for it to find.
+     */
+    private static void loadGl(FunctionProvider functions) {
+        Configuration.OPENGL_EXPLICIT_INIT.set(true);
+        GL.destroy();
+        if (functions == null) {
+            GL.create();
+        } else {
+            GL.create(functions);
+        }
+    }
+
+    /** A headless context: every headless mode in order, the first that works. */
     public static GlContext headless() {
         return headless(false);
     }
@@ -89,22 +138,43 @@ public final class GlContext implements AutoCloseable {
      * @param debug a debug context, its driver messages printed on stderr ({@code --dev})
      */
     public static GlContext headless(boolean debug) {
+        return headless(HeadlessChoice.any(debug));
+    }
+
+    /**
+     * A headless context as the choice says: its modes in order, the first that works.
+     *
+     * @throws GlUnavailableException saying what every mode said: exit code 3 when none works, 2 when a forced mode
+     *                                or device is not on this machine
+     */
+    public static GlContext headless(HeadlessChoice choice) {
         List<String> tried = new ArrayList<>();
-        Attempt egl = tryCreate(Mode.HEADLESS_EGL, GLFW_PLATFORM_NULL, 64, 64, false, null, debug);
-        if (egl.context != null) {
-            return egl.context;
-        }
-        tried.add("headless-egl (GLFW null platform + EGL): " + egl.failure);
-        if (System.getenv("DISPLAY") != null) {
-            Attempt x11 = tryCreate(Mode.HEADLESS_X11, GLFW_PLATFORM_X11, 64, 64, false, null, debug);
-            if (x11.context != null) {
-                return x11.context;
+        for (Mode m : choice.modes()) {
+            Attempt attempt = attempt(m, choice);
+            if (attempt.context != null) {
+                attempt.context.tried = List.copyOf(tried);
+                return attempt.context;
             }
-            tried.add("headless-x11 (hidden window on DISPLAY=" + System.getenv("DISPLAY") + "): " + x11.failure);
-        } else {
-            tried.add("headless-x11: skipped, DISPLAY is not set");
+            tried.add(m + " (" + m.how + "): " + attempt.failure);
         }
-        throw unavailable(tried);
+        if (choice.mode() == null) {
+            throw unavailable(tried);
+        }
+        StringBuilder message = new StringBuilder("headless mode " + choice.mode() + " is not available here. "
+                + "What every headless mode said:\n");
+        choice.survey().forEach(line -> message.append("  - ").append(line).append('\n'));
+        throw new GlUnavailableException(message.toString().strip(), ExitCode.USER_MISTAKE);
+    }
+
+    static Attempt attempt(Mode m, HeadlessChoice choice) {
+        return switch (m) {
+            case HEADLESS_EGL_DEVICE -> EglDevice.attempt(choice);
+            case HEADLESS_EGL -> tryCreate(m, GLFW_PLATFORM_NULL, 64, 64, false, null, choice.debug());
+            case HEADLESS_X11 -> System.getenv("DISPLAY") == null
+                    ? new Attempt(null, "skipped, DISPLAY is not set")
+                    : tryCreate(m, GLFW_PLATFORM_X11, 64, 64, false, null, choice.debug());
+            case WINDOW -> throw new IllegalArgumentException("a window is not a headless mode");
+        };
     }
 
     /** A visible, resizable window with an OpenGL context. */
@@ -135,7 +205,8 @@ public final class GlContext implements AutoCloseable {
         return attempt.context;
     }
 
-    private record Attempt(GlContext context, String failure) {
+    /** A context, or why none was made. */
+    record Attempt(GlContext context, String failure) {
     }
 
     private static Attempt tryCreate(Mode mode, int platform, int width, int height, boolean visible, String title,
@@ -171,20 +242,35 @@ public final class GlContext implements AutoCloseable {
             }
             long window = glfwCreateWindow(width, height, title == null ? "OpenWorld" : title, NULL, NULL);
             if (window != NULL) {
-                GlContext context = new GlContext(window, mode, callback);
-                if (context.versionAtLeast(3, 3)) {
-                    if (debug) {
-                        context.debug.printMessages(System.err::println);
-                    }
-                    return new Attempt(context, null);
-                }
-                String got = context.version();
-                context.close();
-                return fail(callback, "got OpenGL " + got + ", older than 3.3 core");
+                glfwMakeContextCurrent(window);
+                GlContext context = new GlContext(window, mode, "", null, () -> {
+                    glfwDestroyWindow(window);
+                    glfwTerminate();
+                    glfwSetErrorCallback(null);
+                    callback.free();
+                });
+                String tooOld = context.tooOld(debug);
+                return tooOld == null ? new Attempt(context, null) : new Attempt(null, tooOld);
             }
         }
         glfwTerminate();
         return fail(callback, "no OpenGL 4.5 or 3.3 core context" + describe(errors));
+    }
+
+    /**
+     * Why this new context will not do (older than 3.3 core, and then closed), or {@code null} when it will; a debug
+     * context starts printing its driver's messages here.
+     */
+    String tooOld(boolean debugContext) {
+        if (versionAtLeast(3, 3)) {
+            if (debugContext) {
+                debug.printMessages(System.err::println);
+            }
+            return null;
+        }
+        String got = version();
+        close();
+        return "got OpenGL " + got + ", older than 3.3 core";
     }
 
     private static Attempt fail(GLFWErrorCallback callback, String why) {
@@ -230,7 +316,17 @@ public final class GlContext implements AutoCloseable {
         return mode;
     }
 
-    /** The native GLFW window handle (invisible for headless contexts). */
+    /** The EGL device the context is on ({@code 0: software renderer (...)}), or empty outside the device mode. */
+    public String device() {
+        return device;
+    }
+
+    /** What each headless mode tried before this one said, in order; empty when the first worked. */
+    public List<String> tried() {
+        return tried;
+    }
+
+    /** The native GLFW window handle (invisible for headless contexts), or {@code NULL} for a device context. */
     public long window() {
         return window;
     }
@@ -286,14 +382,11 @@ public final class GlContext implements AutoCloseable {
         glfwSwapBuffers(window);
     }
 
-    /** Destroys the window and ends GLFW; GL objects must have been closed before. */
+    /** Destroys the window and ends GLFW, or releases the device's context; GL objects must have been closed before. */
     @Override
     public void close() {
         debug.close();
         GL.setCapabilities(null);
-        glfwDestroyWindow(window);
-        glfwTerminate();
-        glfwSetErrorCallback(null);
-        errorCallback.free();
+        release.run();
     }
 }

@@ -9,13 +9,24 @@ import org.openworld.engine.failure.UserFacing;
  * line prints it without a stack trace.
  */
 public final class GlUnavailableException extends RuntimeException implements UserFacing {
+    private final ExitCode exitCode;
+
     public GlUnavailableException(String message) {
+        this(message, ExitCode.NO_OPENGL);
+    }
+
+    /**
+     * @param exitCode {@link ExitCode#USER_MISTAKE} where the user asked for what this machine does not have (a
+     *                 headless mode it lacks, a device number past its devices)
+     */
+    public GlUnavailableException(String message, ExitCode exitCode) {
         super(message);
+        this.exitCode = exitCode;
     }
 
     @Override
     public ExitCode exitCode() {
-        return ExitCode.NO_OPENGL;
+        return exitCode;
     }
 
     /** A report of several lines that starts with what failed, printed as it is. */
