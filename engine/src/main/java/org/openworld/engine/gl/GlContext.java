@@ -29,7 +29,7 @@ import org.openworld.engine.failure.ExitCode;
  * A headless context renders into framebuffer objects, never into a default framebuffer (the device mode has none).
  *
  * <p>OpenGL's functions are loaded for each new context from that context's own API: {@code eglGetProcAddress} for
- * a device context, LWJGL's default (libGL, else EGL) for a GLFW one ({@link #loadGl}).
+ * the two EGL modes, LWJGL's default (libGL's GLX, else EGL) for a window or a hidden X11 window ({@link #loadGl}).
  *
  * <p>A window needs a display: without one ({@code DISPLAY} and {@code WAYLAND_DISPLAY} unset, or GLFW unable to open
  * it) the error says "no display found" and offers the headless commands and {@code xvfb-run}; the advice to install
@@ -243,7 +243,9 @@ public final class GlContext implements AutoCloseable {
             long window = glfwCreateWindow(width, height, title == null ? "OpenWorld" : title, NULL, NULL);
             if (window != NULL) {
                 glfwMakeContextCurrent(window);
-                GlContext context = new GlContext(window, mode, "", null, () -> {
+                // an EGL context takes its functions from EGL, as a device context does: no libGL needed
+                FunctionProvider functions = mode == Mode.HEADLESS_EGL ? EglDevice.glFunctions() : null;
+                GlContext context = new GlContext(window, mode, "", functions, () -> {
                     glfwDestroyWindow(window);
                     glfwTerminate();
                     glfwSetErrorCallback(null);
