@@ -64,7 +64,7 @@ step() {
   nproc; free -m 2>&1; } >"$out/machine.txt"
 step info 60 "$openworld" info
 if ! grep -q "^renderer:" "$out/info.log"; then
-  JAVA_OPTS="-Dorg.lwjgl.util.Debug=true -Dorg.lwjgl.util.DebugLoader=true" step info-debug 60 "$openworld" info --dev
+  JAVA_OPTS="-Dorg.lwjgl.util.Debug=true -Dorg.lwjgl.util.DebugLoader=true" step info-debug 60 "$openworld" info
 fi
 
 # 2. The default shot.

@@ -5,8 +5,10 @@
  *
  * <ul>
  *   <li>{@link org.openworld.engine.gl.GlContext}: the one way to get a context: a window, or headless through
- *       GLFW's null platform with EGL, then a hidden X11 window; with {@code debug} ({@code --dev}) a debug context
- *       whose driver messages are printed on stderr.</li>
+ *       EGL's device platform ({@link org.openworld.engine.gl.EglDevice}: a surfaceless context on a GPU or Mesa's
+ *       software device, no display and no libGL), then GLFW's null platform with EGL, then a hidden X11 window,
+ *       or one of them as a {@link org.openworld.engine.gl.HeadlessChoice} says; with {@code debug}
+ *       ({@code --dev}) a debug context whose driver messages are printed on stderr.</li>
  *   <li>{@link org.openworld.engine.gl.GlTexture}: what every texture shares: name, target, size, one
  *       {@link org.openworld.engine.gl.Format} (the texel format, also {@link org.openworld.engine.gl.Framebuffer}'s)
  *       and one {@link org.openworld.engine.gl.Sampling} (filters and wrap, written once at creation). Its kinds:
