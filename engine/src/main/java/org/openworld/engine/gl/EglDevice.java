@@ -15,6 +15,7 @@ import static org.lwjgl.system.MemoryUtil.NULL;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.stream.Collectors;
 import org.lwjgl.PointerBuffer;
 import org.lwjgl.egl.EGL;
 import org.lwjgl.system.FunctionProvider;
@@ -121,7 +122,8 @@ final class EglDevice implements AutoCloseable {
             order = List.of(devices.get(choice.device()));
         } else {
             throw new GlUnavailableException("--gpu " + choice.device() + ": expected a device number 0 .. "
-                    + (devices.size() - 1) + "; EGL lists " + devices, ExitCode.USER_MISTAKE);
+                    + (devices.size() - 1) + "; EGL lists " + devices.stream().map(Device::toString).collect(Collectors.joining(", ")),
+                    ExitCode.USER_MISTAKE);
         }
         List<String> failures = new ArrayList<>();
         for (Device d : order) {

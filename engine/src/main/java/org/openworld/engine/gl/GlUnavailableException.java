@@ -29,9 +29,13 @@ public final class GlUnavailableException extends RuntimeException implements Us
         return exitCode;
     }
 
-    /** A report of several lines that starts with what failed, printed as it is. */
+    /**
+     * A report that starts with what failed, printed as it is; a user's one-line mistake (a device number past the
+     * list) as any other mistake, after the program's name.
+     */
     @Override
     public String userMessage(String program) {
-        return getMessage();
+        boolean oneLineMistake = exitCode == ExitCode.USER_MISTAKE && !getMessage().contains("\n");
+        return oneLineMistake ? UserFacing.super.userMessage(program) : getMessage();
     }
 }
