@@ -34,7 +34,8 @@ final class InfoCommand implements Callable<Integer> {
                 System.out.println("renderer:  " + gl.renderer());
                 System.out.println("vendor:    " + gl.vendor());
                 System.out.println("version:   " + gl.version());
-                System.out.println("context:   " + gl.mode() + (gl.device().isEmpty() ? "" : ", device " + gl.device()));
+                String device = gl.device().isEmpty() ? "" : ", device " + gl.device();
+                System.out.println("context:   " + gl.mode() + device);
                 gl.tried().forEach(line -> System.out.println("  before it: " + line));
             }
             System.out.println();

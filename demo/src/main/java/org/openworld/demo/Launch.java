@@ -85,7 +85,7 @@ final class Launch implements AutoCloseable {
         return start(options, window, vsync, false, title);
     }
 
-    /** As {@link #start(RenderOptions, boolean, String)}, on a context with a GLFW window for Dear ImGui ({@link Gui}). */
+    /** As {@link #start(RenderOptions, boolean, String)}, on a context with a GLFW window for Dear ImGui. */
     static Launch startWithGui(RenderOptions options, boolean window, String title) {
         return start(options, window, false, true, title);
     }

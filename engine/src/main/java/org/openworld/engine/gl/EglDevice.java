@@ -121,16 +121,22 @@ final class EglDevice implements AutoCloseable {
         } else if (choice.device() >= 0 && choice.device() < devices.size()) {
             order = List.of(devices.get(choice.device()));
         } else {
+            String listed = devices.stream().map(Device::toString).collect(Collectors.joining(", "));
             throw new GlUnavailableException("--gpu " + choice.device() + ": expected a device number 0 .. "
-                    + (devices.size() - 1) + "; EGL lists " + devices.stream().map(Device::toString).collect(Collectors.joining(", ")),
-                    ExitCode.USER_MISTAKE);
+                    + (devices.size() - 1) + "; EGL lists " + listed, ExitCode.USER_MISTAKE);
         }
         List<String> failures = new ArrayList<>();
         for (Device d : order) {
             try {
                 EglDevice egl = open(d, choice.debug());
-                GlContext context = new GlContext(NULL, GlContext.Mode.HEADLESS_EGL_DEVICE, d.toString(),
-                        glFunctions(), egl::close);
+                GlContext context;
+                try {
+                    context = new GlContext(NULL, GlContext.Mode.HEADLESS_EGL_DEVICE, d.toString(), glFunctions(),
+                            egl::close);
+                } catch (RuntimeException e) { // OpenGL's functions not found through EGL
+                    egl.close();
+                    throw new IllegalStateException("OpenGL through eglGetProcAddress: " + e.getMessage(), e);
+                }
                 String tooOld = context.tooOld(choice.debug());
                 if (tooOld == null) {
                     return new GlContext.Attempt(context, null);

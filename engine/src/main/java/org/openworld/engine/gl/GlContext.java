@@ -113,9 +113,9 @@ public final class GlContext implements AutoCloseable {
     }
 
     /**
-     * Loads OpenGL's entry points for a new context. LWJGL keeps one set for the process, so a device context
-     * (functions from EGL) and a GLFW one after it (libGL) each load their own; LWJGL's loading at first use is off,
-     * since on a bare GPU server there is no libGL for it to find.
+     * Loads OpenGL's entry points for a new context. LWJGL keeps one set for the process, so an EGL context
+     * (functions from EGL) and an X11 one after it (libGL's) each load their own; LWJGL's loading at first use is
+     * off, since on a bare GPU server there is no libGL for it to find.
      */
     private static void loadGl(FunctionProvider functions) {
         Configuration.OPENGL_EXPLICIT_INIT.set(true);
@@ -166,6 +166,7 @@ public final class GlContext implements AutoCloseable {
         throw new GlUnavailableException(message.toString().strip(), ExitCode.USER_MISTAKE);
     }
 
+    /** One headless mode, as the choice says (its device, debug): the context, or why there is none. */
     static Attempt attempt(Mode m, HeadlessChoice choice) {
         return switch (m) {
             case HEADLESS_EGL_DEVICE -> EglDevice.attempt(choice);

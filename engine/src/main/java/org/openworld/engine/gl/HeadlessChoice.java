@@ -84,7 +84,7 @@ public record HeadlessChoice(GlContext.Mode mode, int device, boolean debug, boo
         return lines;
     }
 
-    /** The devices EGL's device platform lists here, as {@code --gpu} numbers them, or the one line why there are none. */
+    /** The devices EGL's device platform lists here, as {@code --gpu} numbers them, or one line: why there are none. */
     public static List<String> devices() {
         try {
             return EglDevice.devices().stream().map(EglDevice.Device::toString).toList();

@@ -65,7 +65,7 @@ class HeadlessModesTest {
                 assertEquals(0, gl.objects().live(), "live GL objects in " + mode + ": " + gl.objects());
             }
         }
-        assertTrue(pictures.containsKey(GlContext.Mode.HEADLESS_EGL_DEVICE), "the device mode drew: " + pictures.keySet());
+        assertTrue(pictures.containsKey(GlContext.Mode.HEADLESS_EGL_DEVICE), "modes that drew: " + pictures.keySet());
         assertTrue(pictures.size() >= 2, "at least two modes to compare: " + pictures.keySet());
         Image first = pictures.get(GlContext.Mode.HEADLESS_EGL_DEVICE);
         assertTrue(first.meanLuma(0, 0, WIDTH, HEIGHT) > 20, "the device mode drew a picture, not black");
