@@ -18,7 +18,9 @@ java_home=$(dirname "$(dirname "$(readlink -f "$(command -v javac || command -v 
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 rm -rf "$out"; mkdir -p "$out/bin" "$out/lib/native" "$out/legal"
 
-# 1. The jar, less the natives of other systems (Windows, macOS, Linux on ARM): a third of its size.
+# 1. The jar, less the natives of other systems (Windows, macOS, Linux on ARM) and XChart's PDF and vector
+#    back-ends (PDFBox, FontBox, VectorGraphics2D: only its PDF and SVG encoders use them; our charts are PNG).
+#    Stored, not deflated: step 5's gzip packs the whole image tighter than zip packs each file.
 mkdir "$work/classes"
 (cd "$work/classes" && unzip -q "$jar" \
   && rm -rf windows macos linux/arm64 io/imgui/java/native-bin/*.dll io/imgui/java/native-bin/*.dylib \
@@ -34,7 +36,8 @@ found=$("$java_home/bin/jdeps" --multi-release 17 --ignore-missing-deps --print-
 modules=$(tr , '\n' <<<"$found" | grep -vx 'java.compiler\|java.sql' | paste -sd, -)
 echo "make-image: modules $modules (jdeps found $found)"
 
-# 3. The runtime: those modules, no debug symbols, headers or manual pages, compressed.
+# 3. The runtime: those modules, no debug symbols, headers or manual pages; uncompressed for the same reason as the
+#    jar, and faster to start.
 "$java_home/bin/jlink" --add-modules "$modules" --output "$out/runtime" \
   --strip-debug --no-header-files --no-man-pages --compress=0
 # java.desktop's natives for a screen, sound and a splash screen: a headless program never loads them.
