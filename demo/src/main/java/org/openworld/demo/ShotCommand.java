@@ -55,6 +55,7 @@ final class ShotCommand implements Callable<Integer> {
         long start = System.nanoTime();
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld shot")) {
             prepare(launch, Poses.still(pose, path, launch.engine.world()));
+            Poses.lifted(launch.engine.world()).ifPresent(line -> System.err.println("shot: " + line));
             if (ui) {
                 renderWithUi(launch);
             } else {
