@@ -2,8 +2,11 @@ package org.openworld.demo;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.openworld.engine.camera.CameraController;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.bench.BenchComparison;
@@ -14,6 +17,7 @@ import org.openworld.engine.bench.RunInfo;
 import org.openworld.engine.bench.Summary;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathParser;
+import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.gl.GpuMemoryInfo;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -118,6 +122,7 @@ final class BenchCommand implements Callable<Integer> {
                 }
             }
             engine.collectFrames(true, r -> keep(r, records));
+            reportLifted(records);
             RunInfo info = new RunInfo(launch.gl.renderer(), launch.gl.version(), launch.gl.mode().toString(),
                     engine.width(), engine.height(), engine.settings().get(EngineSettings.class).seed(),
                     engine.settings().asText(), path.toString(), warmup, profile);
@@ -137,6 +142,18 @@ final class BenchCommand implements Callable<Integer> {
                     + ", " + out.resolve(BenchReport.FRAMETIME_PNG));
         }
         return 0;
+    }
+
+    /** Says on the standard error how often and how far the director lifted the path's eye out of the ground. */
+    private static void reportLifted(List<FrameRecord> records) {
+        double[] lifts = records.stream().map(r -> r.counters().get(CameraSystem.LIFTED)).filter(m -> m != null)
+                .mapToDouble(Double::doubleValue).toArray();
+        if (lifts.length > 0) {
+            System.err.printf(Locale.ROOT, "bench: the path's eye is below the ground, or nearer it than the near plane "
+                    + "(%.1f m), in %d of %d frames: lifted there, by up to %.1f m (column %s of %s)%n",
+                    CameraController.MIN_CLEARANCE, lifts.length, records.size(), Arrays.stream(lifts).max().orElse(0),
+                    CameraSystem.LIFTED, BenchReport.FRAMES_CSV);
+        }
     }
 
     /**

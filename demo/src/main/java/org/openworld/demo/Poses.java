@@ -2,10 +2,15 @@ package org.openworld.demo;
 
 import java.util.Locale;
 import java.util.Optional;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraController;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPath;
 import org.openworld.engine.camera.CameraPathFormatException;
 import org.openworld.engine.camera.CameraPathParser;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.camera.CameraSystem;
+import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.World;
 
 /** Turns {@link PoseOptions} into a camera pose: an explicit {@code --camera}, a path moment, or the default view. */
@@ -47,6 +52,22 @@ final class Poses {
         }
         return path.map(p -> CameraDirection.hold(p, options.at()))
                 .orElse(CameraDirection.fixed(DemoScene.defaultPose(world)));
+    }
+
+    /**
+     * What the camera director did at this frame's update, if it lifted the eye out of the ground (a pose or a path
+     * below it; {@link CameraSystem#LIFTED}): one line saying where the eye is now.
+     */
+    static Optional<String> lifted(World world) {
+        Double metres = world.resource(Counters.class).snapshot().get(CameraSystem.LIFTED);
+        if (metres == null) {
+            return Optional.empty();
+        }
+        CameraPose eye = world.resource(Camera.class).pose();
+        double ground = eye.y() - CameraController.MIN_CLEARANCE;
+        return Optional.of(String.format(Locale.ROOT, "the eye at y=%.1f m is below the ground at x=%.1f, z=%.1f (%.1f m)"
+                + " or nearer it than the near plane (%.1f m): lifted to y=%.1f m", eye.y() - metres, eye.x(), eye.z(),
+                ground, CameraController.MIN_CLEARANCE, eye.y()));
     }
 
     /** Tells the world's camera director to follow {@code direction} from the next update on. */

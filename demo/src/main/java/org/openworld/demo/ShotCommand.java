@@ -56,6 +56,7 @@ final class ShotCommand implements Callable<Integer> {
         try (Launch launch = ui ? Launch.startWithGui(render, render.windowed(false), "OpenWorld shot")
                 : Launch.start(render, render.windowed(false), "OpenWorld shot")) {
             prepare(launch, Poses.still(pose, path, launch.engine.world()));
+            Poses.lifted(launch.engine.world()).ifPresent(line -> System.err.println("shot: " + line));
             if (ui) {
                 renderWithUi(launch);
             } else {

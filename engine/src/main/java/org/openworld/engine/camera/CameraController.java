@@ -38,7 +38,7 @@ import org.openworld.engine.core.HeightField;
  *       and to stop (feet stop a walker; nothing stops a flyer but air). The eye follows the ground:
  *       {@code y ← y_t + (y − y_t) · e^(−dt/τ_step)} with {@code y_t = h(x, z) + eyeHeight}, so a step in the
  *       ground eases in over about 3 τ_step instead of jolting the view, and {@code y} never drops below
- *       {@code h(x, z) + min(eyeHeight, MIN_CLEARANCE)}. {@code h} is the world's {@link HeightField}, flat at 0
+ *       {@code h(x, z) + MIN_CLEARANCE}, as the director keeps every eye ({@link CameraSystem}). {@code h} is the world's {@link HeightField}, flat at 0
  *       without one. Switching to walk (key V) therefore drops the camera to the ground, quickly but
  *       smoothly.</li>
  *   <li><b>Pose.</b> the new pose {@code (x, y, z, yaw, pitch, camera.fov)}, which the director writes into the {@link Camera}.</li>
@@ -139,7 +139,7 @@ public final class CameraController {
         double h = ground.heightAt(eye.x, eye.z);
         double target = h + s.eyeHeight();
         eye.y = target + (eye.y - target) * CameraMath.decayWithTimeConstant(s.stepSmoothing(), dt);
-        eye.y = Math.max(eye.y, h + Math.min(s.eyeHeight(), MIN_CLEARANCE));
+        eye.y = Math.max(eye.y, h + MIN_CLEARANCE);
     }
 
     /** The current movement mode. */

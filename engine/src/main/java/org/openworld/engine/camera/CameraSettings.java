@@ -39,7 +39,7 @@ public record CameraSettings(
         @Setting(doc = "arrow keys turn rate", unit = "deg/s", min = 1, max = 720) double turnSpeed,
         @Setting(doc = "walking speed", unit = "m/s", min = 0.1, max = 20) double walkSpeed,
         @Setting(doc = "walking speed factor while Shift is held (running)", min = 1, max = 10) double runFactor,
-        @Setting(doc = "eye height above the ground when walking", unit = "m", min = 0.2, max = 10) double eyeHeight,
+        @Setting(doc = "eye height above the ground when walking", unit = "m", min = 0.5, max = 10) double eyeHeight,
         @Setting(doc = "walk: time constant of the eye following the ground (0 = none)", unit = "s", min = 0, max = 1)
         double stepSmoothing,
         @Setting(doc = "movement mode at start; key V toggles") CameraMode mode) {

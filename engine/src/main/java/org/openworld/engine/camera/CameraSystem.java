@@ -1,6 +1,7 @@
 package org.openworld.engine.camera;
 
 import java.util.List;
+import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
@@ -19,7 +20,11 @@ import org.openworld.engine.settings.SettingsGroup;
  *       (a benchmark, the window's {@code --path}) or stands still (a shot of a path's moment);</li>
  *   <li>{@link CameraDirection.Fixed}: one pose ({@code shot --camera}, the figures).</li>
  * </ul>
- * A world without a direction is under the user's controls. Because it writes the camera, the frame order puts it
+ * A world without a direction is under the user's controls. Whatever the direction, the eye is kept
+ * {@link CameraController#MIN_CLEARANCE} above the ground under it: a fixed pose or a path may put it inside the
+ * relief, where the ground is seen from below, its back faces culled, and only the slopes turned towards the eye are
+ * drawn, as ribbons and arches of rock hanging in the air. A lifted eye is reported in the frame's counter
+ * {@link #LIFTED}, metres, so that a command can say so. Because it writes the camera, the frame order puts it
  * before every system that reads the camera (the sky's tables and aerial perspective, the terrain's tiles, the shadow
  * fit): whatever moves the camera, every system of a frame sees the same pose, the first frame included, and
  * {@code openworld info --frame} prints the order that really runs.
@@ -30,6 +35,9 @@ public final class CameraSystem implements EngineSystem {
 
     public static final SettingsGroup<CameraSettings> SETTINGS =
             SettingsGroup.of("camera", CameraSettings.class, CameraSettings.DEFAULTS);
+
+    /** The counter of a frame whose eye was lifted over the ground: by how many metres. */
+    public static final String LIFTED = "camera.lifted";
 
     /** Stands in for the input resource in headless runs, which have none. */
     private static final InputState NO_INPUT = new InputState();
@@ -78,9 +86,17 @@ public final class CameraSystem implements EngineSystem {
         }
 
         // 2. this update's pose, from the direction
-        camera.setPose(direction.pose(new CameraDirection.Cue(camera.pose(), updates++, step, ground, controller,
+        CameraPose pose = direction.pose(new CameraDirection.Cue(camera.pose(), updates++, step, ground, controller,
                 CameraControls.read(world.findResource(InputState.class).orElse(NO_INPUT)),
-                world.resource(Settings.class).get(CameraSettings.class))));
+                world.resource(Settings.class).get(CameraSettings.class)));
+
+        // 3. never inside the relief: the eye at least the near plane's distance above the ground
+        double floor = ground.heightAt(pose.x(), pose.z()) + CameraController.MIN_CLEARANCE;
+        if (pose.y() < floor) {
+            world.resource(Counters.class).put(LIFTED, floor - pose.y());
+            pose = new CameraPose(pose.x(), floor, pose.z(), pose.yaw(), pose.pitch(), pose.fov());
+        }
+        camera.setPose(pose);
     }
 
     /** The user's controls: their mode (fly or walk) and velocity, e.g. for a readout. */

@@ -48,10 +48,9 @@
  * </ul>
  * Every box reaches towards the sun beyond its slice as far as a caster can stand: the height span of everything the
  * culling system knows of, over the sine of the sun's elevation. Each box is a pass camera like any other, so the
- * culling system culls the casters against it, and the terrain picks their levels by its texel size: a caster's
- * height error may cover at most {@code lod.shadow-texel-error} texels, or it is as coarse as the viewer's own cut,
- * whichever is coarser (under {@code lod.rule=paper}: levels from the viewer's eye, {@code lod.shadow-coarsening}
- * levels coarser).
+ * culling system culls the casters against it, and the terrain draws them at the levels the viewer sees them at
+ * (the viewer's cut, so no caster stands above or below the ground that receives its shadow; under
+ * {@code lod.rule=paper}: levels from the viewer's eye, {@code lod.shadow-coarsening} levels coarser).
  *
  * <h2>Redrawing only what moved</h2>
  * A map holds depths seen through its box, and the stable fit moves a box by whole texels only: while the newly fitted

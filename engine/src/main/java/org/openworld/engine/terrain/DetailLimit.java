@@ -35,8 +35,8 @@ public sealed interface DetailLimit {
      * A bound on the projected error for a camera's projection and the pixels of its target. Seen through a
      * perspective projection, a height error e at distance D covers e · f / D pixels, where f = (H/2) / tan(fov/2)
      * = (H/2) · P₁₁ is the focal length in pixels (the smaller of the two axes' for a non-square view); through an
-     * orthographic one (the sun's shadow maps) it covers e / t pixels (texels), t = 2 / (P₁₁ · H) metres per texel,
-     * whatever the distance. The projection's bottom row tells the two apart: −1 in its third column for a
+     * orthographic one it covers e / t pixels, t = 2 / (P₁₁ · H) metres per pixel, whatever the distance (the sun's
+     * pass does not use it: its casters take the viewer's limit, {@link LodSettings#limit}). The projection's bottom row tells the two apart: −1 in its third column for a
      * perspective, 0 for an orthographic one. An oblique near plane (the water's reflection) changes only the third
      * row, so f stays the viewer's.
      *
@@ -48,27 +48,6 @@ public sealed interface DetailLimit {
         }
         double focal = Math.min(Math.abs(projection.m00()) * width, Math.abs(projection.m11()) * height) / 2;
         return new Projected(focal, projection.m23() != 0, pixels);
-    }
-
-    /**
-     * Fine enough by either limit: the coarser of the two cuts. The sun's pass uses it to draw a caster no finer than
-     * its cascade's texels need, nor finer than the viewer's own cut, which is what receives the shadow.
-     */
-    static DetailLimit either(DetailLimit first, DetailLimit second) {
-        return new Either(first, second);
-    }
-
-    /** Fine enough when the first or the second limit says so. */
-    record Either(DetailLimit first, DetailLimit second) implements DetailLimit {
-        @Override
-        public boolean fineEnough(int level, double error, double distance) {
-            return first.fineEnough(level, error, distance) || second.fineEnough(level, error, distance);
-        }
-
-        @Override
-        public double fineFrom(int level, double error) {
-            return Math.min(first.fineFrom(level, error), second.fineFrom(level, error));
-        }
     }
 
     /** The paper's distance rule with base resolution B, metres. */

@@ -6,8 +6,8 @@ package org.openworld.engine.terrain;
 public enum LodRule {
     /**
      * The projected geometric error: a node is drawn at its level once the largest height difference between its
-     * level and the finest one, seen from the pass's camera, covers at most {@code lod.pixel-error} pixels (or
-     * {@code lod.shadow-texel-error} texels of a shadow map). Triangles go where the relief shows.
+     * level and the finest one, seen from the pass's camera, covers at most {@code lod.pixel-error} pixels (the sun's
+     * pass takes the viewer's camera). Triangles go where the relief shows.
      */
     SCREEN_ERROR,
     /**

@@ -20,12 +20,10 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param pixelError     the screen-error rule's bound in the viewer's and the reflection's passes: a patch is drawn
  *                       at its level once its geometric error e, at the distance D of its box, covers at most this
  *                       many pixels, e · (H/2) / (tan(fov/2) · D) ≤ pixelError (H the target's height in pixels; the
- *                       reflection's half-resolution target halves its pixel count, and so its triangles, by itself)
- * @param shadowTexelError the screen-error rule's bound in the sun's shadow pass, in texels of each cascade's map:
- *                       e / t ≤ shadowTexelError with t the cascade's metres per texel, whatever the distance (the
- *                       light's view is orthographic), so a far cascade with big texels draws coarse casters; a
- *                       caster's error moves its shadow's edge by about that much. A caster is never drawn finer
- *                       than the viewer's own cut either: finer than the ground it shadows, it shadows that ground
+ *                       reflection's half-resolution target halves its pixel count, and so its triangles, by itself).
+ *                       The sun's pass cuts its casters by the viewer's bound, so that they are the very ground that
+ *                       receives their shadows: coarser casters stand above it in every hollow and shadow it there
+ *                       (the dark streaks of acne down a sunlit face), finer ones shadow it under every bump
  * @param baseResolution the paper rule's B in L = ⌊log2(D / B)⌋: the distance at which the terrain drops its first
  *                       level of detail. A patch of level L is drawn from B·2^L to B·2^(L+1) away with vertices
  *                       2^L samples apart, so a triangle edge subtends between Δ/(2B) and Δ/B radians at every level
@@ -53,8 +51,6 @@ public record LodSettings(
                 + "figure 6)") LodRule rule,
         @Setting(doc = "screen-error rule: most pixels a patch's height error may cover", unit = "px", min = 0.1,
                 max = 100) double pixelError,
-        @Setting(doc = "screen-error rule: most shadow-map texels a caster's height error may cover",
-                unit = "texels", min = 0.1, max = 100) double shadowTexelError,
         @Setting(doc = "paper rule: base resolution B, distance of the first level drop", unit = "m", min = 1,
                 max = 100000) double baseResolution,
         @Setting(doc = "level-of-detail scheme: QUADTREE or FLAT_GRID (the paper's, figure 6)") LodMode mode,
@@ -63,7 +59,7 @@ public record LodSettings(
         @Setting(doc = "paper rule: levels coarser in the sun's shadow pass", min = 0, max = 4) int shadowCoarsening,
         @Setting(doc = "geomorphing: vertices blend into the coarser level before a level change") boolean morph) {
 
-    public static final LodSettings DEFAULTS = new LodSettings(33, LodRule.SCREEN_ERROR, 6, 2, 128, LodMode.QUADTREE,
+    public static final LodSettings DEFAULTS = new LodSettings(33, LodRule.SCREEN_ERROR, 6, 128, LodMode.QUADTREE,
             1, 1, true);
 
     public static final SettingsGroup<LodSettings> SETTINGS = SettingsGroup.of("lod", LodSettings.class, DEFAULTS);
@@ -72,9 +68,8 @@ public record LodSettings(
         if (patchVertices != 33 && patchVertices != 65) {
             throw new IllegalArgumentException("patch vertices must be 33 or 65, got " + patchVertices);
         }
-        if (!(pixelError > 0) || !(shadowTexelError > 0)) {
-            throw new IllegalArgumentException("pixel and texel errors must be positive, got " + pixelError + ", "
-                    + shadowTexelError);
+        if (!(pixelError > 0)) {
+            throw new IllegalArgumentException("pixel error must be positive, got " + pixelError);
         }
         if (!(baseResolution > 0)) {
             throw new IllegalArgumentException("base resolution must be positive, got " + baseResolution);
@@ -86,14 +81,14 @@ public record LodSettings(
 
     /**
      * How fine the terrain must be in a pass drawn with a camera into a target of width × height pixels: by the
-     * paper's rule B of {@link #baseResolution(Pass)}; by the screen-error rule {@link #pixelError()} pixels, or
-     * {@link #shadowTexelError()} texels in the sun's pass.
+     * paper's rule B of {@link #baseResolution(Pass)}; by the screen-error rule {@link #pixelError()} pixels. Under
+     * the screen-error rule the sun's pass takes the viewer's limit, not its own box's: its casters are the ground
+     * the viewer sees ({@link TerrainSystem}).
      */
     public DetailLimit limit(Pass pass, ViewCamera camera, int width, int height) {
         return switch (rule) {
             case PAPER -> DetailLimit.paper(baseResolution(pass));
-            case SCREEN_ERROR -> DetailLimit.projected(camera.projection(), width, height,
-                    pass == Pass.SHADOW ? shadowTexelError : pixelError);
+            case SCREEN_ERROR -> DetailLimit.projected(camera.projection(), width, height, pixelError);
         };
     }
 

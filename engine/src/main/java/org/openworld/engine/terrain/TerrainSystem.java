@@ -227,16 +227,13 @@ public final class TerrainSystem implements EngineSystem {
         Visibility visibility = world.get(entity, Visibility.class)
                 .filter(v -> v.copies() * 2 == copyOffsets.length).orElse(null);
         // levels follow the pass's camera: its projection and pixels bound the screen error; distances are from its
-        // eye, in the sun's pass from the viewer's (a light box has none; its texels need no distance)
-        DetailLimit limit = lod.limit(pass, context.camera(), context.target().width(), context.target().height());
+        // eye. The sun's pass (a light box has no eye) cuts its casters from the viewer's eye and, under the screen
+        // error, by the viewer's own limit: they are then the very ground the viewer sees, and no caster finer than
+        // its receiver shadows it where it lies below, nor a coarser one where it stands above (acne)
+        PassView view = pass == Pass.SHADOW && lod.rule() == LodRule.SCREEN_ERROR ? world.resource(PassView.class)
+                : new PassView(context.camera(), context.target());
+        DetailLimit limit = lod.limit(pass, view.camera(), view.target().width(), view.target().height());
         Vector3fc eye = pass == Pass.SHADOW ? viewerEye(world) : context.camera().position();
-        if (pass == Pass.SHADOW && lod.rule() == LodRule.SCREEN_ERROR) {
-            // a caster need be no finer than its cascade's texels, nor than the ground the viewer sees it fall on:
-            // finer casters than receivers shadow the receivers themselves wherever those lie below them
-            PassView viewer = world.resource(PassView.class);
-            limit = DetailLimit.either(limit, lod.limit(Pass.MAIN, viewer.camera(), viewer.target().width(),
-                    viewer.target().height()));
-        }
         if (debug.freezeLod()) {
             frozenEye = frozenEye != null ? frozenEye : new Vector3f(eye);
             eye = frozenEye;

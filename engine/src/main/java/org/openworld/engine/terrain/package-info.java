@@ -61,12 +61,11 @@
  *       height| over its samples ({@link org.openworld.engine.terrain.GeometricError}, computed once from the
  *       pyramid), may cover at most {@code lod.pixel-error} pixels: {@code e · (H/2) / (tan(fov/2) · D) ≤ p} for a
  *       target H pixels high. Triangles go where the relief shows: flat ground stays coarse near the eye, ridges stay
- *       fine far off. The sun's orthographic pass counts texels instead, {@code e / t ≤ lod.shadow-texel-error} for
- *       t metres per texel, so a far cascade casts with coarse patches, and draws no caster finer than the viewer's
- *       own cut (a caster finer than the ground it shadows shadows that ground itself; one coarser darkens the
- *       ground's hollows, the specks of the paper rule's {@code lod.shadow-coarsening}). A low sun needs no finer
- *       casters: a height error δh moves its shadow on the ground by δh / tan(e) at sun elevation e, but the map sees
- *       the ground stretched by the same 1 / sin(e), so in its texels the shadow moves by δh · cos(e) / t ≤ δh / t.
+ *       fine far off. The sun's orthographic pass has no distance of its own: it cuts its casters from the viewer's
+ *       eye by the viewer's own limit, so that they are the very ground that receives their shadows (a caster finer
+ *       than that ground shadows it under every bump it keeps; one coarser stands above it in every hollow and
+ *       shadows it there: the specks of the paper rule's {@code lod.shadow-coarsening}, the dark streaks of acne
+ *       down a sunlit face).
  *       Cost: one pass over the samples per level when the world is built (about 0.2 s for 2048², with the boxes),
  *       one comparison per visited node per frame;</li>
  *   <li>the paper's {@code L_B(D) = ⌊log2(D/B)⌋} ({@link org.openworld.engine.terrain.LodRule#level}): a node is split

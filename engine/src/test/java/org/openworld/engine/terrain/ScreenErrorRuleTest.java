@@ -69,7 +69,7 @@ class ScreenErrorRuleTest {
     }
 
     /**
-     * The sun's pass: through an orthographic box the error is measured in texels, whatever the distance. Every patch
+     * Through an orthographic box the error is measured in the box's pixels (texels), whatever the distance. Every patch
      * stays within the texel bound; the cut does not move with the eye; and a cascade with bigger texels draws the
      * same ground with fewer, coarser patches, down to none at level 0 where the level-1 error fits in a texel.
      */
@@ -111,45 +111,6 @@ class ScreenErrorRuleTest {
             }
         }
         assertEquals(1, previousCount, "texels far bigger than the relief: the whole tile as one patch");
-    }
-
-    /**
-     * The sun's pass with the viewer's limit beside the texels' (as the terrain draws casters): every patch keeps
-     * one of the two bounds, measured here, and the cut is no finer than either rule's alone.
-     */
-    @Test
-    void aCasterIsNoFinerThanItsTexelsOrTheViewersGround() {
-        HeightPyramid pyramid = rough(256, 2, 11);
-        TerrainQuadtree tree = new TerrainQuadtree(pyramid, 16);
-        float[] offsets = {0, 0};
-        PatchSelection selection = new PatchSelection(tree);
-        PatchList patches = new PatchList();
-        Random random = new Random(29);
-        for (int trial = 0; trial < 20; trial++) {
-            Vector3f eye = new Vector3f((float) random.nextDouble(-256, 256), (float) random.nextDouble(0, 300),
-                    (float) random.nextDouble(-256, 256));
-            double fov = Math.toRadians(60);
-            int height = 360;
-            Matrix4f perspective = new Matrix4f().perspective((float) fov, 16f / 9, 0.5f, 40_000);
-            DetailLimit viewer = DetailLimit.projected(perspective, 640, height, 4);
-            double side = Math.pow(2, random.nextDouble(6, 12));
-            DetailLimit texels = DetailLimit.projected(new Matrix4f().ortho((float) (-side / 2), (float) (side / 2),
-                    (float) (-side / 2), (float) (side / 2), 0, 1000), 512, 512, 2);
-            selection.select(eye, offsets, viewer, LodMode.QUADTREE, null, patches);
-            int viewerCount = patches.size();
-            selection.select(eye, offsets, texels, LodMode.QUADTREE, null, patches);
-            int texelCount = patches.size();
-            selection.select(eye, offsets, DetailLimit.either(texels, viewer), LodMode.QUADTREE, null, patches);
-            assertTrue(patches.size() <= Math.min(viewerCount, texelCount), patches.size() + " patches, the viewer's "
-                    + "cut " + viewerCount + ", the texels' " + texelCount);
-            double focal = height / 2.0 / Math.tan(fov / 2);
-            for (int i = 0; i < patches.size(); i++) {
-                double px = worstPixels(pyramid, tree.cells(), patches, i, offsets, eye, focal, true);
-                double tx = worstPixels(pyramid, tree.cells(), patches, i, offsets, null, 512 / side, false);
-                assertTrue(px <= 4 * (1 + 1e-4) || tx <= 2 * (1 + 1e-4),
-                        "patch " + i + ": " + px + " px and " + tx + " texels");
-            }
-        }
     }
 
     /** Largest error of a node's own level over its samples, measured as in {@link #worstPixels} (texels of 1 m). */
