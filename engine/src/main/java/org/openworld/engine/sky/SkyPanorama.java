@@ -64,9 +64,10 @@ final class SkyPanorama {
         groundAlbedo = program.float1("uGroundAlbedo");
         cloudParams = program.vec4("cloudParams");
         cloudMotion = program.vec4("cloudMotion");
-        sky = context.own("panorama.sky", Texture2D.empty(context.gl(), 2 * SIZE, SIZE, Format.RGBA16F,
+        // full floats, as the sky's tables (SkySystem): the night's radiance is below a half float's normal range
+        sky = context.own("panorama.sky", Texture2D.empty(context.gl(), 2 * SIZE, SIZE, Format.RGBA32F,
                 Sampling.LINEAR_CLAMP));
-        clouds = context.own("panorama.clouds", Texture2D.empty(context.gl(), 2 * SIZE, SIZE, Format.RGBA16F,
+        clouds = context.own("panorama.clouds", Texture2D.empty(context.gl(), 2 * SIZE, SIZE, Format.RGBA32F,
                 Sampling.LINEAR_CLAMP));
         target = context.own("panorama", Framebuffer.onTextures(context.gl(), sky, clouds));
     }

@@ -156,10 +156,12 @@ public final class SkySystem implements EngineSystem {
         stars = new StarField(context, StarCatalogue.generate(seed));
         panorama = new SkyPanorama(context);
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
-        skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB16F,
+        // full floats: the twilight's and the night's radiance (10^-7 and less, display units) lies below a half
+        // float's normal range (6·10^-5), where it keeps a few bits or none
+        skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB32F,
                 Sampling.LINEAR_CLAMP));
         air = context.own("aerialPerspective", Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT,
-                AerialPerspective.DEPTH, Format.RGBA16F, Sampling.LINEAR_CLAMP, null));
+                AerialPerspective.DEPTH, Format.RGBA32F, Sampling.LINEAR_CLAMP, null));
         clouds = context.own("clouds", upload(gl, cloudField));
         environment = context.own("environment", CubeMapTexture.renderTarget(gl, ENVIRONMENT_SIZE));
         context.world().setResource(new SkyMaps(air, environment));
