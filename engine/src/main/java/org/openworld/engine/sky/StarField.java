@@ -1,7 +1,13 @@
 package org.openworld.engine.sky;
 
+import static org.lwjgl.opengl.GL11C.GL_FLOAT;
+import static org.lwjgl.opengl.GL11C.GL_POINTS;
+import static org.lwjgl.opengl.GL11C.glDrawArrays;
 import static org.lwjgl.opengl.GL15C.GL_ARRAY_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_STATIC_DRAW;
+import static org.lwjgl.opengl.GL20C.glEnableVertexAttribArray;
+import static org.lwjgl.opengl.GL20C.glVertexAttribPointer;
+import static org.lwjgl.opengl.GL30C.glBindVertexArray;
 
 import java.nio.FloatBuffer;
 import org.joml.Matrix3fc;
@@ -9,31 +15,31 @@ import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.GpuBuffer;
-import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.gl.VertexArray;
 
 /**
- * The stars of a {@link StarCatalogue}, drawn over the sky pass: each one pixel (a square of one pixel's side, one
- * instance per star, all in one draw), on the far plane and depth-tested as the sky is, so the terrain hides them.
+ * The stars of a {@link StarCatalogue}, drawn over the sky pass: each one pixel (a point of the default size, one
+ * vertex per star, all in one draw), on the far plane and depth-tested as the sky is, so the terrain hides them.
  * Its fragment shader ({@code sky/stars.frag}) draws the sky of that pixel again with the star on it: the star's light
  * over the pixel's solid angle, π·E / Ω, behind the clouds.
  *
  * <p>Skipped while the brightest star would show below {@link #VISIBLE} of white: by day, and in the twilight until
- * the sky darkens. Cost at night: 4600 squares of one pixel, well under a millisecond on llvmpipe.
+ * the sky darkens. Points rather than instanced squares of a pixel: on llvmpipe the vertex work is the cost (the
+ * rasteriser runs the vertex shader on the drawing thread), and a point is one vertex where a square is four.
  */
 final class StarField {
 
     /** Exposed light of the brightest star below which no star is drawn: about a quarter of an 8-bit level. */
     static final double VISIBLE = 1e-3;
-    /** The vertex attributes: a corner of the square, and per star its direction and light. */
-    private static final int CORNER = 0;
-    private static final int STAR = 1;
+    /** The vertex attribute: a star's direction and light. */
+    private static final int STAR = 0;
 
     private final ShaderProgram program;
     private final Uniform.Mat3 toWorld;
     private final NightUniforms night;
-    private final Mesh square;
+    private final VertexArray points;
     private final int count;
     private final double brightest;
 
@@ -43,10 +49,9 @@ final class StarField {
         program.sampler("cloudPanorama", 1);
         toWorld = program.mat3("uEquatorialToWorld");
         night = new NightUniforms(program);
-        square = context.own("starSquare", new Mesh(context.gl(), new float[] {-0.5f, -0.5f, 0.5f, -0.5f, 0.5f, 0.5f,
-                -0.5f, 0.5f}, new int[] {0, 1, 2, 0, 2, 3}, new Mesh.Attribute(CORNER, 2)));
         count = catalogue.count();
         brightest = catalogue.irradiance()[0];
+        points = context.own("starPoints", new VertexArray(context.gl()));
         GpuBuffer stars = context.own("stars", new GpuBuffer(context.gl(), GL_ARRAY_BUFFER));
         FloatBuffer data = MemoryUtil.memAllocFloat(4 * count);
         try {
@@ -57,7 +62,11 @@ final class StarField {
         } finally {
             MemoryUtil.memFree(data);
         }
-        square.instances(stars, 4, new Mesh.Attribute(STAR, 4));
+        points.bind();
+        stars.bind();
+        glEnableVertexAttribArray(STAR);
+        glVertexAttribPointer(STAR, 4, GL_FLOAT, false, 4 * Float.BYTES, 0);
+        glBindVertexArray(0);
     }
 
     /**
@@ -73,7 +82,10 @@ final class StarField {
         program.use();
         toWorld.set(equatorialToWorld);
         night.set(light);
-        square.drawInstances(0, count, stats);
+        points.bind();
+        glDrawArrays(GL_POINTS, 0, count);
+        glBindVertexArray(0);
+        stats.add(1, 0);
     }
 
     /** The night's uniforms of {@code sky/night.glsl}, in the sky's program and the stars'. */
