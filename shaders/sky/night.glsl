@@ -7,6 +7,7 @@
 
 uniform sampler2D skyPanorama;     // the sky behind the clouds, linear rgb; alpha: the cloud's density excess
 uniform sampler2D cloudPanorama;   // the clouds' colour, linear rgb; alpha: what the horizon fog leaves of them
+uniform float uPanoramaScale;      // both colours are stored times this (SkyPanorama.draw)
 uniform vec3 uNightSky;            // pi x the radiance of the moonless night sky (airglow), display units
 uniform vec3 uMoonDir;             // unit vector towards the moon, world space
 uniform vec3 uMoonDisc;            // pi x the radiance of the moon's lit part, display units
@@ -24,7 +25,7 @@ vec3 skyBehind(vec3 wsDir, out float cloudAlpha) {
     vec4 sky = textureLod(skyPanorama, uv, 0.0);
     vec4 cloud = textureLod(cloudPanorama, uv, 0.0);
     cloudAlpha = cloudOpacity(sky.a, cloud.a);
-    return mix(sky.rgb + uNightSky * step(0.0, wsDir.y), cloud.rgb, cloudAlpha);
+    return mix(sky.rgb / uPanoramaScale + uNightSky * step(0.0, wsDir.y), cloud.rgb / uPanoramaScale, cloudAlpha);
 }
 
 // The moon's disc in the unit direction wsDir: lit where its sphere faces the sun. The point of the sphere seen there

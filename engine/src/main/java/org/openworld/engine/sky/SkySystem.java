@@ -99,6 +99,8 @@ public final class SkySystem implements EngineSystem {
     private final Vector3f panoramaSun = new Vector3f();
     private CloudSettings panoramaClouds;
     private double panoramaAlbedo = Double.NaN;
+    /** What the panorama's radiance is multiplied by: 1 / the ground's light when it was drawn (SkyPanorama#draw). */
+    private float panoramaScale = 1;
     /** The sky's light for any normal, and the tables, ground albedo and sun it was projected for. */
     private SkyIrradiance irradiance;
     private SunTables irradianceTables;
@@ -157,11 +159,11 @@ public final class SkySystem implements EngineSystem {
         panorama = new SkyPanorama(context);
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
         // full floats: the twilight's and the night's radiance (10^-7 and less, display units) lies below a half
-        // float's normal range (6·10^-5), where it keeps a few bits or none
+        // float's normal range (6·10^-5), where it keeps a few bits or none; read only when the panorama is drawn
         skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB32F,
                 Sampling.LINEAR_CLAMP));
         air = context.own("aerialPerspective", Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT,
-                AerialPerspective.DEPTH, Format.RGBA32F, Sampling.LINEAR_CLAMP, null));
+                AerialPerspective.DEPTH, Format.RGBA16F, Sampling.LINEAR_CLAMP, null));
         clouds = context.own("clouds", upload(gl, cloudField));
         environment = context.own("environment", CubeMapTexture.renderTarget(gl, ENVIRONMENT_SIZE));
         context.world().setResource(new SkyMaps(air, environment));
@@ -246,7 +248,9 @@ public final class SkySystem implements EngineSystem {
         skyView.bind(SkyPanorama.UNIT_VIEW);
         clouds.bind(SkyPanorama.UNIT_CLOUDS);
         air.bind(SkyPanorama.UNIT_AIR);
-        panorama.draw(sun, tables.altitude(), albedo, c.cloudParams(threshold, new Vector4f()),
+        Vector3f ground = new Vector3f(sun.color()).mul(Math.max(sun.direction().y(), 0)).add(sun.ambient());
+        panoramaScale = (float) (1 / Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT));
+        panorama.draw(sun, tables.altitude(), albedo, panoramaScale, c.cloudParams(threshold, new Vector4f()),
                 c.cloudMotion(simTime, new Vector4f()), fullScreen, updateDraws);
         // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
         // has a depth buffer, so the depth test passes whatever its state)
@@ -254,7 +258,7 @@ public final class SkySystem implements EngineSystem {
         panorama.sky().bind(0);
         panorama.clouds().bind(1);
         cubeFace.set(1);
-        nightUniforms.set(night);
+        nightUniforms.set(night, panoramaScale);
         environment.render(face -> {
             faceAxes.set(CubeMapTexture.faceAxes(face));
             fullScreen.draw(updateDraws);
@@ -312,7 +316,7 @@ public final class SkySystem implements EngineSystem {
         panorama.clouds().bind(1);
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
-        nightUniforms.set(night);
+        nightUniforms.set(night, panoramaScale);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(false);
@@ -322,7 +326,8 @@ public final class SkySystem implements EngineSystem {
         if (stars.visible(context.world().resource(Exposure.class).scale(), pixel)) {
             SkySettings s = context.world().resource(Settings.class).get(SkySettings.class);
             double hours = context.world().resource(TimeOfDay.class).hours();
-            stars.draw(MoonPosition.equatorialToLocal(hours, s.latitude(), s.declination()), night, context.stats());
+            stars.draw(MoonPosition.equatorialToLocal(hours, s.latitude(), s.declination()), night, panoramaScale,
+                    context.stats());
         }
         glDepthMask(true);
         glDepthFunc(GL_LESS);

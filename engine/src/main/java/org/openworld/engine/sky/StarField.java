@@ -78,30 +78,33 @@ final class StarField {
     }
 
     /** Draws the stars turned by {@code equatorialToWorld}; the sky pass's depth state and panorama are bound. */
-    void draw(Matrix3fc equatorialToWorld, NightLight light, DrawStats stats) {
+    void draw(Matrix3fc equatorialToWorld, NightLight light, float panoramaScale, DrawStats stats) {
         program.use();
         toWorld.set(equatorialToWorld);
-        night.set(light);
+        night.set(light, panoramaScale);
         points.bind();
         glDrawArrays(GL_POINTS, 0, count);
         glBindVertexArray(0);
         stats.add(1, 0);
     }
 
-    /** The night's uniforms of {@code sky/night.glsl}, in the sky's program and the stars'. */
+    /** The uniforms of {@code sky/night.glsl}, in the sky's program and the stars'. */
     static final class NightUniforms {
+        private final Uniform.Float scale;
         private final Uniform.Vec3 sky;
         private final Uniform.Vec3 moonDir;
         private final Uniform.Vec3 moonDisc;
 
         NightUniforms(ShaderProgram program) {
+            scale = program.float1("uPanoramaScale");
             sky = program.vec3("uNightSky");
             moonDir = program.vec3("uMoonDir");
             moonDisc = program.vec3("uMoonDisc");
         }
 
-        /** Sets them in the program in use. */
-        void set(NightLight light) {
+        /** Sets them in the program in use, with the scale the panorama was drawn at (SkyPanorama#draw). */
+        void set(NightLight light, float panoramaScale) {
+            scale.set(panoramaScale);
             sky.set((float) light.sky().x, (float) light.sky().y, (float) light.sky().z);
             moonDir.set(light.moonDirection());
             moonDisc.set((float) light.moonDisc().x, (float) light.moonDisc().y, (float) light.moonDisc().z);

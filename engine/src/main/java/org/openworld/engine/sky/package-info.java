@@ -56,8 +56,8 @@
  * of radiance from the lower hemisphere, whose irradiance is exactly that times π(1 − n_y)/2; re-projected when the
  * tables change or the sun moves 0.1°, about 4600 table reads). The GPU only looks them up. Units throughout are
  * display units, 1 = a white surface facing the sun above the atmosphere; an automatic exposure adapts to the light
- * of the moment. The tables and the panorama hold full floats: the night's radiance (10⁻⁹ to 10⁻⁶) is below a half
- * float's normal range.
+ * of the moment. The night's radiance (10⁻⁹ to 10⁻⁶) is below a half float's normal range (6·10⁻⁵): the dome
+ * table holds full floats, and the panorama its radiance relative to the light on the ground.
  *
  * <p><b>Twilight and night.</b> From sunset to a moonless night the light on the ground falls by ten decades.
  * {@link org.openworld.engine.sky.Adaptation} shows a white surface in the light E at B = max(√E, 0.075 · E^0.03):
