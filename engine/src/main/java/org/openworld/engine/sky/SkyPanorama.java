@@ -76,8 +76,8 @@ final class SkyPanorama {
     /**
      * Draws the panorama for a sun and its light, the eye's altitude and the clouds of the moment, with the tables
      * already bound to {@link #UNIT_VIEW}, {@link #UNIT_CLOUDS} and {@link #UNIT_AIR}; leaves the framebuffer and the
-     * viewport as they were. The colours are stored times {@code scale} (1 / the light on the ground, display units):
-     * the night's radiance, 10⁻⁹ of the sun's, lies far below a half float's normal range (6·10⁻⁵), where it keeps a
+     * viewport as they were. The colours are stored times {@code scale} (after sunset 1 / the light on the ground,
+     * display units): the night's radiance, 10⁻⁹ of the sun's, lies far below a half float's normal range (6·10⁻⁵), where it keeps a
      * few bits or none, and relative to the ground's light every hour's sky is within it. Readers divide
      * ({@code sky/night.glsl}).
      */

@@ -99,6 +99,12 @@ public final class SkySystem implements EngineSystem {
     private final Vector3f panoramaSun = new Vector3f();
     private CloudSettings panoramaClouds;
     private double panoramaAlbedo = Double.NaN;
+    /**
+     * Ground light (display units) below which the panorama is stored relative to it: above, with the sun higher than
+     * about 3° below the horizon, the sky is within a half float's normal range as it is, and stored unscaled, so no
+     * daylight picture changes.
+     */
+    static final double PANORAMA_SCALED_BELOW = 1e-3;
     /** What the panorama's radiance is multiplied by: 1 / the ground's light when it was drawn (SkyPanorama#draw). */
     private float panoramaScale = 1;
     /** The sky's light for any normal, and the tables, ground albedo and sun it was projected for. */
@@ -249,7 +255,8 @@ public final class SkySystem implements EngineSystem {
         clouds.bind(SkyPanorama.UNIT_CLOUDS);
         air.bind(SkyPanorama.UNIT_AIR);
         Vector3f ground = new Vector3f(sun.color()).mul(Math.max(sun.direction().y(), 0)).add(sun.ambient());
-        panoramaScale = (float) (1 / Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT));
+        double light = Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT);
+        panoramaScale = light < PANORAMA_SCALED_BELOW ? (float) (1 / light) : 1;
         panorama.draw(sun, tables.altitude(), albedo, panoramaScale, c.cloudParams(threshold, new Vector4f()),
                 c.cloudMotion(simTime, new Vector4f()), fullScreen, updateDraws);
         // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
