@@ -20,7 +20,8 @@ layout(std140) uniform FrameBlock {
     vec4 sunDirFar;       // xyz: unit vector towards the sun, world space; w: far plane (m)
     vec4 sunColor;        // rgb: direct sunlight at the eye, display units (1 = the sun above the atmosphere)
     vec4 ambientColor;    // rgb: sky light on an upward surface, display units
-    vec4 exposure;        // x: scene (display units, 1 = white under the sun above the air) -> tone mapper input; yzw: 0
+    vec4 exposure;        // x: scene (display units, 1 = white under the sun above the air) -> tone mapper input;
+                          // y: the rods' share of vision, 0 by day .. 1 at night (the Purkinje shift); zw: 0
     vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
     vec4 viewerPos;       // xyz: the viewer's eye, world space (m), the same in every pass; w: 0

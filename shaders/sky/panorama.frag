@@ -20,6 +20,9 @@ uniform vec3 uSunColor;        // direct sunlight at the eye, display units
 uniform vec3 uAmbientColor;    // sky light on an upward surface, display units
 uniform float uAltitude;       // the eye's altitude the tables were made for, metres
 uniform float uGroundAlbedo;   // the ground seen below the horizon (AtmosphereSettings.groundAlbedo)
+uniform float uScale;          // the colours are stored times this, 1 / the ground's light (SkyPanorama.draw): the
+                               // night's radiance is below a half float's normal range, the night's sky relative to
+                               // its light is not
 
 // Below the horizon, beyond all terrain: level ground at sea level lit by the sun and the sky, seen through the air
 // (the SkyView table already holds the light scattered in on the way; this adds the ground's own, transmitted).
@@ -40,6 +43,6 @@ void main() {
     vec3 level = normalize(vec3(wsDir.x, 0.0, wsDir.z) + vec3(1e-6, 0.0, 0.0));
     vec3 horizon = texture(skyView, skyViewUv(level, uSunDir)).rgb;
     Cloud cloud = cloudAlong(wsDir, uSunDir, uSunColor, uAmbientColor, horizon);
-    skyExcess = vec4(sky, cloud.excess);
-    cloudTransmittance = vec4(cloud.color, cloud.transmittance);
+    skyExcess = vec4(sky * uScale, cloud.excess);
+    cloudTransmittance = vec4(cloud.color * uScale, cloud.transmittance);
 }

@@ -1,19 +1,16 @@
 #version 330 core
 // The sky (paper 2.3 and 3.1) read from the panorama (sky/panorama.frag) with one lookup per pixel. Drawn twice: on
 // the camera's far plane after the opaque systems, depth-tested, so only the pixels no surface covers are shaded
-// (exposed and tone-mapped, with the sun's disc); and into the six faces of the environment map (linear, no sun
-// disc: glossy surfaces add the sun's highlight themselves, and a disc smaller than a texel would only flicker).
-// Engine: org.openworld.engine.sky.SkySystem.
+// (exposed and tone-mapped, with the sun's and the moon's discs); and into the six faces of the environment map
+// (linear, no discs: glossy surfaces add the sun's highlight themselves, and a disc smaller than a texel would only
+// flicker). Engine: org.openworld.engine.sky.SkySystem.
 #include "common/frame.glsl"
 #include "common/color.glsl"
-#include "sky/clouds.glsl"
-#include "sky/panorama.glsl"
+#include "sky/night.glsl"
 
 in vec3 wsRay;
 out vec4 fragColor;
 
-uniform sampler2D skyPanorama;     // the sky behind the clouds, linear rgb; alpha: the cloud's density excess
-uniform sampler2D cloudPanorama;   // the clouds' colour, linear rgb; alpha: what the horizon fog leaves of them
 uniform int uCubeFace;             // 0: the camera's view; 1: a face of the environment map (sky.vert)
 uniform float uSunDisc;            // 1: draw the sun's disc; 0 in the water's reflection, whose shader adds the sun's
                                    // glitter on the ripples itself (the disc's mirror image would count it twice)
@@ -39,17 +36,13 @@ vec3 sunDisc(vec3 wsDir) {
 
 void main() {
     vec3 wsDir = normalize(wsRay);
-    // textureLod: the panorama has no mip levels, and an explicit level spares the rasteriser the derivatives
-    vec2 uv = panoramaUv(wsDir, vec2(textureSize(skyPanorama, 0)));
-    vec4 sky = textureLod(skyPanorama, uv, 0.0);
-    vec4 cloud = textureLod(cloudPanorama, uv, 0.0);
-    float alpha = cloudOpacity(sky.a, cloud.a);
-    vec3 radiance = mix(sky.rgb, cloud.rgb, alpha);
+    float alpha;
+    vec3 radiance = skyBehind(wsDir, alpha);
     if (uCubeFace == 1) {
         fragColor = vec4(radiance, 1.0);
         return;
     }
-    // the disc behind the clouds, and none below the horizon (the distant ground)
-    radiance += uSunDisc * step(0.0, wsDir.y) * (1.0 - alpha) * sunDisc(wsDir);
+    // the discs behind the clouds, and none below the horizon (the distant ground)
+    radiance += (1.0 - alpha) * (uSunDisc * step(0.0, wsDir.y) * sunDisc(wsDir) + moonDisc(wsDir));
     fragColor = vec4(displayColor(radiance), 1.0);
 }

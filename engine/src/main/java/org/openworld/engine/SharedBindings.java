@@ -70,7 +70,7 @@ final class SharedBindings {
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
                 camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
-                exposure.scale(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
+                exposure.scale(), exposure.scotopic(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
                 view.target().height(), viewer.camera().position(), sun.sky().shaderFactors());
     }
 

@@ -32,6 +32,8 @@ public enum Format {
     RGBA16F(GL_RGBA16F, GL_RGBA, GL_FLOAT, 8),
     /** Two 32-bit signed integers per texel, read with texelFetch from an integer sampler, e.g. a pair of indices. */
     RG32I(GL_RG32I, GL_RG_INTEGER, GL_INT, 8),
+    /** Three full floats per texel: radiance over the night's range, below what a half float holds (6·10⁻⁵). */
+    RGB32F(GL_RGB32F, GL_RGB, GL_FLOAT, 12),
     /** Four full floats per texel: values read back exactly (a probe of positions). */
     RGBA32F(GL_RGBA32F, GL_RGBA, GL_FLOAT, 16),
     /** 24-bit depth and an 8-bit stencil: the scene's depth, with the water's stencil marks. */

@@ -40,7 +40,7 @@ public final class FrameUniforms implements Labelled {
      *                  (frame.glsl's skyIrradiance; environment.SkyIrradiance#shaderFactors)
      */
     public record Values(Matrix4f view, Matrix4f projection, Vector3fc cameraPos, float near, float far,
-                         Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure,
+                         Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure, float scotopic,
                          double simTime, double timeOfDayHours, long frame,
                          int width, int height, Vector3fc viewerPos,
                          Vector3fc[] sky) {
@@ -68,7 +68,7 @@ public final class FrameUniforms implements Labelled {
         o = vec4(o, v.sunDir().x(), v.sunDir().y(), v.sunDir().z(), v.far());
         o = vec4(o, v.sunColor().x(), v.sunColor().y(), v.sunColor().z(), 0);
         o = vec4(o, v.ambient().x(), v.ambient().y(), v.ambient().z(), 0);
-        o = vec4(o, v.exposure(), 0, 0, 0);
+        o = vec4(o, v.exposure(), v.scotopic(), 0, 0);
         o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
         o = vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
         o = vec4(o, v.viewerPos().x(), v.viewerPos().y(), v.viewerPos().z(), 0);

@@ -60,9 +60,11 @@ public final class SkyLight {
      * of reflectance {@code groundAlbedo}, as {@link SkyIrradiance}: the upper hemisphere by the midpoint rule on
      * {@value #IRRADIANCE_AZIMUTHS} × {@value #IRRADIANCE_ELEVATIONS} directions (each azimuth from the sun's plane
      * counted on both sides of it), the ground in closed form, and the light of the terrain where it hides the sky
-     * (SkyIrradiance#hiddenBy). A few thousand table reads: run when the sun moved.
+     * (SkyIrradiance#hiddenBy), and the night's light: the moon as one more direction, the night sky as a uniform
+     * upper hemisphere, both lighting the ground too. A few thousand table reads: run when the sun moved.
      */
-    public static SkyIrradiance irradiance(SkyView view, SkyLight light, Vector3fc toSun, double groundAlbedo) {
+    public static SkyIrradiance irradiance(SkyView view, SkyLight light, Vector3fc toSun, double groundAlbedo,
+                                           NightLight night) {
         Vector3d toward = new Vector3d(toSun.x(), 0, toSun.z());
         if (toward.lengthSquared() < 1e-12) {
             toward.set(1, 0, 0); // the sun overhead: the sky is the same all round, any azimuth will do
@@ -87,7 +89,11 @@ public final class SkyLight {
                 }
             }
         }
-        Vector3d sunOnGround = light.sun().mul(Math.max(toSun.y(), 0));
+        if (night.moonDirection().y() > 0) {
+            sky.add(new Vector3d(night.moonDirection()), night.moon(), 1); // a direction: L dω is its irradiance
+        }
+        sky.addUpperHemisphere(new Vector3d(night.sky()).div(Math.PI));
+        Vector3d sunOnGround = light.sun().mul(Math.max(toSun.y(), 0)).add(night.onLevelGround());
         Vector3d ground = new Vector3d(sunOnGround).add(light.ambient()).mul(groundAlbedo / Math.PI);
         // the terrain that hides the sky from a place faces that place; seen from all round, half of it faces the
         // sun: so its light is the open ground's with half the sun's (SkyVisibility, the hidden share)
@@ -95,7 +101,11 @@ public final class SkyLight {
         return sky.addLowerHemisphere(ground).hiddenBy(hidden);
     }
 
-    private static Vector3d sunlight(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
+    /**
+     * Light from a body of the sun's size at {@code sunElevationRad} through the air to the eye, for a body of the
+     * sun's light above the air: the transmittance times the part of its disc above the horizon.
+     */
+    static Vector3d sunlight(AtmosphereTables t, double sunElevationRad, double cameraAltitudeM) {
         double r = SkyIntegrator.eyeRadius(cameraAltitudeM);
         double horizonCos = -Math.sqrt(Math.max(1 - Math.pow(Atmosphere.BOTTOM_RADIUS / r, 2), 0));
         double horizonElevation = Math.asin(horizonCos);

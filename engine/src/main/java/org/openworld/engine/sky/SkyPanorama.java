@@ -48,6 +48,7 @@ final class SkyPanorama {
     private final Uniform.Vec3 ambientColor;
     private final Uniform.Float altitude;
     private final Uniform.Float groundAlbedo;
+    private final Uniform.Float radianceScale;
     private final Uniform.Vec4 cloudParams;
     private final Uniform.Vec4 cloudMotion;
 
@@ -62,6 +63,7 @@ final class SkyPanorama {
         ambientColor = program.vec3("uAmbientColor");
         altitude = program.float1("uAltitude");
         groundAlbedo = program.float1("uGroundAlbedo");
+        radianceScale = program.float1("uScale");
         cloudParams = program.vec4("cloudParams");
         cloudMotion = program.vec4("cloudMotion");
         sky = context.own("panorama.sky", Texture2D.empty(context.gl(), 2 * SIZE, SIZE, Format.RGBA16F,
@@ -74,10 +76,13 @@ final class SkyPanorama {
     /**
      * Draws the panorama for a sun and its light, the eye's altitude and the clouds of the moment, with the tables
      * already bound to {@link #UNIT_VIEW}, {@link #UNIT_CLOUDS} and {@link #UNIT_AIR}; leaves the framebuffer and the
-     * viewport as they were.
+     * viewport as they were. The colours are stored times {@code scale} (after sunset 1 / the light on the ground,
+     * display units): the night's radiance, 10⁻⁹ of the sun's, lies far below a half float's normal range (6·10⁻⁵), where it keeps a
+     * few bits or none, and relative to the ground's light every hour's sky is within it. Readers divide
+     * ({@code sky/night.glsl}).
      */
-    void draw(Sun sun, double altitudeM, double albedo, Vector4fc clouds, Vector4fc motion, Mesh fullScreen,
-              DrawStats stats) {
+    void draw(Sun sun, double altitudeM, double albedo, float scale, Vector4fc clouds, Vector4fc motion,
+              Mesh fullScreen, DrawStats stats) {
         int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
         int[] viewport = new int[4];
         glGetIntegerv(GL_VIEWPORT, viewport);
@@ -88,6 +93,7 @@ final class SkyPanorama {
         ambientColor.set(sun.ambient());
         altitude.set((float) altitudeM);
         groundAlbedo.set((float) albedo);
+        radianceScale.set(scale);
         cloudParams.set(clouds);
         cloudMotion.set(motion);
         target.bind(); // no depth buffer: the depth test passes whatever its state

@@ -44,9 +44,9 @@ public final class SkyReference {
      */
     public static double displayedZenith(AtmosphereTables t, SkySettings sky, double sunElevationRad,
                                          double cameraAltitudeM) {
-        SkyLight light = sky.autoExposure() ? SunTables.build(t, sunElevationRad, cameraAltitudeM).light() : null;
-        return zenithLuminance(t, sunElevationRad, cameraAltitudeM)
-                * SkySystem.exposure(light, Math.sin(sunElevationRad), sky.exposure());
+        SkyLight light = SunTables.build(t, sunElevationRad, cameraAltitudeM).light();
+        Vector3d ground = light.sun().mul(Math.max(Math.sin(sunElevationRad), 0)).add(light.ambient());
+        return zenithLuminance(t, sunElevationRad, cameraAltitudeM) * SkySystem.exposure(sky, ground).scale();
     }
 
     /** Angle between the horizontal projections of two directions, [0, π]; 0 when either is vertical. */

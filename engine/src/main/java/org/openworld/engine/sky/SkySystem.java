@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import org.joml.Matrix4fc;
 import org.joml.Vector3d;
 import org.joml.Vector3f;
 import org.joml.Vector4f;
@@ -80,15 +81,6 @@ public final class SkySystem implements EngineSystem {
      * sun jumped (a new time was set) instead of drifting with the day cycle.
      */
     static final int JUMP_STEPS = 4;
-    /**
-     * Automatic exposure, as an eye adapts but not all the way: {@code exposure = KEY / max(E, E_MIN)^ADAPTATION}
-     * with E the luminance of the light on the ground (sun on level ground plus sky), display units. KEY makes the
-     * noon world look as bright as a white surface in sunlight should; ADAPTATION &lt; 1 lets dusk be darker than
-     * noon while staying readable; E_MIN stops the night from being lifted into day.
-     */
-    static final double EXPOSURE_KEY = 1.0;
-    static final double EXPOSURE_ADAPTATION = 0.5;
-    static final double EXPOSURE_MIN_LIGHT = 2e-4;
 
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "sky-tables");
@@ -107,11 +99,24 @@ public final class SkySystem implements EngineSystem {
     private final Vector3f panoramaSun = new Vector3f();
     private CloudSettings panoramaClouds;
     private double panoramaAlbedo = Double.NaN;
+    /**
+     * Ground light (display units) below which the panorama is stored relative to it: above, with the sun higher than
+     * about 3° below the horizon, the sky is within a half float's normal range as it is, and stored unscaled, so no
+     * daylight picture changes.
+     */
+    static final double PANORAMA_SCALED_BELOW = 1e-3;
+    /** What the panorama's radiance is multiplied by: 1 / the ground's light when it was drawn (SkyPanorama#draw). */
+    private float panoramaScale = 1;
     /** The sky's light for any normal, and the tables, ground albedo and sun it was projected for. */
     private SkyIrradiance irradiance;
     private SunTables irradianceTables;
     private double irradianceAlbedo = Double.NaN;
     private final Vector3f irradianceSun = new Vector3f();
+    private double irradianceMoonAge = Double.NaN;
+    /** The night's light of this step, for the discs and the stars the passes draw. */
+    private NightLight night;
+    private StarField stars;
+    private StarField.NightUniforms nightUniforms;
     /** The panorama's draws, made in the update, outside any frame's counts. */
     private final DrawStats updateDraws = new DrawStats();
 
@@ -155,9 +160,13 @@ public final class SkySystem implements EngineSystem {
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
         sunDisc = program.float1("uSunDisc");
+        nightUniforms = new StarField.NightUniforms(program);
+        stars = new StarField(context, StarCatalogue.generate(seed));
         panorama = new SkyPanorama(context);
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
-        skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB16F,
+        // full floats: the twilight's and the night's radiance (10^-7 and less, display units) lies below a half
+        // float's normal range (6·10^-5), where it keeps a few bits or none; read only when the panorama is drawn
+        skyView = context.own("view", Texture2D.empty(gl, SkyView.WIDTH, SkyView.HEIGHT, Format.RGB32F,
                 Sampling.LINEAR_CLAMP));
         air = context.own("aerialPerspective", Texture3D.of(gl, AerialPerspective.WIDTH, AerialPerspective.HEIGHT,
                 AerialPerspective.DEPTH, Format.RGBA16F, Sampling.LINEAR_CLAMP, null));
@@ -205,16 +214,19 @@ public final class SkySystem implements EngineSystem {
         }
         stepped |= step > 0;
         SkyLight light = tables.light();
+        night = NightLight.of(tables.atmosphere(), s, hours, altitude);
         double albedo = atmosphere.groundAlbedo();
-        if (irradianceTables != tables || irradianceAlbedo != albedo
+        if (irradianceTables != tables || irradianceAlbedo != albedo || irradianceMoonAge != s.moonAge()
                 || toSun.angle(irradianceSun) >= PANORAMA_SUN_STEP) {
-            irradiance = SkyLight.irradiance(tables.view(), light, toSun, albedo);
+            irradiance = SkyLight.irradiance(tables.view(), light, toSun, albedo, night);
             irradianceTables = tables;
             irradianceAlbedo = albedo;
+            irradianceMoonAge = s.moonAge();
             irradianceSun.set(toSun);
         }
-        world.setResource(new Sun(toSun, vector(light.sun()), vector(light.ambient()), irradiance));
-        world.setResource(new Exposure(exposure(s.autoExposure() ? light : null, toSun.y, s.exposure())));
+        Vector3d ambient = light.ambient().add(night.onLevelGround());
+        world.setResource(new Sun(toSun, vector(light.sun()), vector(ambient), irradiance));
+        world.setResource(exposure(s, light.sun().mul(Math.max(toSun.y, 0)).add(ambient)));
         world.setResource(new Wind(settings.get(CloudSettings.class).windVelocity(new Vector3f())));
         refresh(settings, world.resource(Sun.class), counters);
     }
@@ -242,7 +254,10 @@ public final class SkySystem implements EngineSystem {
         skyView.bind(SkyPanorama.UNIT_VIEW);
         clouds.bind(SkyPanorama.UNIT_CLOUDS);
         air.bind(SkyPanorama.UNIT_AIR);
-        panorama.draw(sun, tables.altitude(), albedo, c.cloudParams(threshold, new Vector4f()),
+        Vector3f ground = new Vector3f(sun.color()).mul(Math.max(sun.direction().y(), 0)).add(sun.ambient());
+        double light = Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT);
+        panoramaScale = light < PANORAMA_SCALED_BELOW ? (float) (1 / light) : 1;
+        panorama.draw(sun, tables.altitude(), albedo, panoramaScale, c.cloudParams(threshold, new Vector4f()),
                 c.cloudMotion(simTime, new Vector4f()), fullScreen, updateDraws);
         // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
         // has a depth buffer, so the depth test passes whatever its state)
@@ -250,6 +265,7 @@ public final class SkySystem implements EngineSystem {
         panorama.sky().bind(0);
         panorama.clouds().bind(1);
         cubeFace.set(1);
+        nightUniforms.set(night, panoramaScale);
         environment.render(face -> {
             faceAxes.set(CubeMapTexture.faceAxes(face));
             fullScreen.draw(updateDraws);
@@ -283,17 +299,16 @@ public final class SkySystem implements EngineSystem {
     }
 
     /**
-     * The exposure for the light of the moment (see {@link #EXPOSURE_KEY}), or noon's ({@code EXPOSURE_KEY}: the
-     * light of a high sun is about 1) when {@code light} is null, times the user's compensation.
+     * The exposure for the light on level ground {@code ground} (display units) by {@link Adaptation}'s law and its
+     * Purkinje shift; with {@code sky.auto-exposure} off, noon's (1: the light of a high sun is about 1) and no shift.
+     * Times the user's compensation either way.
      */
-    static float exposure(SkyLight light, double sunSine, double compensationEv) {
-        double auto = EXPOSURE_KEY;
-        if (light != null) {
-            Vector3d ground = new Vector3d(light.sun()).mul(Math.max(sunSine, 0)).add(light.ambient());
-            double luminance = 0.2126 * ground.x + 0.7152 * ground.y + 0.0722 * ground.z;
-            auto = EXPOSURE_KEY / Math.pow(Math.max(luminance, EXPOSURE_MIN_LIGHT), EXPOSURE_ADAPTATION);
+    static Exposure exposure(SkySettings s, Vector3d ground) {
+        if (!s.autoExposure()) {
+            return new Exposure((float) Adaptation.exposure(1, s.exposure()));
         }
-        return (float) (auto * Math.pow(2, compensationEv));
+        double e = Adaptation.luminance(ground);
+        return new Exposure((float) Adaptation.exposure(e, s.exposure()), (float) Adaptation.scotopicShare(e));
     }
 
     private static Vector3f vector(Vector3d v) {
@@ -308,10 +323,19 @@ public final class SkySystem implements EngineSystem {
         panorama.clouds().bind(1);
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
+        nightUniforms.set(night, panoramaScale);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(false);
         fullScreen.draw(context.stats());
+        Matrix4fc projection = context.camera().projection();
+        double pixel = 4.0 / (projection.m00() * projection.m11() * context.target().width() * context.target().height());
+        if (stars.visible(context.world().resource(Exposure.class).scale(), pixel)) {
+            SkySettings s = context.world().resource(Settings.class).get(SkySettings.class);
+            double hours = context.world().resource(TimeOfDay.class).hours();
+            stars.draw(MoonPosition.equatorialToLocal(hours, s.latitude(), s.declination()), night, panoramaScale,
+                    context.stats());
+        }
         glDepthMask(true);
         glDepthFunc(GL_LESS);
     }

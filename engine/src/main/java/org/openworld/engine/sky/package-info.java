@@ -56,7 +56,20 @@
  * of radiance from the lower hemisphere, whose irradiance is exactly that times π(1 − n_y)/2; re-projected when the
  * tables change or the sun moves 0.1°, about 4600 table reads). The GPU only looks them up. Units throughout are
  * display units, 1 = a white surface facing the sun above the atmosphere; an automatic exposure adapts to the light
- * of the moment.
+ * of the moment. The night's radiance (10⁻⁹ to 10⁻⁶) is below a half float's normal range (6·10⁻⁵): the dome
+ * table holds full floats, and the panorama its radiance relative to the light on the ground.
+ *
+ * <p><b>Twilight and night.</b> From sunset to a moonless night the light on the ground falls by ten decades.
+ * {@link org.openworld.engine.sky.Adaptation} shows a white surface in the light E at B = max(√E, 0.075 · E^0.03):
+ * the day's square root down to the sun 1° below the horizon, then a night floor that falls by only 0.93 per decade,
+ * and shifts the colours towards the rods' grey-blue as they take over (the Purkinje shift of Jensen et al. 2001,
+ * in {@code shaders/common/color.glsl}). {@link org.openworld.engine.sky.NightLight} adds the night's light to the
+ * sky's, on the ground through the same harmonics: the airglow of a moonless sky (21.6 mag/arcsec²), the moon
+ * ({@link org.openworld.engine.sky.MoonPosition}: on the ecliptic at the elongation of its age, its light by Allen's
+ * magnitude law, its disc lit where it faces the sun) and the moonlit sky. 4570 stars
+ * ({@link org.openworld.engine.sky.StarCatalogue}, synthesised on the star-count law log N(&lt;m) = 0.6 + 0.51 m)
+ * are drawn one pixel each over the sky ({@link org.openworld.engine.sky.StarField}) when they would show. Cost: none
+ * by day; at night the stars' one draw and the shift's few operations per pixel (docs/sky.md, "Twilight and night").
  *
  * <p><b>Clouds</b> (paper 2.3). {@link org.openworld.engine.sky.CloudField}: random phases with amplitude 1/f over
  * two axes of space and one of time, one inverse 3D DFT: a density that tiles in space and loops in time. Mapped
@@ -83,7 +96,7 @@
  * under the fog) are averaged rather than aliased, and clouds move in steps of half a second, about a pixel overhead.
  *
  * <p><b>Limits.</b> The clouds are a flat, single-scattering layer with no volume and no shadows on the ground; the
- * ground albedo is one grey; there is no moon or stars, so the night is only dim; and the tables assume the eye at
- * the altitude they were built for, rebuilt every 100 m of climb.
+ * ground albedo is one grey; the moon casts no shadows and has no glow around it, the stars no colours; and the
+ * tables assume the eye at the altitude they were built for, rebuilt every 100 m of climb.
  */
 package org.openworld.engine.sky;

@@ -100,7 +100,7 @@ class FrameUniformsTest {
         Vector3f sunDir = new Vector3f(0.3f, 0.5f, -0.8f).normalize();
         Vector3f sunColor = new Vector3f(1.2f, 0.9f, 0.6f);
         Vector3f ambient = new Vector3f(0.25f, 0.35f, 0.45f);
-        Exposure exposure = new Exposure(3.25f);
+        Exposure exposure = new Exposure(3.25f, 0.375f);
         double hours = 15.25;
         int updates = 6;
 
@@ -133,7 +133,7 @@ class FrameUniformsTest {
                 Camera.FAR / 40000);
         assertColumn(image, 3, sunColor.x * 0.5f, sunColor.y * 0.5f, sunColor.z * 0.5f, 1);
         assertColumn(image, 4, ambient.x, ambient.y, ambient.z, 1);
-        assertColumn(image, 5, exposure.scale() / 8, 0, 0, 1);
+        assertColumn(image, 5, exposure.scale() / 8, exposure.scotopic(), 0, 1);
         assertColumn(image, 6, (float) (simTime * 5), (float) hours / 24, 1 / 8f, 1);
         float ndcX = expectedNdc.x * 0.5f + 0.5f;
         float ndcY = expectedNdc.y * 0.5f + 0.5f;

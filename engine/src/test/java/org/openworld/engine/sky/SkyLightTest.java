@@ -13,6 +13,10 @@ import org.openworld.engine.environment.Sun;
 
 class SkyLightTest {
 
+    /** No moon above the horizon and a black night sky: the sun's and the day sky's light alone. */
+    static final NightLight NO_NIGHT = new NightLight(new Vector3f(0, -1, 0), new Vector3d(), new Vector3d(),
+            new Vector3d());
+
     private static final double ALTITUDE = 200;
     private static AtmosphereTables tables;
 
@@ -72,11 +76,11 @@ class SkyLightTest {
         SkyLight light = SkyLight.of(tables, view, elevation, ALTITUDE);
         float c = (float) Math.cos(elevation);
         float s = (float) Math.sin(elevation);
-        SkyIrradiance east = SkyLight.irradiance(view, light, new Vector3f(c, s, 0), 0.3);
-        SkyIrradiance north = SkyLight.irradiance(view, light, new Vector3f(0, s, -c), 0.3);
+        SkyIrradiance east = SkyLight.irradiance(view, light, new Vector3f(c, s, 0), 0.3, NO_NIGHT);
+        SkyIrradiance north = SkyLight.irradiance(view, light, new Vector3f(0, s, -c), 0.3, NO_NIGHT);
         double up = luminance(east.irradiance(new Vector3d(0, 1, 0), new Vector3d()));
         assertEquals(luminance(light.ambient()), up, 0.06 * up, "facing up");
-        SkyIrradiance skyOnly = SkyLight.irradiance(view, light, new Vector3f(c, s, 0), 0);
+        SkyIrradiance skyOnly = SkyLight.irradiance(view, light, new Vector3f(c, s, 0), 0, NO_NIGHT);
         double towards = luminance(skyOnly.irradiance(new Vector3d(1, 0, 0), new Vector3d()));
         double away = luminance(skyOnly.irradiance(new Vector3d(-1, 0, 0), new Vector3d()));
         assertTrue(towards > 1.15 * away, "sky light on a wall facing the sun " + towards + ", facing away " + away);

@@ -49,7 +49,7 @@ class TwilightTest {
         // --preset paper), the default adapted to the light of the moment, which lifts its twilight 5 to 6 stops
         AtmosphereTables paper = AtmosphereTables.build(PAPER);
         AtmosphereTables defaults = AtmosphereTables.build(AtmosphereSettings.DEFAULTS);
-        SkySettings fixed = new SkySettings(46, 10, 0, false);
+        SkySettings fixed = new SkySettings(46, 10, 0, false, 3);
         for (double sunDeg : new double[] {-2, -4}) {
             double sun = Math.toRadians(sunDeg);
             double shown = SkyReference.displayedZenith(paper, fixed, sun, SkyPicture.EYE_ALTITUDE_M);
