@@ -3,6 +3,7 @@ package org.openworld.engine.gl;
 import static org.lwjgl.egl.EGL10.*;
 import static org.lwjgl.egl.EGL14.EGL_OPENGL_API;
 import static org.lwjgl.egl.EGL12.eglBindAPI;
+import static org.lwjgl.egl.EGL12.eglReleaseThread;
 import static org.lwjgl.egl.EGL14.EGL_OPENGL_BIT;
 import static org.lwjgl.egl.EGL15.*;
 import static org.lwjgl.egl.EXTDeviceBase.eglQueryDeviceStringEXT;
@@ -238,11 +239,28 @@ final class EglDevice implements AutoCloseable {
         return egl::getFunctionAddress;
     }
 
-    /** Releases the context and the display; the device itself belongs to the driver. */
+    /**
+     * Releases the context and the display, then this thread's EGL state; the device itself belongs to the driver.
+     * In EGL's order: nothing current, the context destroyed, the display terminated, and {@link #releaseThread}.
+     * The EGL library itself stays loaded: LWJGL's {@code EGL} loads it at first use and keeps it for the process's
+     * life (nothing here calls {@code EGL.destroy}), so neither this nor GLFW's {@code glfwTerminate}, which closes
+     * its own handle on it, can unload it under a driver thread.
+     */
     @Override
     public void close() {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display, context);
         eglTerminate(display);
+        releaseThread();
+    }
+
+    /**
+     * {@code eglReleaseThread}: frees the calling thread's EGL state (its current API, its last error), which
+     * {@code eglTerminate} leaves alone. GLFW does not call it, so its EGL mode calls this after
+     * {@code glfwTerminate}. Cost: one call. On NVIDIA it is part of the careful release tried against the driver's
+     * crash at exit, not yet seen to matter there ({@link ProcessExit}).
+     */
+    static void releaseThread() {
+        eglReleaseThread();
     }
 }
