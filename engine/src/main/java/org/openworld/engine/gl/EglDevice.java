@@ -29,7 +29,7 @@ import org.openworld.engine.failure.ExitCode;
  * glvnd loader) and a vendor's EGL behind it.
  *
  * <p>The calls, in order: {@code eglQueryDevicesEXT} lists the devices ({@code EGL_EXT_device_enumeration}, or
- * {@code EGL_EXT_device_base} as older drivers name it: {@link #lacks});
+ * {@code EGL_EXT_device_base}, the older name that includes it: {@link #lacks});
  * {@code eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device)} opens one as a display
  * ({@code EGL_EXT_platform_device}); {@code eglCreateContext} makes an OpenGL 4.5 (else 3.3) core context, made
  * current with no surface at all ({@code EGL_KHR_surfaceless_context}), so everything is drawn into the engine's
@@ -94,7 +94,7 @@ final class EglDevice implements AutoCloseable {
     /**
      * What the device mode needs of EGL's client extensions, or {@code null} when it has it: a way to list the
      * devices, {@code EGL_EXT_device_enumeration} or the older {@code EGL_EXT_device_base} (which the Khronos registry
-     * defines as enumeration and query together, and which NVIDIA's driver has advertised), and
+     * defines as enumeration and query together, and which drivers still advertise), and
      * {@code EGL_EXT_platform_device} to open one as a display. The answer names exactly what is missing and lists
      * what the EGL did report, so that a driver that words it differently can be told from one that lacks it.
      *
