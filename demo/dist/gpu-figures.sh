@@ -13,7 +13,9 @@
 # assets/paths/crossing.path at 1920x1080 and 3840x2160 with the default, ultra and low presets; bench on the peer's
 # four views (its imported map and camera circle, set as ../shared/peer/compare.sh sets them: terrain, shadows, water,
 # all) at 1920x1080. Each bench folder has summary.json: the GPU time per pass and system (timer queries,
-# passGpuMsMedian), the CPU time per system (systemCpuMsMedian), frame times, triangles and draw calls.
+# passGpuMsMedian), the CPU time per system (systemCpuMsMedian), frame times, triangles and draw calls; at the end
+# OUT_DIR/figures.tsv has one line per bench (demo/dist/gpu-table.py --tsv, where the machine has python3). Unless
+# QUICK=1, the run stops after info when info names no renderer or a software one (llvmpipe): no GPU, no figures.
 set -uo pipefail
 out=${1:?usage: gpu-figures.sh OUT_DIR}
 image=${IMAGE:-demo/target/openworld-linux.tar.gz}
@@ -67,6 +69,14 @@ if ! grep -q "^renderer:" "$out/info.log"; then
   JAVA_OPTS="-Dorg.lwjgl.util.Debug=true -Dorg.lwjgl.util.DebugLoader=true" step info-debug 60 "$openworld" info
 fi
 
+if [ "${QUICK:-0}" != 1 ]; then
+  renderer=$(grep -h "^renderer:" "$out/info.log" "$out/info-debug.log" 2>/dev/null | head -1)
+  if [ -z "$renderer" ] || grep -qiE "llvmpipe|softpipe|swrast|software" <<<"$renderer"; then
+    echo "gpu-figures: stopping after info: ${renderer:-no renderer} is not a GPU (see $out/info.log)" >&2
+    exit 1
+  fi
+fi
+
 # 2. The default shot.
 step shot "$shot_s" "$openworld" shot --out "$out/shot-$hd.png" --size "$hd"
 
@@ -97,5 +107,11 @@ for view in terrain shadows water all; do
     --frames "$peer_frames" --warmup "$warmup" --time 09:00 --out "$out/bench-peer-$view-$hd" \
     "${same[@]}" --set terrain.sea-fraction="$sea" "${set_view[@]}"
 done
+
+# 5. The figures at a glance, one line per bench.
+here=$(dirname "$0")
+if command -v python3 >/dev/null; then
+  python3 "$here/gpu-table.py" --tsv "$out" >"$out/figures.tsv" || echo "gpu-figures: no figures.tsv" >&2
+fi
 
 echo "gpu-figures: done in $((SECONDS - start)) s; steps in $out/steps.tsv"

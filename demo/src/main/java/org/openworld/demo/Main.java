@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Set;
 import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.failure.UserFacing;
+import org.openworld.engine.gl.ProcessExit;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -34,7 +35,7 @@ public final class Main {
     private static final double BYTES_PER_GIB = 1024 * BYTES_PER_MIB;
 
     public static void main(String[] args) {
-        System.exit(execute(args));
+        ProcessExit.exit(execute(args));
     }
 
     /** Runs the command line and returns the exit code (tests call this). */

@@ -3,6 +3,7 @@ package org.openworld.engine.gl;
 import static org.lwjgl.egl.EGL10.*;
 import static org.lwjgl.egl.EGL14.EGL_OPENGL_API;
 import static org.lwjgl.egl.EGL12.eglBindAPI;
+import static org.lwjgl.egl.EGL12.eglReleaseThread;
 import static org.lwjgl.egl.EGL14.EGL_OPENGL_BIT;
 import static org.lwjgl.egl.EGL15.*;
 import static org.lwjgl.egl.EXTDeviceBase.eglQueryDeviceStringEXT;
@@ -27,7 +28,8 @@ import org.openworld.engine.failure.ExitCode;
  * mode of {@link GlContext}, which needs no display, no window system and no libGL, only {@code libEGL.so.1} (the
  * glvnd loader) and a vendor's EGL behind it.
  *
- * <p>The calls, in order: {@code eglQueryDevicesEXT} lists the devices ({@code EGL_EXT_device_enumeration});
+ * <p>The calls, in order: {@code eglQueryDevicesEXT} lists the devices ({@code EGL_EXT_device_enumeration}, or
+ * {@code EGL_EXT_device_base}, the older name that includes it: {@link #lacks});
  * {@code eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device)} opens one as a display
  * ({@code EGL_EXT_platform_device}); {@code eglCreateContext} makes an OpenGL 4.5 (else 3.3) core context, made
  * current with no surface at all ({@code EGL_KHR_surfaceless_context}), so everything is drawn into the engine's
@@ -44,6 +46,9 @@ final class EglDevice implements AutoCloseable {
     /** Mesa's device extension for its software rasteriser: what tells llvmpipe from a GPU before any context. */
     private static final String SOFTWARE = "EGL_MESA_device_software";
     private static final String DRM = "EGL_EXT_device_drm";
+    private static final String ENUMERATION = "EGL_EXT_device_enumeration";
+    private static final String BASE = "EGL_EXT_device_base";
+    private static final String PLATFORM = "EGL_EXT_platform_device";
 
     /** One device: its place in EGL's list, the handle, and what it says it is. */
     record Device(int index, long handle, String description, boolean software) {
@@ -67,9 +72,9 @@ final class EglDevice implements AutoCloseable {
      * @throws IllegalStateException naming what is missing: libEGL, or the client extensions the mode needs
      */
     static List<Device> devices() {
-        List<String> client = List.of(clientExtensions().split(" "));
-        if (!client.contains("EGL_EXT_device_enumeration") || !client.contains("EGL_EXT_platform_device")) {
-            throw new IllegalStateException("this EGL lacks EGL_EXT_device_enumeration or EGL_EXT_platform_device");
+        String lacks = lacks(clientExtensions());
+        if (lacks != null) {
+            throw new IllegalStateException(lacks);
         }
         try (MemoryStack stack = MemoryStack.stackPush()) {
             var count = stack.mallocInt(1);
@@ -87,12 +92,39 @@ final class EglDevice implements AutoCloseable {
     }
 
     /**
+     * What the device mode needs of EGL's client extensions, or {@code null} when it has it: a way to list the
+     * devices, {@code EGL_EXT_device_enumeration} or the older {@code EGL_EXT_device_base} (which the Khronos registry
+     * defines as enumeration and query together, and which drivers still advertise), and
+     * {@code EGL_EXT_platform_device} to open one as a display. The answer names exactly what is missing and lists
+     * what the EGL did report, so that a driver that words it differently can be told from one that lacks it.
+     *
+     * @param clientExtensions {@code eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS)}, space-separated
+     */
+    static String lacks(String clientExtensions) {
+        List<String> client = clientExtensions == null ? List.of()
+                : List.of(clientExtensions.trim().split("\\s+"));
+        List<String> missing = new ArrayList<>();
+        if (!client.contains(ENUMERATION) && !client.contains(BASE)) {
+            missing.add(ENUMERATION + " (or " + BASE + ")");
+        }
+        if (!client.contains(PLATFORM)) {
+            missing.add(PLATFORM);
+        }
+        if (missing.isEmpty()) {
+            return null;
+        }
+        String reported = clientExtensions == null || clientExtensions.isBlank() ? "none"
+                : String.join(" ", client);
+        return "this EGL lacks " + String.join(" and ", missing) + "; its client extensions: " + reported;
+    }
+
+    /**
      * EGL's client extensions ({@code eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS)}), which LWJGL's client
      * capabilities do not parse.
      */
     private static String clientExtensions() {
         try {
-            return String.valueOf(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS));
+            return eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
         } catch (LinkageError | RuntimeException e) {
             throw new IllegalStateException("libEGL could not be loaded (" + e.getMessage() + ")");
         }
@@ -207,11 +239,28 @@ final class EglDevice implements AutoCloseable {
         return egl::getFunctionAddress;
     }
 
-    /** Releases the context and the display; the device itself belongs to the driver. */
+    /**
+     * Releases the context and the display, then this thread's EGL state; the device itself belongs to the driver.
+     * In EGL's order: nothing current, the context destroyed, the display terminated, and {@link #releaseThread}.
+     * The EGL library itself stays loaded: LWJGL's {@code EGL} loads it at first use and keeps it for the process's
+     * life (nothing here calls {@code EGL.destroy}), so neither this nor GLFW's {@code glfwTerminate}, which closes
+     * its own handle on it, can unload it under a driver thread.
+     */
     @Override
     public void close() {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display, context);
         eglTerminate(display);
+        releaseThread();
+    }
+
+    /**
+     * {@code eglReleaseThread}: frees the calling thread's EGL state (its current API, its last error), which
+     * {@code eglTerminate} leaves alone. GLFW does not call it, so its EGL mode calls this after
+     * {@code glfwTerminate}. Cost: one call. On NVIDIA it is part of the careful release tried against the driver's
+     * crash at exit, not yet seen to matter there ({@link ProcessExit}).
+     */
+    static void releaseThread() {
+        eglReleaseThread();
     }
 }

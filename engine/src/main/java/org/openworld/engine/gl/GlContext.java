@@ -110,6 +110,7 @@ public final class GlContext implements AutoCloseable {
         loadGl(functions);
         GL.createCapabilities();
         this.debug = new GlDebug();
+        ProcessExit.madeContext(mode, vendor());
     }
 
     /**
@@ -249,6 +250,9 @@ public final class GlContext implements AutoCloseable {
                 GlContext context = new GlContext(window, mode, "", functions, () -> {
                     glfwDestroyWindow(window);
                     glfwTerminate();
+                    if (mode == Mode.HEADLESS_EGL) {
+                        EglDevice.releaseThread();
+                    }
                     glfwSetErrorCallback(null);
                     callback.free();
                 });
