@@ -94,7 +94,8 @@ void main() {
     relief *= smoothstep(WINDOW_FADE.x, WINDOW_FADE.y, min(inWindow.x, inWindow.y));
     farRelief = relief;
 #endif
-    float y = mix(uMeanHeight, level, relief);
+    // (a texel never written holds NaN, UnboundedWorld, and NaN times a zero weight is still NaN: a hole)
+    float y = relief > 0.0 && !isnan(level) ? mix(uMeanHeight, level, relief) : uMeanHeight;
     // 3. under the drawn patches the ring goes down out of their way
     float inside = uSquare.z - max(abs(xz.x - uSquare.x), abs(xz.y - uSquare.y));
     y -= SKIRT_SLOPE * max(inside, 0.0);
@@ -109,8 +110,8 @@ void main() {
     vec2 uv = xz / extent + 0.5;
     float texels = uSampleSpacing / extent * float(textureSize(farSlope, 0).x);
     vec2 slope = relief * textureLod(farSlope, uv, log2(texels)).ba;
-    float visible = mix(1.0, textureLod(snowMap, uv, log2(uSampleSpacing / extent * float(textureSize(snowMap, 0).x))).g,
-                        relief);
+    float snowTexels = uSampleSpacing / extent * float(textureSize(snowMap, 0).x);
+    float visible = mix(1.0, textureLod(snowMap, uv, log2(snowTexels)).g, relief);
 #endif
     vec3 normal = normalize(vec3(-slope.x, 1.0, -slope.y));
     vec3 mirror = reflect(normalize(wsPos - cameraPos()), normal);

@@ -33,13 +33,15 @@ import org.openworld.engine.gl.Uniform;
  * level ground at the mean height over the ring's outer half, and on the unbounded world also where its coarsest
  * window ends (65 km or more from the eye), since beyond it the layer wraps round to other ground: the level ground
  * there takes the snow cover the rule gives the mean height. The curvature counts from the patches' inscribed
- * circle, so the flat patches and the ring meet at the same height (the patches' corners stand up to 33 m too high).
+ * circle, so the flat patches and the ring meet at the same height there; towards the square's corners the ring
+ * lies (d² − r²) / 2R lower than the patches' edge, 33 m at the corners of the unbounded world's square seen from its
+ * centre, 73 m at the far corner from an eye half a root off it (the seam rises, it opens nothing).
  *
  * <p><b>Depth.</b> The camera's far plane ({@link Camera#FAR}, 40 km) keeps depth precise over the patches; the ring
  * reaches hundreds of kilometres. Each ring vertex beyond the farthest patch point, at distance d, is drawn along its
- * own line of sight at {@code x + (y − x)(1 − e^−(d − x)/(y − x))}, x that farthest point and y just before the far
- * plane: on screen nothing moves (a perspective projection sees only the direction), depth order is kept (the map is
- * monotonic), and only the ring's own depths are squeezed. Inner rings are drawn first, so where two squeezed depths
+ * own line of sight at {@code x + (y − x)(1 − e^−(d − x)/(y − x))}, x that farthest point and y just before the
+ * far plane: on screen nothing moves (a perspective projection sees only the direction), depth order is kept (the
+ * map is monotonic), and only the ring's own depths are squeezed. Inner rings are drawn first, so where two squeezed depths
  * round to one the nearer wins the depth test.
  *
  * <p><b>Cost.</b> {@value #AZIMUTHS} · {@value #RINGS} · 2 triangles in one draw call, main pass only (the water's
@@ -61,9 +63,14 @@ final class FarField {
     static final double INNER_SHARE = 0.9;
     /** The ring reaches this many horizon distances. */
     static final double HORIZON_MARGIN = 1.25;
-    /** The squeezed depths end this share of the far plane's distance from the eye (clear of its clipping). */
-    static final double DEPTH_END = 0.995;
-    /** The squeezed depths start no later than this share of the far plane, so they keep some room. */
+    /**
+     * How many steps of a 24-bit depth buffer the squeezed depths end short of the far plane's 1. Near the far plane
+     * a step of depth is about z² 2^−24 / n of distance: 180 m at 39 km for the camera's 0.5 m near plane. A ring
+     * squeezed to within a step of the far plane rounds to depth 1 and fails the depth test against the cleared
+     * buffer: a hole in the picture. Four steps short the ring ends 750 m before the far plane.
+     */
+    static final int DEPTH_STEPS_SHORT = 4;
+    /** The squeezed depths start no later than this share of where they end, so they keep some room. */
     static final double DEPTH_START_MAX = 0.9;
 
     /** Where the far heights come from: the level, its spacing and sample 0's position (metres), the mean height. */
@@ -145,8 +152,10 @@ final class FarField {
         square.set((float) centreX, (float) centreZ, (float) halfSide);
         double corner = Math.hypot(dx + halfSide, dz + halfSide);
         double height = Math.max(Math.abs(eye.y() - lowest), Math.abs(eye.y() - highest));
-        double farthest = Math.min(Math.hypot(corner, height), DEPTH_START_MAX * Camera.FAR);
-        depthRoom.set((float) farthest, (float) (DEPTH_END * Camera.FAR));
+        // depth = (1 − n/z) f / (f − n), so a depth k steps short of 1 lies at 1/z ≈ 1/f + k 2^−24 / n
+        double end = 1 / (1 / Camera.FAR + DEPTH_STEPS_SHORT * Math.scalb(1.0, -24) / Camera.NEAR);
+        double farthest = Math.min(Math.hypot(corner, height), DEPTH_START_MAX * end);
+        depthRoom.set((float) farthest, (float) end);
         if (window != null) {
             window.set(windowX, windowZ); // exact: a window lies within 2^24 samples
         }

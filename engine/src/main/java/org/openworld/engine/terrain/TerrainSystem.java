@@ -315,7 +315,8 @@ public final class TerrainSystem implements EngineSystem {
             int near = shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class),
                     debug.colouring(), context.sunShadowed(), renderer, context.stats());
             counters.add(prefix + "near", near);
-            if (farField != null && pass == Pass.MAIN && debug.colouring() == TerrainDebugSettings.Colouring.SHADED) {
+            if (farField != null && pass == Pass.MAIN
+                    && debug.colouring() == TerrainDebugSettings.Colouring.SHADED) {
                 // 4. beyond the patches, the far field to the horizon
                 shading.bindFarField(settings.get(MaterialSettings.class));
                 double extent = tree.extent();
