@@ -1,11 +1,12 @@
 #version 330 core
 // The far field (engine: org.openworld.engine.terrain.FarField): one ring of ground around the eye, from under the
 // edge of the drawn patches out past the horizon, coloured by terrain.frag's far program (TERRAIN_FARFIELD). Its
-// heights are the coarsest level's, read bilinearly; where that level holds nothing (beyond the unbounded world's
-// window) and towards the ring's outer edge the relief fades into level ground at the world's mean height. The
-// ground then falls away with the planet's curvature, d² / 2R, so the horizon is where a real one is, at
-// sqrt(2 R h) for an eye h above the ground. Drawn at its true distance within the camera's depth range, and pulled
-// along its line of sight into the range's last metres beyond that (the picture does not change, only the depth).
+// heights are the coarsest level's, read bilinearly; where that level may not hold the world (beyond a quarter of
+// the unbounded world's window from the eye) and towards the ring's outer edge, the relief fades into level ground
+// at the world's mean height. The ground falls away with the planet's curvature, d² / 2R, so the horizon is where
+// a real one is, at sqrt(2 R h) for an eye h above the ground. Drawn at its true distance within the camera's depth
+// range, and pulled along its line of sight into the range's last metres beyond that (the picture does not change,
+// only the depth).
 #include "common/frame.glsl"
 #include "common/fog.glsl"
 #include "common/environment.glsl"
@@ -30,7 +31,6 @@ uniform sampler2DArray slopes;
 uniform sampler2DArray snowMap; // g: the share of the sky seen
 uniform int clipSize;          // samples per side of every level's window, a power of two
 uniform float clipExtent;      // metres across level 0's window
-uniform vec2 uWindow;          // the far level's window: its first sample on x and z
 out float farRelief;           // 1 on the streamed relief, 0 on the level ground (terrain.frag)
 #else
 uniform sampler2D heights;     // the tile's pyramid, periodic
@@ -47,10 +47,8 @@ out vec3 skyRough;
 out vec3 skyLight;
 
 const float TAU = 6.28318531;
-// Samples from a window's edge over which the streamed relief fades in: a window moves a block (64 samples) at a
-// time and the block that enters holds the place it left until its heights arrive, so the relief is whole only
-// from past that block.
-const vec2 WINDOW_FADE = vec2(64.0, 128.0);
+// Metres over which the streamed relief fades out before the part of the window that always holds the world.
+const float WINDOW_FADE = 8000.0;
 // How steeply the ring goes down under the drawn patches, metres per metre inside their square: steeper than any
 // slope the coarse level smooths away, so it stays under the patches' own ground.
 const float SKIRT_SLOPE = 4.0;
@@ -90,8 +88,11 @@ void main() {
     // 2. its relief, faded into level ground towards the outer edge and, streamed, before the window ends
     float relief = 1.0 - smoothstep(0.5 * uRing.y, uRing.y, r);
 #ifdef TERRAIN_CLIPMAP
-    vec2 inWindow = min(p - uWindow, uWindow + float(clipSize - 2) - p);
-    relief *= smoothstep(WINDOW_FADE.x, WINDOW_FADE.y, min(inWindow.x, inWindow.y));
+    // a window keeps the camera at least a quarter of its side inside (HeightClipmap), so the square of that half
+    // side around the eye (less a sample, for the bilinear read) holds the world whatever the flight was
+    vec2 fromEye = abs(xz - cameraPos().xz);
+    float reach = (0.25 * float(clipSize) - 1.0) * uSampleSpacing;
+    relief *= 1.0 - smoothstep(reach - WINDOW_FADE, reach, max(fromEye.x, fromEye.y));
     farRelief = relief;
 #endif
     // (a texel never written holds NaN, UnboundedWorld, and NaN times a zero weight is still NaN: a hole)

@@ -20,18 +20,20 @@ import org.openworld.engine.gl.Uniform;
  * <p><b>The horizon.</b> Level ground at the world's mean height, curved with the planet's radius R (the sky's ground
  * sphere, 6360 km), lies d² / 2R below an eye's tangent plane d metres away, so an eye h above it sees it up to the
  * horizon distance {@code sqrt(2 R h)}, at a depression {@code acos(R / (R + h))} below the horizontal: 159 km and
- * 1.43° for h = 2000 m, 357 km at 10 km. The ring reaches 1.25 times that, at least twice its inner radius, so its
+ * 1.44° for h = 2000 m, 357 km at 10 km. The ring reaches 1.25 times that, at least twice its inner radius, so its
  * outer edge always lies behind the bulge, whatever the altitude; a ray that goes below the horizon meets it.
  *
- * <p><b>The ring.</b> {@value #AZIMUTHS} azimuths by {@value #RINGS} rings a constant ratio apart (about 4 % of the
- * distance from one ring to the next at 2000 m, as wide as the gap between azimuths there): a camera-centred polar
+ * <p><b>The ring.</b> {@value #AZIMUTHS} azimuths by {@value #RINGS} rings a constant ratio apart (3.7 % of the
+ * distance from one ring to the next at 2000 m, 1.5 times the gap between azimuths there): a camera-centred polar
  * grid puts its vertices evenly over the picture's width and depth. It starts 10 % inside the patches' square and
  * goes down under it at {@code farfield.vert}'s skirt slope, so the patches' ground hides it there and no crack opens
  * where the two meet. Its heights are the coarsest level's (the unbounded world's level 7, 256 m apart; the tile's
  * pyramid level of the same spacing, periodic), bilinear, and its colour the far program's
  * ({@code terrain.frag} with {@code TERRAIN_FARFIELD}), so it continues the patches' ground. The relief fades into
  * level ground at the mean height over the ring's outer half, and on the unbounded world also where its coarsest
- * window ends (65 km or more from the eye), since beyond it the layer wraps round to other ground: the level ground
+ * window may end, since beyond it the layer wraps round to other ground: the window keeps the eye at
+ * least a quarter of its side inside, so the relief fades out over the last 8 km before that square (32.8 km by
+ * default), which makes the ring depend on the place alone, not on the flight that led there: the level ground
  * there takes the snow cover the rule gives the mean height. The curvature counts from the patches' inscribed
  * circle, so the flat patches and the ring meet at the same height there; towards the square's corners the ring
  * lies (d² − r²) / 2R lower than the patches' edge, 33 m at the corners of the unbounded world's square seen from its
@@ -41,21 +43,25 @@ import org.openworld.engine.gl.Uniform;
  * reaches hundreds of kilometres. Each ring vertex beyond the farthest patch point, at distance d, is drawn along its
  * own line of sight at {@code x + (y − x)(1 − e^−(d − x)/(y − x))}, x that farthest point and y just before the
  * far plane: on screen nothing moves (a perspective projection sees only the direction), depth order is kept (the
- * map is monotonic), and only the ring's own depths are squeezed. Inner rings are drawn first, so where two squeezed depths
- * round to one the nearer wins the depth test.
+ * map is monotonic), and only the ring's own depths are squeezed. Inner rings are drawn first, so where two squeezed
+ * depths round to one the nearer wins the depth test.
  *
  * <p><b>Cost.</b> {@value #AZIMUTHS} · {@value #RINGS} · 2 triangles in one draw call, main pass only (the water's
- * reflection and the shadows do not see it), its vertices each five height fetches and two lookups; 36 KiB of
- * vertices and indices. Limits: a polar grid centred on the eye samples the relief at moving points, so in flight the
- * far relief's outline shifts a little; the ring is not in the water's reflection; past its inner rings its relief is
- * the coarsest level's, smoother than the patches' ground; the level ground has no relief finer than the tile's, or
- * none beyond the unbounded world's window.
+ * reflection and the shadows do not see it), its vertices each four height fetches and the slope, the sky seen, the
+ * sky's reflection and the air read as terrain.vert's far program reads them; 130 KiB of vertices and 384 KiB of
+ * indices on the GPU, nothing per frame but four uniforms.
+ *
+ * <p><b>Limits.</b> A polar grid centred on the eye samples the relief at moving points, so in flight the far
+ * relief's outline shifts a little; the ring is not in the water's reflection; past its inner rings its relief is the
+ * coarsest level's, smoother than the patches' ground; the level ground has no relief finer than the tile's, or none
+ * beyond a quarter of the unbounded world's window; in a fast flight a block that has just entered the window may
+ * show the place it left for a frame or two, out there.
  */
 final class FarField {
 
     /** The ground sphere's radius, metres: the sky's (the atmosphere's bottom), so horizon and air agree. */
     static final double PLANET_RADIUS = 6_360_000;
-    /** Vertices around the ring: 1.4° apart, under 2 pixels at 960 pixels across a 60° by 107° view. */
+    /** Vertices around the ring: 1.4° apart, 15 pixels at 960 pixels across a 60° by 91° view. */
     static final int AZIMUTHS = 256;
     /** Rings from the inner edge to the outer. */
     static final int RINGS = 64;
@@ -82,13 +88,9 @@ final class FarField {
     private final Uniform.Vec3 ring;
     private final Uniform.Vec3 square;
     private final Uniform.Vec2 depthRoom;
-    private final Uniform.Vec2 window;
 
-    /**
-     * @param program the far field's program ({@link TerrainShading#farField}), its maps' samplers set
-     * @param window  whether the heights come from a streamed window ({@link #draw}'s window origin is then set)
-     */
-    FarField(EngineContext context, ShaderProgram program, Source source, boolean window) {
+    /** @param program the far field's program ({@link TerrainShading#farField}), its maps' samplers set */
+    FarField(EngineContext context, ShaderProgram program, Source source) {
         this.source = source;
         mesh = context.own("far-field", new Mesh(context.gl(), grid(), triangles(), new Mesh.Attribute(0, 2)));
         program.use();
@@ -100,7 +102,6 @@ final class FarField {
         ring = program.vec3("uRing");
         square = program.vec3("uSquare");
         depthRoom = program.vec2("uDepthRoom");
-        this.window = window ? program.vec2("uWindow") : null;
     }
 
     /** The ring's vertices: (azimuth, ring) in 0..1, the azimuth's last column repeating its first. */
@@ -138,11 +139,9 @@ final class FarField {
     /**
      * Draws the ring with its program in use (its materials bound), around {@code eye}, for patches drawn on the
      * square of {@code halfSide} metres around (centreX, centreZ) whose heights lie within lowest .. highest.
-     *
-     * @param windowX the far level's window: its first sample on x (ignored for a tile)
      */
     void draw(Vector3fc eye, double centreX, double centreZ, double halfSide, double lowest, double highest,
-              long windowX, long windowZ, DrawStats stats) {
+              DrawStats stats) {
         double dx = Math.abs(eye.x() - centreX);
         double dz = Math.abs(eye.z() - centreZ);
         double inscribed = Math.max(halfSide - Math.max(dx, dz), 1);
@@ -156,9 +155,6 @@ final class FarField {
         double end = 1 / (1 / Camera.FAR + DEPTH_STEPS_SHORT * Math.scalb(1.0, -24) / Camera.NEAR);
         double farthest = Math.min(Math.hypot(corner, height), DEPTH_START_MAX * end);
         depthRoom.set((float) farthest, (float) end);
-        if (window != null) {
-            window.set(windowX, windowZ); // exact: a window lies within 2^24 samples
-        }
         glDisable(GL_CULL_FACE);
         mesh.draw(stats);
     }

@@ -277,16 +277,6 @@ final class StreamedWorld implements Residency, AutoCloseable {
         return levels;
     }
 
-    /** The first sample on x of level {@code level}'s window. */
-    long windowX(int level) {
-        return clipmap.windowX(level);
-    }
-
-    /** The first sample on z of level {@code level}'s window. */
-    long windowZ(int level) {
-        return clipmap.windowZ(level);
-    }
-
     /** Samples per side of every level's window. */
     int clipSize() {
         return clipmap.size();

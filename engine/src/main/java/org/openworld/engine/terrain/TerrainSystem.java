@@ -43,8 +43,8 @@ import org.openworld.engine.settings.SettingsGroup;
 public final class TerrainSystem implements EngineSystem {
 
     /**
-     * How far from the camera's tile copies of a periodic tile are drawn, metres: beyond the distance at which the
-     * default fog has swallowed the ground, so the world shows no edge.
+     * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
+     * faded into the air; beyond them the {@link FarField} carries the ground on to the horizon.
      */
     static final double COPY_DISTANCE = 12_000;
     /** The tile's pyramid level the far field reads: 256 m apart at 2 m, as the unbounded world's coarsest. */
@@ -150,7 +150,7 @@ public final class TerrainSystem implements EngineSystem {
             ShaderProgram program = shading.farField(context, UNIT_HEIGHTS);
             program.float1("uFarSnow").set((float) unbounded.snowCoverageAt(mean));
             return new FarField(context, program,
-                    new FarField.Source(level, stream.heights().spacing(level), 0, mean), true);
+                    new FarField.Source(level, stream.heights().spacing(level), 0, mean));
         }
         HeightMap base = data.pyramid().base();
         lowest = base.min();
@@ -161,7 +161,7 @@ public final class TerrainSystem implements EngineSystem {
         int top = data.pyramid().levelCount() - 1;
         int level = Math.min(top, FAR_LEVEL);
         return new FarField(context, shading.farField(context, UNIT_HEIGHTS), new FarField.Source(level,
-                Math.scalb(base.spacing(), level), -base.extent() / 2, data.pyramid().level(top).sample(0, 0)), false);
+                Math.scalb(base.spacing(), level), -base.extent() / 2, data.pyramid().level(top).sample(0, 0)));
     }
 
     /** The tile: its data off the GPU, its quadtree, its maps, then the programs and materials (which bake on them). */
@@ -320,11 +320,8 @@ public final class TerrainSystem implements EngineSystem {
                 // 4. beyond the patches, the far field to the horizon
                 shading.bindFarField(settings.get(MaterialSettings.class));
                 double extent = tree.extent();
-                int far = unbounded != null ? unbounded.stream().levels() - 1 : 0;
                 farField.draw(context.camera().position(), copyCentreX * extent, copyCentreZ * extent,
-                        (copyRadius + 0.5) * extent, lowest, highest,
-                        unbounded != null ? unbounded.stream().windowX(far) : 0,
-                        unbounded != null ? unbounded.stream().windowZ(far) : 0, context.stats());
+                        (copyRadius + 0.5) * extent, lowest, highest, context.stats());
             }
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
