@@ -104,6 +104,15 @@ final class FarField {
         depthRoom = program.vec2("uDepthRoom");
     }
 
+    /**
+     * The distance, metres, at which the squeezed depths end: {@value #DEPTH_STEPS_SHORT} steps of a 24-bit depth short
+     * of the camera's far plane. Depth is (1 − n/z) f / (f − n), so a depth k steps short of 1 lies at
+     * 1/z ≈ 1/f + k 2^−24 / n.
+     */
+    static double depthEnd() {
+        return 1 / (1 / Camera.FAR + DEPTH_STEPS_SHORT * Math.scalb(1.0, -24) / Camera.NEAR);
+    }
+
     /** The ring's vertices: (azimuth, ring) in 0..1, the azimuth's last column repeating its first. */
     private static float[] grid() {
         float[] v = new float[2 * (AZIMUTHS + 1) * (RINGS + 1)];
@@ -151,8 +160,7 @@ final class FarField {
         square.set((float) centreX, (float) centreZ, (float) halfSide);
         double corner = Math.hypot(dx + halfSide, dz + halfSide);
         double height = Math.max(Math.abs(eye.y() - lowest), Math.abs(eye.y() - highest));
-        // depth = (1 − n/z) f / (f − n), so a depth k steps short of 1 lies at 1/z ≈ 1/f + k 2^−24 / n
-        double end = 1 / (1 / Camera.FAR + DEPTH_STEPS_SHORT * Math.scalb(1.0, -24) / Camera.NEAR);
+        double end = depthEnd();
         double farthest = Math.min(Math.hypot(corner, height), DEPTH_START_MAX * end);
         depthRoom.set((float) farthest, (float) end);
         glDisable(GL_CULL_FACE);
