@@ -32,7 +32,7 @@ uniform sampler2DArray slopes; // (dh/dx, dh/dz) of each level's window around t
 uniform sampler2DArray snowMap; // r snow coverage (StreamedSnow), g the share of the sky seen (1 until it streams)
 uniform float clipExtent;      // metres across level 0's window: clipSize · spacing
   #ifdef TERRAIN_FARFIELD
-in float farRelief;            // 1 on the streamed relief, 0 on level ground beyond the window (farfield.vert)
+in float farRelief;            // 1 on the streamed relief, 0 on level ground where the window may not reach
 uniform float uFarSnow;        // the level ground's snow: what the snow rule leaves at the mean height
   #endif
 #else
@@ -58,7 +58,7 @@ void main() {
     vec3 clipUv = clipmapCoordinates(wsPos.xz, lodLevel, clipExtent, textureSize(slopes, 0).x);
     vec2 slope = texture(slopes, clipUv).xy;
     vec2 snowAndSky = texture(snowMap, clipUv).rg; // the sky seen: the far program's comes per vertex
-  #ifdef TERRAIN_FARFIELD // beyond the window the layer wraps round to other ground: level ground instead
+  #ifdef TERRAIN_FARFIELD // past the window the layer wraps round to other ground: level ground there (farfield.vert)
     slope *= farRelief;
     snowAndSky.r = mix(uFarSnow, snowAndSky.r, farRelief);
   #endif
