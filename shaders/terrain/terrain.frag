@@ -14,6 +14,7 @@
 //   TERRAIN_CLIPMAP        the unbounded world (terrain.world=unbounded): the slope and the snow from the streamed
 //                          clipmap's layer of the patch's level; the near program fades its fine scale out over
 //                          farBand instead of fading into a baked material
+//   TERRAIN_FARFIELD       with TERRAIN_FAR: the far field's ring (terrain/farfield.vert, FarField) instead of patches
 #include "common/frame.glsl"
 #include "common/color.glsl"
 #include "terrain/material.glsl"
@@ -30,6 +31,10 @@ out vec4 fragColor;
 uniform sampler2DArray slopes; // (dh/dx, dh/dz) of each level's window around the camera, wrapping (HeightClipmap)
 uniform sampler2DArray snowMap; // r snow coverage (StreamedSnow), g the share of the sky seen (1 until it streams)
 uniform float clipExtent;      // metres across level 0's window: clipSize · spacing
+  #ifdef TERRAIN_FARFIELD
+in float farRelief;            // 1 on the streamed relief, 0 on level ground where the window may not reach
+uniform float uFarSnow;        // the level ground's snow: what the snow rule leaves at the mean height
+  #endif
 #else
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
 uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (SkyVisibility)
@@ -53,6 +58,10 @@ void main() {
     vec3 clipUv = clipmapCoordinates(wsPos.xz, lodLevel, clipExtent, textureSize(slopes, 0).x);
     vec2 slope = texture(slopes, clipUv).xy;
     vec2 snowAndSky = texture(snowMap, clipUv).rg; // the sky seen: the far program's comes per vertex
+  #ifdef TERRAIN_FARFIELD // past the window the layer wraps round to other ground: level ground there (farfield.vert)
+    slope *= farRelief;
+    snowAndSky.r = mix(uFarSnow, snowAndSky.r, farRelief);
+  #endif
 #else
     vec2 uv = wsPos.xz / extent + 0.5;
   #ifdef TERRAIN_FAR

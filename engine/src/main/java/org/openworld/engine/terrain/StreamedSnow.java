@@ -76,6 +76,11 @@ final class StreamedSnow {
         return expected[k] + (at - k) * (expected[k + 1] - expected[k]);
     }
 
+    /** The snow a coarse level shows at this height, metres: c(p) of the chance p there. */
+    double coverageAt(double height) {
+        return expectedCoverage(probability((float) height));
+    }
+
     /**
      * A block's snow, 0..255 per sample, row-major: level {@code level}'s samples (ix0 .. ix0 + block − 1) × (iz0 ..),
      * from its heights given with a border of {@code border} samples (at least {@link #border} for level 0).

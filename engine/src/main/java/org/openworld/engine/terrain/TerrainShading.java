@@ -76,6 +76,8 @@ final class TerrainShading {
     private final FarMaterial farMaterial;
     private final int unitMaterials;
     private final int unitFar;
+    /** The far field's material uniforms, once {@link #farField} made its program. */
+    private TerrainMaterials.Uniforms farFieldUniforms;
 
     /**
      * Makes the programs, the materials (quilted if the settings of the start ask for it, timed as the
@@ -173,6 +175,38 @@ final class TerrainShading {
                 with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
         nearSamplers(f, unitHeights);
         return TerrainMaterials.uniforms(f);
+    }
+
+    /**
+     * The far field's program ({@link FarField}): its ring ({@code terrain/farfield.vert}) coloured by the far
+     * program, without the sun's shadows (it lies beyond every cascade); on the unbounded world the materials at the
+     * coarse scale of the repeat tiling (far off, every tiling's mips average to the same colour), on the tile the
+     * baked far material. Its maps' samplers are set; {@link #bindFarField} binds the materials.
+     */
+    ShaderProgram farField(EngineContext context, int unitHeights) {
+        List<String> defines = with(layout.defines(), List.of("SUN_UNSHADOWED", "TERRAIN_FAR", "TERRAIN_FARFIELD"));
+        ShaderProgram p = context.own("program.far-field", context.shaders().program(
+                layout.streamed() ? with(defines, List.of("MAT_COARSE_ONLY")) : defines,
+                "terrain/farfield.vert", "terrain/terrain.frag"));
+        p.use();
+        p.sampler("heights", unitHeights);
+        p.sampler("snowMap", unitHeights + 2);
+        if (layout.streamed()) {
+            nearSamplers(p, unitHeights);
+            p.int1("clipSize").set(layout.clipSize());
+            p.float1("clipExtent").set((float) layout.extent());
+            farFieldUniforms = TerrainMaterials.uniforms(p);
+        } else {
+            farSamplers(p, unitFar);
+            p.float1("extent").set((float) layout.extent());
+            farFieldUniforms = TerrainMaterials.lightUniforms(p);
+        }
+        return p;
+    }
+
+    /** Uses the far field's program with the materials of the moment ({@link #draw} refreshed them). */
+    void bindFarField(MaterialSettings settings) {
+        materials.bind(farFieldUniforms, settings, unitMaterials);
     }
 
     /** A near program's maps: the slopes, or the gradients, the snow map and the far material it fades into. */

@@ -43,10 +43,12 @@ import org.openworld.engine.settings.SettingsGroup;
 public final class TerrainSystem implements EngineSystem {
 
     /**
-     * How far from the camera's tile copies of a periodic tile are drawn, metres: beyond the distance at which the
-     * default fog has swallowed the ground, so the world shows no edge.
+     * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
+     * faded into the air; beyond them the {@link FarField} carries the ground on to the horizon.
      */
     static final double COPY_DISTANCE = 12_000;
+    /** The tile's pyramid level the far field reads: 256 m apart at 2 m, as the unbounded world's coarsest. */
+    static final int FAR_LEVEL = 7;
     /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
     static final int MAX_COPY_RADIUS = 3;
     /** Texture units: the terrain's maps first (heights, gradients, snow), then the materials (TerrainShading). */
@@ -77,6 +79,13 @@ public final class TerrainSystem implements EngineSystem {
     private float[] copyOffsets;
     private long copyCentreX = Long.MIN_VALUE;
     private long copyCentreZ = Long.MIN_VALUE;
+    /** Copies (roots) drawn on each side of the camera's. */
+    private int copyRadius;
+    /** Ground from the copies' edge to the horizon; null for an imported map, which has an edge by design. */
+    private FarField farField;
+    /** The lowest and highest heights drawn, metres. */
+    private double lowest;
+    private double highest;
     /** Where levels are chosen from while {@code terrain-debug.freeze-lod} is on; null while it is off. */
     private Vector3f frozenEye;
 
@@ -124,6 +133,35 @@ public final class TerrainSystem implements EngineSystem {
                 "terrain/depth.frag"));
         layout.apply(depthProgram, UNIT_HEIGHTS);
         publishSnowLine(context.world(), settings);
+        farField = farField(context);
+    }
+
+    /**
+     * The far field, reading the coarsest streamed level or the tile's pyramid level of the same spacing (its
+     * periodic copies go on for ever); none for an imported map.
+     */
+    private FarField farField(EngineContext context) {
+        if (unbounded != null) {
+            StreamedWorld stream = unbounded.stream();
+            int level = stream.levels() - 1;
+            lowest = stream.heights().lowest();
+            highest = stream.heights().highest();
+            double mean = (lowest + highest) / 2; // the bands' bounds lie symmetric about the mean
+            ShaderProgram program = shading.farField(context, UNIT_HEIGHTS);
+            program.float1("uFarSnow").set((float) unbounded.snowCoverageAt(mean));
+            return new FarField(context, program,
+                    new FarField.Source(level, stream.heights().spacing(level), 0, mean));
+        }
+        HeightMap base = data.pyramid().base();
+        lowest = base.min();
+        highest = base.max();
+        if (!base.periodic()) {
+            return null;
+        }
+        int top = data.pyramid().levelCount() - 1;
+        int level = Math.min(top, FAR_LEVEL);
+        return new FarField(context, shading.farField(context, UNIT_HEIGHTS), new FarField.Source(level,
+                Math.scalb(base.spacing(), level), -base.extent() / 2, data.pyramid().level(top).sample(0, 0)));
     }
 
     /** The tile: its data off the GPU, its quadtree, its maps, then the programs and materials (which bake on them). */
@@ -194,9 +232,9 @@ public final class TerrainSystem implements EngineSystem {
         }
         copyCentreX = cx;
         copyCentreZ = cz;
-        int radius = unbounded != null ? unbounded.stream().rootRadius()
+        copyRadius = unbounded != null ? unbounded.stream().rootRadius()
                 : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
-        copyOffsets = copies(cx, cz, radius, extent);
+        copyOffsets = copies(cx, cz, copyRadius, extent);
         world.add(entity, new Cullable(tree.bounds(), copyOffsets));
     }
 
@@ -274,6 +312,14 @@ public final class TerrainSystem implements EngineSystem {
             int near = shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class),
                     debug.colouring(), context.sunShadowed(), renderer, context.stats());
             counters.add(prefix + "near", near);
+            if (farField != null && pass == Pass.MAIN
+                    && debug.colouring() == TerrainDebugSettings.Colouring.SHADED) {
+                // 4. beyond the patches, the far field to the horizon
+                shading.bindFarField(settings.get(MaterialSettings.class));
+                double extent = tree.extent();
+                farField.draw(context.camera().position(), copyCentreX * extent, copyCentreZ * extent,
+                        (copyRadius + 0.5) * extent, lowest, highest, context.stats());
+            }
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
         glDisable(GL_CULL_FACE);

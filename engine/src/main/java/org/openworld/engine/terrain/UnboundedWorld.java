@@ -146,6 +146,11 @@ final class UnboundedWorld implements AutoCloseable {
         sky.arrived(level, Math.floorDiv(ix0, block), Math.floorDiv(iz0, block));
     }
 
+    /** The snow cover the coarse levels show at this height, metres. */
+    double snowCoverageAt(double height) {
+        return snow.coverageAt(height);
+    }
+
     /** The world's heights, streaming and level choice. */
     StreamedWorld stream() {
         return stream;

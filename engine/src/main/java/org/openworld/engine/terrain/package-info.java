@@ -46,6 +46,16 @@
  * narrow them; no baked far material: its far program samples the coarse tile alone ({@link
  * org.openworld.engine.terrain.TerrainShading}).
  *
+ * <p><b>The far field.</b> Beyond the patches (the tile's copies, the unbounded world's roots: 14 to 35 km) the
+ * {@link org.openworld.engine.terrain.FarField} carries the ground to the horizon: a polar ring of 256 × 64 cells
+ * around the eye out to 1.25 horizon distances, {@code sqrt(2 R h)} for an eye h above the mean ground on a planet of
+ * radius R (159 km from 2000 m), its heights the coarsest level's fading into level ground, bent down by
+ * {@code d² / 2R}, coloured by the far program and fogged past the aerial table's 64 km as a homogeneous layer
+ * ({@code T^(d/64 km)}). Drawn within the camera's 40 km depth range by moving each far vertex along its own line of
+ * sight (the picture unchanged, the order kept). Cost: 32 768 triangles in one draw call of the main pass, 0.5 MiB
+ * of buffers. Limits: not reflected in the water nor casting shadows, coarse relief, none beyond a quarter of the
+ * unbounded world's coarsest window (33 km); the eye-centred grid shifts the far outline a little in flight.
+ *
  * <p><b>Pyramid (2.5).</b> {@link org.openworld.engine.terrain.HeightPyramid#build} low-passes each level with the
  * binomial kernel (1 4 6 4 1)/16 (a Gaussian of σ ≈ 1 sample, response cos⁴(πf)) and keeps every other sample.
  * Without the filter a ridge finer than the new spacing would alias into a false hill at the coarse level; with it,
