@@ -124,7 +124,8 @@ public final class Engine implements AutoCloseable {
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
-            scene = new ScaledScene(gl, owned, width, height, renderScale(), antialias().enabled());
+            scene = new ScaledScene(gl, owned, width, height, renderScale(),
+                    settings.get(AntialiasSettings.class).enabled());
             fxaa = owned.own(new Fxaa(gl, this.shaders));
             timing = new FrameTiming(gl, owned, order.systems());
             shared = new SharedBindings(gl, owned);
@@ -198,10 +199,6 @@ public final class Engine implements AutoCloseable {
         return settings.get(EngineSettings.class).renderScale();
     }
 
-    private AntialiasSettings antialias() {
-        return settings.get(AntialiasSettings.class);
-    }
-
     /**
      * Switches a system's update and render off or on; its GPU resources stay (CONTRIBUTING.md, "Lifecycle"). The same as setting
      * {@code system.name}, which is where the switch lives.
@@ -259,8 +256,8 @@ public final class Engine implements AutoCloseable {
     public void render() {
         timing.beginFrame();
         stats.reset();
-        // the scale or the anti-aliasing may have changed since the last frame (the panel)
-        scene.fit(width(), height(), renderScale(), antialias().enabled());
+        AntialiasSettings antialias = settings.get(AntialiasSettings.class);
+        scene.fit(width(), height(), renderScale(), antialias.enabled()); // either may have changed (the panel)
         PassView viewer = new PassView(world.resource(Camera.class).view((float) width() / height()), scene.scene());
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
@@ -311,11 +308,9 @@ public final class Engine implements AutoCloseable {
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        // 5. the scene anti-aliased into its own target, then, below scale 1, the picture from that smaller target:
-        //    part of the frame, and timed as such
+        // 5. the scene anti-aliased, then below scale 1 stretched over the picture: part of the frame, timed as such
         if (scene.antialiased()) {
-            timing.timeEngine("antialias.engine", () -> fxaa.draw(scene.scene(), scene.resolved(), antialias(), stats));
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            timing.timeEngine("antialias.engine", () -> fxaa.draw(scene.scene(), scene.resolved(), antialias, stats));
         }
         if (scene.scaled()) {
             timing.timeEngine("upscale.engine", scene::upscale);
@@ -383,7 +378,7 @@ public final class Engine implements AutoCloseable {
 
     /** Re-creates the scene target and picture at a new size (a resized window); 0×0 (minimised) is ignored. */
     public void resize(int width, int height) {
-        scene.fit(width, height, renderScale(), antialias().enabled());
+        scene.fit(width, height, renderScale(), settings.get(AntialiasSettings.class).enabled());
     }
 
     /**

@@ -5,6 +5,8 @@ import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
 import static org.lwjgl.opengl.GL11C.GL_STENCIL_TEST;
 import static org.lwjgl.opengl.GL11C.glDisable;
+import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
+import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
 
 import org.openworld.engine.core.Owned;
 import org.openworld.engine.gl.DrawStats;
@@ -43,9 +45,7 @@ public final class Fxaa implements AutoCloseable {
         }
     }
 
-    /**
-     * Draws {@code scene}'s colour anti-aliased into {@code target} (the same size), leaving {@code target} bound.
-     */
+    /** Draws {@code scene}'s colour anti-aliased into {@code target} (the same size), then binds no framebuffer. */
     public void draw(Framebuffer scene, Framebuffer target, AntialiasSettings settings, DrawStats stats) {
         target.bind();
         glDisable(GL_DEPTH_TEST);
@@ -56,6 +56,7 @@ public final class Fxaa implements AutoCloseable {
         subpixel.set((float) settings.subpixel());
         scene.color().bind(UNIT_SCENE);
         fullScreen.draw(stats);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
     @Override
