@@ -24,7 +24,8 @@
 //   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance)
 //      where the relief leaves the sky visible, the light of the terrain where it hides it (SkyVisibility), a
 //      normalised Blinn-Phong highlight and a Fresnel-weighted reflection of the environment map (the sky
-//      system's), both scaled by the gloss map
+//      system's), both scaled by the gloss map; each highlight widened by the normal's spread over the pixel
+//      (specular anti-aliasing, materials.specular-aa)
 #include "common/frame.glsl"
 #include "common/environment.glsl"
 #include "common/shadow.glsl"
@@ -37,6 +38,7 @@ uniform vec2 uMatSnowBand;         // ALTITUDE_BANDS: normalised heights where s
 uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
 uniform int uMatGlossMap;          // 1: highlight and sky reflection, scaled by the gloss maps
 uniform float uMatSkyOcclusion;    // 1: the relief hides its share of the sky (TerrainSurface.skyVisibility), 0: not
+uniform float uMatSpecularAa;      // 1: highlights widened by the normal's spread over the pixel (step 5), 0: not
 
 #ifdef TERRAIN_FAR
 // The far terrain's sky reflection, per vertex at two levels of blur, and its sky light (terrain.vert): for the
@@ -99,6 +101,10 @@ const float MAT_LAYER_SOFTNESS = 0.15; // relief units over which a layer's cove
 // 5. light
 const float MAT_F0 = 0.04;           // Fresnel reflectance at normal incidence of rock, leaves and ice (IOR ~1.3-1.5)
 const float MAT_MAX_POWER = 2048.0;  // Blinn-Phong exponent at gloss 1 (power = MAX_POWER^gloss): sharp sun glints
+const float MAT_PIXEL_VARIANCE = 0.25; // square pixels: the variance of a pixel's filter (a Gaussian of 0.5 px),
+                                       // times the normal's change per pixel squared: its spread over the pixel
+const float MAT_MAX_SPREAD = 0.18;   // most spread counted (Kaplanyan et al.'s kappa): a crease or a silhouette,
+                                     // where the normal jumps between pixels, dulls the highlight but keeps some
 
 // Schlick's Fresnel reflectance at a cosine: F0 + (1 - F0)(1 - cos)^5, the fifth power by multiplications (a pow
 // is a log and an exponential per pixel on a rasteriser without special-function units).
@@ -429,9 +435,18 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
     float nl = max(dot(n, l), 0.0) * sunFacing;
     vec3 sky = matSkyLight(n, s.skyVisibility); // the sky, and the sunlit ground around: the light in the shadows
     vec3 color = m.albedo * (frame.sunColor.rgb * nl + sky);
+    // specular anti-aliasing (Toksvig 2005, the normal's spread over the pixel measured in screen space after
+    // Kaplanyan, Hill, Patney and Lefohn 2016): a pixel covers normals that differ by about its neighbours' change,
+    // and Toksvig widens a Blinn-Phong lobe of power p over normals of spread s2 to p / (1 + p s2); computed before
+    // the branch, as derivatives need every pixel of the quad
+    vec3 dnx = dFdx(n);
+    vec3 dny = dFdy(n);
+    float spread = uMatSpecularAa * min(MAT_PIXEL_VARIANCE * (dot(dnx, dnx) + dot(dny, dny)), MAT_MAX_SPREAD);
     if (uMatGlossMap == 1) {
         float gloss = m.gloss;
         float power = pow(MAT_MAX_POWER, gloss);
+        power /= 1.0 + power * spread;
+        float sharpness = log2(power) / log2(MAT_MAX_POWER); // the widened lobe's gloss: how blurred the sky is
         vec3 h = normalize(l + v);
         float vh = max(dot(v, h), 0.0);
         float fresnelSun = matFresnel(vh);
@@ -441,7 +456,7 @@ vec3 lightTerrain(TerrainSurface s, MatTexel m) {
         vec3 r = reflect(-v, n);
         float nv = max(dot(n, v), 0.0);
         float fresnelView = matFresnel(nv);
-        color += matSkyReflection(r, (1.0 - gloss) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
+        color += matSkyReflection(r, (1.0 - sharpness) * ENVIRONMENT_MAX_LOD) * fresnelView * gloss * gloss;
     }
     return color;
 }

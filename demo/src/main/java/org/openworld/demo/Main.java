@@ -27,7 +27,7 @@ import picocli.CommandLine.Command;
         description = "Renders large outdoor worlds in real time. Without a command: 'run'.",
         subcommands = {RunCommand.class, ShotCommand.class, BenchCommand.class, HeightmapCommand.class, FiguresCommand.class,
             SkyStripCommand.class, DiagramCommand.class,
-            DiffCommand.class, SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
+            DiffCommand.class, StabilityCommand.class, SettingsCommand.class, InfoCommand.class, CommandLine.HelpCommand.class})
 public final class Main {
 
     private static final Set<String> TOP_LEVEL_FLAGS = Set.of("-h", "--help", "-V", "--version");

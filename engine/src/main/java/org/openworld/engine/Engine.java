@@ -10,6 +10,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
+import org.openworld.engine.antialias.AntialiasSettings;
+import org.openworld.engine.antialias.Fxaa;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
@@ -41,6 +43,7 @@ import org.openworld.engine.settings.SettingsGroup;
  *       and REFLECTION, whose {@link PassOwner} gives a view this frame), the frame uniform block is written with
  *       that pass's camera, its target is bound and cleared, each system working in it sets up the pass
  *       ({@link EngineSystem#beginPass}), and the systems draw in resolved order;</li>
+ *   <li>with {@code antialias.method} on, the scene target anti-aliased ({@link Fxaa});</li>
  *   <li>below {@code engine.render-scale} 1, the scene target, drawn smaller, is stretched over the full-size
  *       picture ({@link ScaledScene});</li>
  *   <li>the picture is read back (headless) or shown (window).</li>
@@ -74,6 +77,7 @@ public final class Engine implements AutoCloseable {
     private ScaledScene scene;
     private FrameTiming timing;
     private SharedBindings shared;
+    private Fxaa fxaa;
     private long frame;
 
     /**
@@ -120,7 +124,9 @@ public final class Engine implements AutoCloseable {
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
         try {
-            scene = new ScaledScene(gl, owned, width, height, renderScale());
+            scene = new ScaledScene(gl, owned, width, height, renderScale(),
+                    settings.get(AntialiasSettings.class).enabled());
+            fxaa = owned.own(new Fxaa(gl, this.shaders));
             timing = new FrameTiming(gl, owned, order.systems());
             shared = new SharedBindings(gl, owned);
             for (EngineSystem system : order.systems()) {
@@ -141,7 +147,7 @@ public final class Engine implements AutoCloseable {
      * {@link org.openworld.engine.core.SystemSpec#offByDefault() offByDefault}.
      */
     public static Settings settingsFor(List<? extends EngineSystem> systems) {
-        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP));
+        List<SettingsGroup<?>> groups = new ArrayList<>(List.of(EngineSettings.GROUP, AntialiasSettings.GROUP));
         Map<String, Boolean> switches = new LinkedHashMap<>();
         systems.forEach(s -> {
             groups.addAll(s.settings());
@@ -250,7 +256,8 @@ public final class Engine implements AutoCloseable {
     public void render() {
         timing.beginFrame();
         stats.reset();
-        scene.fit(width(), height(), renderScale()); // the scale may have changed since the last frame (the panel)
+        AntialiasSettings antialias = settings.get(AntialiasSettings.class);
+        scene.fit(width(), height(), renderScale(), antialias.enabled()); // either may have changed (the panel)
         PassView viewer = new PassView(world.resource(Camera.class).view((float) width() / height()), scene.scene());
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
@@ -301,7 +308,10 @@ public final class Engine implements AutoCloseable {
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        // 5. below scale 1, the picture from the smaller scene target: part of the frame, and timed as such
+        // 5. the scene anti-aliased, then below scale 1 stretched over the picture: part of the frame, timed as such
+        if (scene.antialiased()) {
+            timing.timeEngine("antialias.engine", () -> fxaa.draw(scene.scene(), scene.resolved(), antialias, stats));
+        }
         if (scene.scaled()) {
             timing.timeEngine("upscale.engine", scene::upscale);
         }
@@ -368,7 +378,7 @@ public final class Engine implements AutoCloseable {
 
     /** Re-creates the scene target and picture at a new size (a resized window); 0×0 (minimised) is ignored. */
     public void resize(int width, int height) {
-        scene.fit(width, height, renderScale());
+        scene.fit(width, height, renderScale(), settings.get(AntialiasSettings.class).enabled());
     }
 
     /**

@@ -16,12 +16,15 @@ import org.openworld.engine.gl.Sampling;
 
 /**
  * The engine's scene target at the render scale ({@code engine.render-scale}, docs/architecture.md, "Render scale"),
- * and the full-size picture made from it. Below scale 1 the viewer's passes draw into a target of scale × the
+ * the anti-aliased copy of it ({@code antialias.method}, {@link org.openworld.engine.antialias}), and the full-size
+ * picture made from them. Below scale 1 the viewer's passes draw into a target of scale × the
  * picture's width and height, so the fragment shaders run for scale² of the pixels (0.75: 56 %); at the end of the
  * frame one blit with linear filtering stretches it over the picture. The picture is what the window shows, what is
  * read back and what the panel and HUD draw over, so the picture keeps its size and the text stays sharp; the price
  * is a softer picture (an edge blurs over about 1 / scale pixels) and the blit itself, one read and one write per
  * picture pixel. At scale 1 the two are one target: nothing is copied and the picture is what it was without a scale.
+ * With anti-aliasing on, its pass writes the scene into a colour target of the scene's size, which is the picture at
+ * scale 1 and what is stretched below it; off, that target is the scene target itself.
  */
 final class ScaledScene {
 
@@ -29,13 +32,15 @@ final class ScaledScene {
     /** The engine's: holds the scene target as {@code engine.scene} and, below scale 1, {@code engine.picture}. */
     private final Owned owned;
     private Framebuffer scene;
-    /** The full-size picture; the scene target itself at scale 1. */
+    /** The scene anti-aliased, at the scene's size; the scene target itself with anti-aliasing off. */
+    private Framebuffer resolved;
+    /** The full-size picture; {@link #resolved} at scale 1. */
     private Framebuffer picture;
 
-    ScaledScene(GlContext gl, Owned owned, int width, int height, double scale) {
+    ScaledScene(GlContext gl, Owned owned, int width, int height, double scale, boolean antialiased) {
         this.gl = gl;
         this.owned = owned;
-        fit(width, height, scale);
+        fit(width, height, scale, antialiased);
     }
 
     /** A side of the scene target: the picture's side times the scale, at least one pixel. */
@@ -44,24 +49,31 @@ final class ScaledScene {
     }
 
     /**
-     * Re-makes the targets when the picture's size (a resized window) or the scale (the panel) has changed; 0×0
-     * (minimised) is ignored.
+     * Re-makes the targets when the picture's size (a resized window), the scale (the panel) or the anti-aliasing's
+     * switch has changed; 0×0 (minimised) is ignored.
      */
-    void fit(int width, int height, double scale) {
+    void fit(int width, int height, double scale, boolean antialiased) {
         int w = scaled(width, scale);
         int h = scaled(height, scale);
         if (width <= 0 || height <= 0 || (picture != null && picture.width() == width && picture.height() == height
-                && scene.width() == w && scene.height() == h)) {
+                && scene.width() == w && scene.height() == h && antialiased() == antialiased)) {
             return;
         }
-        if (picture != scene) {
+        if (picture != resolved) {
             owned.drop(picture);
+        }
+        if (resolved != scene) {
+            owned.drop(resolved);
         }
         owned.drop(scene);
         scene = owned.own("scene", Framebuffer.scene(gl, w, h));
         // colour alone: what draws over the picture (the panel) needs no depth
-        picture = w == width && h == height ? scene
-                : owned.own("picture", new Framebuffer(gl, width, height, Format.RGBA8, null, Sampling.NEAREST_CLAMP));
+        resolved = antialiased ? owned.own("antialiased", colour(w, h)) : scene;
+        picture = w == width && h == height ? resolved : owned.own("picture", colour(width, height));
+    }
+
+    private Framebuffer colour(int width, int height) {
+        return new Framebuffer(gl, width, height, Format.RGBA8, null, Sampling.NEAREST_CLAMP);
     }
 
     /** Where the viewer's passes draw. */
@@ -74,16 +86,26 @@ final class ScaledScene {
         return picture;
     }
 
-    /** Whether the scene is drawn smaller than the picture, to be stretched over it at the end of the frame. */
-    boolean scaled() {
-        return picture != scene;
+    /** Where the anti-aliasing pass writes the scene: the picture at scale 1. */
+    Framebuffer resolved() {
+        return resolved;
     }
 
-    /** Stretches the scene target over the picture, filtering linearly. */
+    /** Whether the scene is anti-aliased into a target of its own. */
+    boolean antialiased() {
+        return resolved != scene;
+    }
+
+    /** Whether the scene is drawn smaller than the picture, to be stretched over it at the end of the frame. */
+    boolean scaled() {
+        return picture != resolved;
+    }
+
+    /** Stretches the (anti-aliased) scene over the picture, filtering linearly. */
     void upscale() {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved.id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, picture.id());
-        glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, picture.width(), picture.height(),
+        glBlitFramebuffer(0, 0, resolved.width(), resolved.height(), 0, 0, picture.width(), picture.height(),
                 GL_COLOR_BUFFER_BIT, GL_LINEAR);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }

@@ -15,6 +15,7 @@ import org.openworld.engine.settings.Settings;
 public final class GlTestSupport {
 
     private static final String WORLD = "terrain.world";
+    private static final String ANTIALIAS = "antialias.method";
 
     private GlTestSupport() {
     }
@@ -25,7 +26,8 @@ public final class GlTestSupport {
 
     /**
      * An engine whose settings have these {@code key=value} assignments applied before the systems start, on the
-     * tile unless they name {@code terrain.world}.
+     * tile unless they name {@code terrain.world}, and without anti-aliasing unless they name
+     * {@code antialias.method}: a system's test reads back what the system drew, not its edges blended by FXAA.
      */
     public static Engine engine(GlContext gl, int width, int height, List<String> settings, EngineSystem... systems) {
         List<EngineSystem> list = List.of(systems);
@@ -33,6 +35,7 @@ public final class GlTestSupport {
         if (all.keys().contains(WORLD)) {
             all.set(WORLD, "tile"); // before the test's own, so a test that names the world gets it
         }
+        all.set(ANTIALIAS, "off");
         settings.forEach(all::apply);
         return new Engine(gl, ShaderSources.classpath(), all, list, width, height);
     }

@@ -30,6 +30,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param cliffs      how rock is projected on steep slopes in the near material: from above only, or from above and
  *                    along X and Z, blended by the normal (triplanar), so cliffs are not stretched; read when the
  *                    world is built, since the near programs are compiled with it
+ * @param specularAa  specular anti-aliasing: each pixel's highlight widened by how much the lit normal turns across
+ *                    the pixel (Toksvig's lobe, the spread measured in screen space), so far bumps give a steady sheen
+ *                    instead of glints that come and go with every step of the camera
  */
 public record MaterialSettings(
         @Setting(doc = "where snow lies: snow-map (probabilistic map) or altitude-bands (plain height bands)")
@@ -44,7 +47,9 @@ public record MaterialSettings(
         @Setting(doc = "how the detail textures tile: repeat, quilted (Wang tiles) or stochastic (Heitz-Neyret)")
         Tiling tiling,
         @Setting(doc = "rock on steep slopes: planar (from above, stretched) or triplanar (blended by the normal)",
-                atStart = true) Cliffs cliffs) {
+                atStart = true) Cliffs cliffs,
+        @Setting(doc = "specular anti-aliasing: highlights widened by the normal's spread over the pixel")
+        boolean specularAa) {
 
     /** How snow is placed on the terrain. */
     public enum SnowMode {
@@ -111,7 +116,8 @@ public record MaterialSettings(
             150,    // texels (300 m on the default map): nearer, a baked texel spans several pixels of a 720-row view
                     // and the ground looks blurred; 75 (150 m) already shows it on figure 3's mountainside
             Tiling.REPEAT,
-            Cliffs.PLANAR); // triplanar costs about a tenth of the frame on valley.path (docs/terrain.md)
+            Cliffs.PLANAR, // triplanar costs about a tenth of the frame on valley.path (docs/terrain.md)
+            true);
 
     public static final SettingsGroup<MaterialSettings> SETTINGS =
             SettingsGroup.of("materials", MaterialSettings.class, DEFAULTS);

@@ -86,6 +86,7 @@ public final class TerrainMaterials implements Labelled {
             u.normalMap.set(settings.normalMap() ? 1 : 0);
             u.glossMap.set(settings.glossMap() ? 1 : 0);
             u.skyOcclusion.set(settings.skyOcclusion() ? 1 : 0);
+            u.specularAa.set(settings.specularAa() ? 1 : 0);
         }
     }
 
@@ -103,7 +104,7 @@ public final class TerrainMaterials implements Labelled {
 
     /**
      * The resolved uniform handles of material.glsl in one program: those of the layers (textures, scale, snow) and
-     * of the light (normal map, gloss map and sky occlusion switches), or of one of the two; the other part's handles are null.
+     * of the light (normal map, gloss map, sky occlusion and specular anti-aliasing switches), or of one of the two; the other part's handles are null.
      */
     public static final class Uniforms {
         private final ShaderProgram program;
@@ -117,6 +118,7 @@ public final class TerrainMaterials implements Labelled {
         private final Uniform.Int normalMap;
         private final Uniform.Int glossMap;
         private final Uniform.Float skyOcclusion;
+        private final Uniform.Float specularAa;
 
         private Uniforms(ShaderProgram program, boolean layers, boolean light) {
             this.program = program;
@@ -130,6 +132,7 @@ public final class TerrainMaterials implements Labelled {
             normalMap = light ? program.int1("uMatNormalMap") : null;
             glossMap = light ? program.int1("uMatGlossMap") : null;
             skyOcclusion = light ? program.float1("uMatSkyOcclusion") : null;
+            specularAa = light ? program.float1("uMatSpecularAa") : null;
         }
     }
 }
