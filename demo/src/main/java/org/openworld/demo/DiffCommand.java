@@ -10,6 +10,7 @@ import java.util.concurrent.Callable;
 import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -32,6 +33,9 @@ import picocli.CommandLine.Parameters;
         description = "Compare two pictures of one size: changed pixels, the mean and largest colour difference "
                 + "(CIEDE2000, ΔE00; about 1 is just noticeable) and where; --out draws where they differ. No OpenGL.")
 final class DiffCommand implements Callable<Integer> {
+
+    @Mixin
+    DevOption dev;
 
     @Parameters(index = "0", paramLabel = "A.png", description = "The first picture (the reference).")
     Path first;

@@ -4,11 +4,15 @@ import java.util.concurrent.Callable;
 import org.openworld.engine.core.SystemOrder;
 import org.openworld.engine.gl.GlContext;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code openworld info}: the OpenGL renderer and version, how the context was made, and the frame order. */
 @Command(name = "info", mixinStandardHelpOptions = true, description = "Print the OpenGL renderer, version and context mode, and the resolved frame order.")
 final class InfoCommand implements Callable<Integer> {
+
+    @Mixin
+    DevOption dev;
 
     @Option(names = "--frame", description = "Print only the resolved frame order (needs no OpenGL).")
     boolean frameOnly;

@@ -145,6 +145,15 @@ class ErrorMessagesTest {
                 && text.toString().contains("\tat "), "the stack trace under --dev: " + text);
     }
 
+    @Test
+    void everyCommandTakesTheDevThatTheBugReportAsksFor() {
+        CommandLine cli = new CommandLine(new Main());
+        List<String> without = cli.getSubcommands().entrySet().stream()
+                .filter(c -> !c.getKey().equals("help") && c.getValue().getCommandSpec().findOption("--dev") == null)
+                .map(java.util.Map.Entry::getKey).toList();
+        assertEquals(List.of(), without, "commands that refuse --dev, which the internal error's line offers");
+    }
+
     /** A forked JVM running the command line; its exit code and stderr. */
     private record Run(int code, String stderr) {
     }

@@ -123,15 +123,23 @@ public final class Image {
      */
     public void writePng(Path file) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
-        AtomicFiles.write(file, encode(file, (sink, pixels) -> STBImageWrite.stbi_write_png_to_func(sink, 0, width,
-                height, 4, pixels, width * 4)));
+        AtomicFiles.write(file, encodePng(file, width, height, 4, rgba));
     }
 
     /** Writes a JPEG at {@link #JPEG_QUALITY} (alpha dropped), as {@link #writePng} writes a PNG. */
     public void writeJpeg(Path file) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
-        AtomicFiles.write(file, encode(file, (sink, pixels) -> STBImageWrite.stbi_write_jpg_to_func(sink, 0, width,
-                height, 4, pixels, JPEG_QUALITY) != 0));
+        AtomicFiles.write(file, encode(file, rgba, (sink, pixels) -> STBImageWrite.stbi_write_jpg_to_func(sink, 0,
+                width, height, 4, pixels, JPEG_QUALITY) != 0));
+    }
+
+    /**
+     * A PNG file's bytes, encoded in memory by stb_image_write: 8-bit {@code pixels}, {@code channels} per pixel
+     * (1 grey, 2 grey and alpha, 3 RGB, 4 RGBA), top row first; {@code file} only names it in an error.
+     */
+    public static byte[] encodePng(Path file, int width, int height, int channels, byte[] pixels) throws IOException {
+        return encode(file, pixels, (sink, data) -> STBImageWrite.stbi_write_png_to_func(sink, 0, width, height,
+                channels, data, width * channels));
     }
 
     /** One of stb_image_write's {@code *_to_func} calls, handed the sink and the pixels. */
@@ -141,13 +149,13 @@ public final class Image {
     }
 
     /** The encoded file in memory: stb hands its output to the sink in chunks. */
-    private byte[] encode(Path file, Encoder encoder) throws IOException {
+    private static byte[] encode(Path file, byte[] data, Encoder encoder) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-        ByteBuffer pixels = MemoryUtil.memAlloc(rgba.length).put(rgba).flip();
-        try (STBIWriteCallback sink = STBIWriteCallback.create((context, data, size) -> {
-            byte[] chunk = new byte[size];
-            STBIWriteCallback.getData(data, size).get(chunk);
-            bytes.write(chunk, 0, size);
+        ByteBuffer pixels = MemoryUtil.memAlloc(data.length).put(data).flip();
+        try (STBIWriteCallback sink = STBIWriteCallback.create((context, chunk, size) -> {
+            byte[] copy = new byte[size];
+            STBIWriteCallback.getData(chunk, size).get(copy);
+            bytes.write(copy, 0, size);
         })) {
             if (!encoder.encode(sink, pixels)) {
                 throw new IOException(file + ": stb_image_write could not encode the picture");
