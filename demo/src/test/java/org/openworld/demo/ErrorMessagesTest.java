@@ -45,6 +45,13 @@ class ErrorMessagesTest {
     }
 
     @Test
+    void aCameraBeyondTheRenderersReachIsRefusedWithTheLimit() {
+        userMistake("'1e9,400,1e9,45,-10': x is 1e9 m, beyond the renderer's reach: expected -1000000 .. 1000000 m "
+                + "(1000 km from the origin; float32 positions on the GPU)", "shot", "--out",
+                dir.resolve("x.png").toString(), "--camera", "1e9,400,1e9,45,-10");
+    }
+
+    @Test
     void anUnknownPresetNamesTheValidOnes() {
         userMistake("unknown preset 'fast': expected one of low, default, ultra, paper", "settings", "--preset", "fast");
     }
