@@ -109,6 +109,10 @@ final class HeightmapCommand implements Callable<Integer> {
             if (repeat != 1) {
                 throw new UserError("--overview makes the overview once; leave out --repeat");
             }
+            if (terrain.world() == TerrainSettings.World.TILE) {
+                throw new UserError("--overview pictures the unbounded world, not terrain.world=tile; leave out "
+                        + "--overview to make the tile's maps");
+            }
             Outputs.folder(out);
             Outputs.png(out.resolve(HEIGHT_PNG), false);
             Outputs.png(out.resolve(WorldOverview.RELIEF_PNG), false);

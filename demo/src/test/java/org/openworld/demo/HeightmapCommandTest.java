@@ -165,6 +165,9 @@ class HeightmapCommandTest {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
                 "--set", "terrain.import-file=" + dir.resolve("map.png")));
         assertTrue(console.stderr().contains("terrain.import-file"), console.stderr());
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
+                "--set", "terrain.world=tile"));
+        assertTrue(console.stderr().contains("not terrain.world=tile"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
 }

@@ -123,6 +123,12 @@ public final class Settings {
         set(assignment.substring(0, eq).trim(), assignment.substring(eq + 1).trim());
     }
 
+    /** Whether a key names a file ({@link Setting#file}). */
+    public boolean isFile(String key) {
+        return groups.values().stream().flatMap(g -> g.keys().stream())
+                .anyMatch(k -> k.key().equals(key) && k.doc().file());
+    }
+
     /** Sets one key from text. */
     public void set(String key, String text) {
         if (switches.containsKey(key)) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
@@ -52,7 +53,7 @@ public final class SettingsFile {
         } catch (IOException e) {
             throw new SettingsException("cannot read settings file " + file + ": " + e.getMessage());
         }
-        apply(file.toString(), text, settings);
+        apply(file.toString(), file.toAbsolutePath().getParent(), text, settings);
     }
 
     /**
@@ -67,7 +68,7 @@ public final class SettingsFile {
             if (in == null) {
                 return false;
             }
-            apply(name, TextFile.decode(in.readAllBytes()), settings);
+            apply(name, null, TextFile.decode(in.readAllBytes()), settings);
             return true;
         } catch (TextFile.NotTextException e) {
             throw new SettingsException("settings file " + name + " is " + e.getMessage());
@@ -76,8 +77,11 @@ public final class SettingsFile {
         }
     }
 
-    /** Applies each {@code key=value} line of {@code text}; {@code source} names the file in an error. */
-    private static void apply(String source, String text, Settings settings) {
+    /**
+     * Applies each {@code key=value} line of {@code text}; {@code source} names the file in an error, and a relative
+     * file name ({@link Setting#file}) is resolved against {@code folder}, the file's folder (none for a resource).
+     */
+    private static void apply(String source, Path folder, String text, Settings settings) {
         List<String> lines = text.lines().toList();
         for (int i = 0; i < lines.size(); i++) {
             String line = lines.get(i).strip();
@@ -85,10 +89,28 @@ public final class SettingsFile {
                 continue;
             }
             try {
-                settings.apply(line);
+                settings.apply(resolved(line, folder, settings));
             } catch (SettingsException e) {
                 throw new SettingsException(source + ":" + (i + 1) + ": " + e.getMessage());
             }
+        }
+    }
+
+    /** A {@code key=value} line whose value is a relative file name, resolved against {@code folder}. */
+    private static String resolved(String line, Path folder, Settings settings) {
+        int eq = line.indexOf('=');
+        if (folder == null || eq <= 0) {
+            return line;
+        }
+        String key = line.substring(0, eq).trim();
+        String value = line.substring(eq + 1).trim();
+        try {
+            if (value.isEmpty() || !settings.isFile(key) || Path.of(value).isAbsolute()) {
+                return line;
+            }
+            return key + "=" + folder.resolve(value).normalize();
+        } catch (InvalidPathException e) {
+            return line; // not a file name at all: the setting's own check names it
         }
     }
 }
