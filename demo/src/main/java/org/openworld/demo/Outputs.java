@@ -111,6 +111,7 @@ final class Outputs {
      * keeps whatever else the folder holds ({@code AtomicFiles.replaceFolder}).
      */
     static void runFolder(Path dir, Set<String> names) {
+        notEmpty(dir);
         Path absolute = dir.toAbsolutePath();
         folder(absolute.getParent());
         if (Files.exists(dir) && !Files.isDirectory(dir)) {

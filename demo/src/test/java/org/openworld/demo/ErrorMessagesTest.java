@@ -132,9 +132,18 @@ class ErrorMessagesTest {
     @Test
     void aMisspeltOptionIsOneLineWithoutTheUsage() {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("settings", "--sed", "3"));
-        assertTrue(console.stderr().startsWith("openworld: Unknown options: '--sed', '3' ('openworld settings --help' "
-                + "lists the options)"), console.stderr());
+        assertTrue(console.stderr().startsWith("openworld: Unknown options: '--sed', '3'; did you mean --seed"),
+                console.stderr());
+        assertTrue(console.stderr().strip().endsWith("('openworld settings --help' lists the options)"),
+                console.stderr());
+        assertEquals(1, console.stderr().lines().count(), "the suggestion in the same line: " + console.stderr());
         assertFalse(console.stderr().contains("Usage:"), console.stderr());
+    }
+
+    @Test
+    void aMisspeltCommandIsOneLineWithTheSuggestion() {
+        userMistake("openworld: Unmatched arguments from index 0: 'shoot', '--out', 'x.png'; did you mean shot?",
+                "shoot", "--out", "x.png");
     }
 
     @Test
