@@ -11,7 +11,7 @@ import org.openworld.engine.failure.UserFacing;
 /**
  * An output that could not be written, for a reason of the operating system (a full disk, a folder removed
  * meanwhile, a lost permission): the file the user asked for and the system's reason, with the earlier output kept
- * ({@link AtomicFiles}), e.g. {@code /mnt/full/x.png: cannot write: No space left on device (the earlier file is
+ * ({@link AtomicFiles}), e.g. {@code /mnt/full/x.png: cannot write: No space left on device (the earlier output, if any, is
  * kept)}. It is the user's to correct, like an {@code --out} that cannot be made: exit 2.
  *
  * <p>The JDK reports a full disk as a bare {@code IOException("No space left on device")}, and an encoder such as
@@ -23,7 +23,7 @@ public final class WriteFailure extends IOException implements UserFacing {
     private final Path file;
 
     public WriteFailure(Path file, IOException cause) {
-        super(file + ": cannot write: " + reason(cause) + " (the earlier file, if any, is kept)", cause);
+        super(file + ": cannot write: " + reason(cause) + " (the earlier output, if any, is kept)", cause);
         this.file = file;
     }
 
