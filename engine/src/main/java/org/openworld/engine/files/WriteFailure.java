@@ -11,8 +11,8 @@ import org.openworld.engine.failure.UserFacing;
 /**
  * An output that could not be written, for a reason of the operating system (a full disk, a folder removed
  * meanwhile, a lost permission): the file the user asked for and the system's reason, with the earlier output kept
- * ({@link AtomicFiles}), e.g. {@code /mnt/full/x.png: cannot write: No space left on device (the earlier output, if any, is
- * kept)}. It is the user's to correct, like an {@code --out} that cannot be made: exit 2.
+ * ({@link AtomicFiles}), e.g. {@code /mnt/full/x.png: cannot write: No space left on device (the earlier output, if
+ * any, is kept)}. It is the user's to correct, like an {@code --out} that cannot be made: exit 2.
  *
  * <p>The JDK reports a full disk as a bare {@code IOException("No space left on device")}, and an encoder such as
  * ImageIO's PNG writer wraps it in its own ("I/O error writing PNG file!"); the reason is found as the innermost
