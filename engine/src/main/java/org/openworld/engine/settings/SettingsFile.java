@@ -15,7 +15,9 @@ import java.util.List;
  * blank lines are ignored. The settings panel saves every key, so a file read
  * into fresh settings gives the same settings; a hand-written file may hold just a few keys.
  * {@code openworld --config FILE} reads one, with any {@code --set} given after it winning. The file is read as UTF-8
- * with a leading byte order mark skipped ({@link TextFile}).
+ * with a leading byte order mark skipped ({@link TextFile}). A file name ({@link Setting#file}) given relative in a
+ * file is read from the file's own folder; saved, it is written absolute, so it names the same file wherever the
+ * settings file is read from.
  */
 public final class SettingsFile {
 
@@ -28,7 +30,8 @@ public final class SettingsFile {
                 # OpenWorld settings: one key=value per line, as --set takes them ('openworld settings' lists them).
                 # Use with: openworld --config FILE  (a --set after it wins). Lines starting with '#' are comments.
                 """);
-        settings.asExactText().forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
+        settings.asExactText().forEach((key, value) -> text.append(key).append('=')
+                .append(settings.isFile(key) ? absolute(value) : value).append('\n'));
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null) {
             Files.createDirectories(parent);
@@ -93,6 +96,18 @@ public final class SettingsFile {
             } catch (SettingsException e) {
                 throw new SettingsException(source + ":" + (i + 1) + ": " + e.getMessage());
             }
+        }
+    }
+
+    /**
+     * A file name as a saved file holds it: absolute, since a relative one would be read back from the settings
+     * file's folder ({@link #read}), not from the current folder it meant. A value that is no file name is kept.
+     */
+    private static String absolute(String value) {
+        try {
+            return value.isBlank() ? value : Path.of(value.strip()).toAbsolutePath().normalize().toString();
+        } catch (InvalidPathException e) {
+            return value;
         }
     }
 
