@@ -12,6 +12,7 @@ import org.openworld.engine.EngineSettings;
 import org.openworld.engine.bench.BenchComparison;
 import org.openworld.engine.bench.BenchReport;
 import org.openworld.engine.bench.FrameRecord;
+import org.openworld.engine.bench.FrameTimeChart;
 import org.openworld.engine.bench.MemoryMeter;
 import org.openworld.engine.bench.RunInfo;
 import org.openworld.engine.bench.Summary;
@@ -72,6 +73,9 @@ final class BenchCommand implements Callable<Integer> {
     /** Most frames of one run, warm-up included: about 4.6 hours at 60 fps, every record held in memory. */
     static final int MAX_FRAMES = 1_000_000;
 
+    /** Longest silence between two progress lines: 10 s, so a slow machine's run still shows it is alive. */
+    private static final long PROGRESS_EVERY_NS = 10_000_000_000L;
+
     /** The fixed simulation step of this run, seconds. */
     private double step;
 
@@ -90,6 +94,7 @@ final class BenchCommand implements Callable<Integer> {
         CameraPath cameraPath = CameraPathParser.parse(path);
         checkFrameCount(cameraPath);
         Outputs.runFolder(out, BenchReport.FILES);
+        FrameTimeChart.warmUpInBackground(); // while the world is built, so a stopped run writes its chart quickly
         try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld bench");
              StopSignal stop = StopSignal.install()) {
             var engine = launch.engine;
@@ -101,6 +106,7 @@ final class BenchCommand implements Callable<Integer> {
             List<FrameRecord> records = new ArrayList<>();
             int total = warmup + recorded;
             int reportEvery = Math.max(1, total / 10);
+            long lastReport = System.nanoTime();
             System.err.printf("bench: %s, %d warm-up + %d frames at %dx%d on %s%n", path, warmup, recorded,
                     engine.width(), engine.height(), launch.gl.renderer());
             // Warm-up frames hold the path's first pose; recorded frame k shows the path at k steps.
@@ -117,8 +123,11 @@ final class BenchCommand implements Callable<Integer> {
                     memory.sample();
                 }
                 engine.collectFrames(false, r -> keep(r, records));
-                if ((rendered + 1) % reportEvery == 0) {
-                    System.err.printf("bench: %d/%d frames%n", rendered + 1, total);
+                if ((rendered + 1) % reportEvery == 0 || System.nanoTime() - lastReport > PROGRESS_EVERY_NS) {
+                    System.err.println(rendered < warmup
+                            ? String.format("bench: warm-up frame %d of %d", rendered + 1, warmup)
+                            : String.format("bench: %d of %d frames recorded", rendered + 1 - warmup, recorded));
+                    lastReport = System.nanoTime();
                 }
             }
             engine.collectFrames(true, r -> keep(r, records));

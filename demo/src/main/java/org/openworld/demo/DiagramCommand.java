@@ -19,6 +19,7 @@ import java.util.concurrent.Callable;
 import javax.imageio.ImageIO;
 import org.openworld.engine.files.AtomicFiles;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -33,6 +34,9 @@ import picocli.CommandLine.Option;
         description = "Draw the paper's figure 7, the scattering sums: the eye, the view ray's outer samples, the "
                 + "inner rays to the sun and the atmosphere's shell.")
 final class DiagramCommand implements Callable<Integer> {
+
+    @Mixin
+    DevOption dev;
 
     private static final int WIDTH = 1200;
     private static final int HEIGHT = 760;

@@ -10,6 +10,7 @@ import java.util.concurrent.Callable;
 import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -33,6 +34,9 @@ import picocli.CommandLine.Parameters;
                 + "(CIEDE2000, ΔE00; about 1 is just noticeable) and where; --out draws where they differ. No OpenGL.")
 final class DiffCommand implements Callable<Integer> {
 
+    @Mixin
+    DevOption dev;
+
     @Parameters(index = "0", paramLabel = "A.png", description = "The first picture (the reference).")
     Path first;
 
@@ -40,7 +44,7 @@ final class DiffCommand implements Callable<Integer> {
     Path second;
 
     @Option(names = "--out", paramLabel = "D.png",
-            description = "Write a difference image: A in grey at half brightness, each changed pixel from red "
+            description = "Write a difference image (PNG, or JPEG for a .jpg name; never one of the inputs): A in grey at half brightness, each changed pixel from red "
                     + "(the smallest difference) to yellow (the largest).")
     Path out;
 
@@ -58,7 +62,8 @@ final class DiffCommand implements Callable<Integer> {
             throw new UserError("--threshold " + threshold + ": expected a colour difference of 0 or more");
         }
         if (out != null) {
-            Outputs.png(out, force);
+            Outputs.picture(out, force);
+            Outputs.notAnInput(out, first, second);
         }
         Image a = read(first);
         Image b = read(second);
@@ -79,7 +84,7 @@ final class DiffCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "max ΔE00:    %.4f at (%d, %d), x from the left, y from the top%n",
                 diff.maxDeltaE(), diff.maxX(), diff.maxY());
         if (out != null) {
-            diff.differenceImage(threshold).writePng(out);
+            diff.differenceImage(threshold).write(out);
             System.out.println("wrote " + out + ": grey where equal, a faint red cast where changed by ΔE00 "
                     + threshold + " or less, red to yellow (ΔE00 " + String.format(Locale.ROOT, "%.4f",
                     diff.maxDeltaE()) + ") where noticeable");

@@ -21,6 +21,7 @@ import org.openworld.engine.sky.SkyReference;
 import org.openworld.engine.sky.SkySettings;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -39,6 +40,9 @@ import picocli.CommandLine.Option;
         description = "Remake the paper's figures headless into a folder, with an index.html gallery that shows each "
                 + "picture, the paper's caption, what to look for and the command that makes it.")
 final class FiguresCommand implements Callable<Integer> {
+
+    @Mixin
+    DevOption dev;
 
     private static final DateTimeFormatter DATE = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm xxx", Locale.ROOT);
 

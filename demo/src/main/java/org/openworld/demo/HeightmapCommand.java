@@ -8,7 +8,6 @@ import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
-import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -16,6 +15,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import javax.imageio.ImageIO;
 import org.knowm.xchart.BitmapEncoder;
@@ -25,11 +25,10 @@ import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.XYSeries.XYSeriesRenderStyle;
 import org.knowm.xchart.style.Styler.LegendPosition;
 import org.knowm.xchart.style.markers.SeriesMarkers;
-import org.lwjgl.stb.STBImageWrite;
-import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.Engine;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.files.AtomicFiles;
+import org.openworld.engine.gl.Image;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.terrain.HeightMap;
 import org.openworld.engine.terrain.PowerSpectrum;
@@ -38,6 +37,7 @@ import org.openworld.engine.terrain.StageTimes;
 import org.openworld.engine.terrain.TerrainData;
 import org.openworld.engine.terrain.TerrainSettings;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -54,6 +54,9 @@ import picocli.CommandLine.Option;
                 + "snow.png and spectrum.png, and time each stage. With --overview, picture 64 km of the unbounded "
                 + "world instead.")
 final class HeightmapCommand implements Callable<Integer> {
+
+    @Mixin
+    DevOption dev;
 
     static final String HEIGHT_PNG = "height.png";
     static final String SNOW_PNG = "snow.png";
@@ -106,10 +109,16 @@ final class HeightmapCommand implements Callable<Integer> {
             if (repeat != 1) {
                 throw new UserError("--overview makes the overview once; leave out --repeat");
             }
+            if (terrain.world() == TerrainSettings.World.TILE) {
+                throw new UserError("--overview pictures the unbounded world, not terrain.world=tile; leave out "
+                        + "--overview to make the tile's maps");
+            }
+            Outputs.folder(out);
             Outputs.png(out.resolve(HEIGHT_PNG), false);
             Outputs.png(out.resolve(WorldOverview.RELIEF_PNG), false);
             return WorldOverview.write(terrain, worldSeed, out);
         }
+        Outputs.folder(out);
         for (String name : List.of(HEIGHT_PNG, SNOW_PNG, SPECTRUM_PNG)) {
             Outputs.png(out.resolve(name), false);
         }
@@ -146,21 +155,28 @@ final class HeightmapCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "peak heap: %.0f MiB (sum of the heap pools' peaks%s)%n",
                 peakHeap / BYTES_PER_MIB, repeat > 1 ? ", largest run" : "");
 
-        // 2. the spectrum and its slope
+        // 2. the spectrum and its slope: none for a map whose power lies in fewer than two rings (a regular
+        // pattern such as a checkerboard of two heights, whose power is all at one frequency)
         HeightMap base = data.pyramid().base();
         PowerSpectrum spectrum = PowerSpectrum.of(base);
         // a generated map over the band it was synthesised in, unless the map is too small to hold two of its rings
         boolean band = !terrain.imports()
                 && spectrum.ringsWithin(1 / terrain.maxWavelength(), 1 / terrain.minWavelength()) >= 2;
-        PowerSpectrum.Fit fit = band ? spectrum.fit(terrain) : spectrum.fit(0, Double.POSITIVE_INFINITY);
-        if (terrain.imports()) {
-            System.out.printf(Locale.ROOT, "spectrum slope: %.2f (power ~ 1/f^%.2f)%n", fit.slope(), -fit.slope());
+        int rings = spectrum.ringsWithin(0, Double.POSITIVE_INFINITY);
+        Optional<PowerSpectrum.Fit> fit = band ? Optional.of(spectrum.fit(terrain))
+                : rings >= 2 ? Optional.of(spectrum.fit(0, Double.POSITIVE_INFINITY)) : Optional.empty();
+        if (fit.isEmpty()) {
+            System.out.printf(Locale.ROOT, "spectrum slope: none: the map's power lies in %d ring(s) of the spectrum, "
+                    + "too few for a line (a regular pattern, not a relief)%n", rings);
+        } else if (terrain.imports()) {
+            System.out.printf(Locale.ROOT, "spectrum slope: %.2f (power ~ 1/f^%.2f)%n", fit.get().slope(),
+                    -fit.get().slope());
         } else if (band) {
-            System.out.printf(Locale.ROOT, "spectrum slope: %.2f (expected -2 beta = %.2f)%n", fit.slope(),
+            System.out.printf(Locale.ROOT, "spectrum slope: %.2f (expected -2 beta = %.2f)%n", fit.get().slope(),
                     -2 * terrain.beta());
         } else {
             System.out.printf(Locale.ROOT, "spectrum slope: %.2f over all rings: the band of %.0f-%.0f m holds fewer "
-                    + "than two rings of this %.0f m map (expected -2 beta = %.2f)%n", fit.slope(),
+                    + "than two rings of this %.0f m map (expected -2 beta = %.2f)%n", fit.get().slope(),
                     terrain.minWavelength(), terrain.maxWavelength(), base.extent(), -2 * terrain.beta());
         }
 
@@ -243,21 +259,11 @@ final class HeightmapCommand implements Callable<Integer> {
 
     /** The snow map as an 8-bit grayscale PNG through stb_image_write: white snow, black bare ground. */
     private static void writeSnow(SnowMap snow, Path file) throws IOException {
-        byte[] coverage = snow.coverage();
-        ByteBuffer pixels = MemoryUtil.memAlloc(coverage.length).put(coverage).flip();
-        try {
-            AtomicFiles.write(file, temp -> {
-                if (!STBImageWrite.stbi_write_png(temp.toString(), snow.size(), snow.size(), 1, pixels, snow.size())) {
-                    throw new IOException(file + ": could not write the PNG (stb_image_write failed)");
-                }
-            });
-        } finally {
-            MemoryUtil.memFree(pixels);
-        }
+        AtomicFiles.write(file, Image.encodePng(file, snow.size(), snow.size(), 1, snow.coverage()));
     }
 
-    /** Log-log chart: the rings' power, the fitted line and, for a generated map, the line of slope −2β. */
-    private static XYChart chart(PowerSpectrum spectrum, PowerSpectrum.Fit fit, TerrainSettings terrain) {
+    /** Log-log chart: the rings' power, the fitted line if any and, for a generated map, the line of slope −2β. */
+    private static XYChart chart(PowerSpectrum spectrum, Optional<PowerSpectrum.Fit> fitted, TerrainSettings terrain) {
         XYChart chart = new XYChartBuilder().width(CHART_WIDTH_PX).height(CHART_HEIGHT_PX)
                 .title("Radially averaged power spectrum of the height map")
                 .xAxisTitle("frequency (cycles/m)").yAxisTitle("mean |DFT|² per ring (m², unnormalised)").build();
@@ -266,12 +272,20 @@ final class HeightmapCommand implements Callable<Integer> {
         chart.getStyler().setLegendPosition(LegendPosition.InsideSW);
 
         List<PowerSpectrum.Bin> bins = spectrum.bins().stream().filter(b -> b.power() > 0).toList();
+        if (bins.isEmpty()) {
+            chart.setTitle(chart.getTitle() + ": no ring holds power");
+            return chart;
+        }
         XYSeries rings = chart.addSeries("power per ring",
                 bins.stream().mapToDouble(PowerSpectrum.Bin::frequency).toArray(),
                 bins.stream().mapToDouble(PowerSpectrum.Bin::power).toArray());
         rings.setXYSeriesRenderStyle(XYSeriesRenderStyle.Scatter).setMarker(SeriesMarkers.CIRCLE);
         rings.setMarkerColor(new Color(0x0072B2));
 
+        if (fitted.isEmpty()) {
+            return chart;
+        }
+        PowerSpectrum.Fit fit = fitted.get();
         // the lines span the rings, or for a generated map the band between its cut-offs
         double lo = bins.get(0).frequency();
         double hi = bins.get(bins.size() - 1).frequency();

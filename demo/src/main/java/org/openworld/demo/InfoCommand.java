@@ -16,6 +16,9 @@ import picocli.CommandLine.Option;
         + "context mode, what every headless mode says here, the EGL devices, and the resolved frame order.")
 final class InfoCommand implements Callable<Integer> {
 
+    @Mixin
+    DevOption dev;
+
     @Option(names = "--frame", description = "Print only the resolved frame order (needs no OpenGL).")
     boolean frameOnly;
 

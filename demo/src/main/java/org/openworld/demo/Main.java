@@ -3,6 +3,7 @@ package org.openworld.demo;
 import java.io.PrintWriter;
 import java.nio.file.FileSystemException;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import org.openworld.engine.failure.ExitCode;
@@ -58,15 +59,17 @@ public final class Main {
     /**
      * A mistake in the command line that picocli found: its message and where to read about the options, one line
      * (picocli's default prints the whole usage after it, which buries the message), with picocli's "did you mean"
-     * for a misspelt option.
+     * for a misspelt option or command in the same line.
      */
     private static int reportUsage(CommandLine.ParameterException e, String[] args) {
         CommandLine command = e.getCommandLine();
         PrintWriter err = command.getErr();
         String name = command.getCommandSpec().qualifiedName();
-        err.println(command.getCommandSpec().root().name() + ": " + e.getMessage() + " ('" + name
-                + " --help' lists the options)");
-        CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
+        List<String> suggestions = e instanceof CommandLine.UnmatchedArgumentException unmatched
+                ? unmatched.getSuggestions() : List.of();
+        err.println(command.getCommandSpec().root().name() + ": " + e.getMessage()
+                + (suggestions.isEmpty() ? "" : "; did you mean " + String.join(" or ", suggestions) + "?")
+                + " ('" + name + " --help' lists the options)");
         return ExitCode.USER_MISTAKE.code();
     }
 

@@ -2,13 +2,13 @@ package org.openworld.demo;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileSystemException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.Locale;
 import java.util.Set;
+import org.openworld.engine.files.WriteFailure;
+import org.openworld.engine.gl.Image;
 
 /**
  * Checks a command's {@code --out} before any work, so a run is never lost for want of a place to write it: every
@@ -19,31 +19,34 @@ import java.util.Set;
  * e.g. {@code --out /tmp/f/run: cannot create the folder: Not a directory}.
  *
  * <p>Limits: the check cannot promise the write (the disk may fill, the folder may be removed meanwhile); the
- * writes themselves are atomic ({@link org.openworld.engine.files.AtomicFiles}), so such a failure leaves the old
- * output whole.
+ * writes themselves are atomic and checked ({@link org.openworld.engine.files.AtomicFiles}), so such a failure is a
+ * {@link WriteFailure} (exit 2, the file and the reason) and leaves the old output whole.
  */
 final class Outputs {
 
     /** The first eight bytes of every PNG file. */
     private static final byte[] PNG_SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    /** The first three bytes of every JPEG file: the start-of-image marker and the next marker's 0xFF. */
+    private static final byte[] JPEG_SIGNATURE = {(byte) 0xFF, (byte) 0xD8, (byte) 0xFF};
 
     private Outputs() {
     }
 
     /** An output folder: created if missing, and writable. */
     static void folder(Path dir) {
+        notEmpty(dir);
         if (Files.exists(dir) && !Files.isDirectory(dir)) {
             throw refused(dir, "is a file, not a folder; give a folder (it is created if missing)");
         }
         try {
             Files.createDirectories(dir);
         } catch (IOException e) {
-            throw refused(dir, "cannot create the folder: " + reason(e));
+            throw refused(dir, "cannot create the folder: " + WriteFailure.reason(e));
         }
         try {
             Files.delete(Files.createTempFile(dir, ".openworld-probe-", ".tmp"));
         } catch (IOException e) {
-            throw refused(dir, "cannot write in the folder: " + reason(e));
+            throw refused(dir, "cannot write in the folder: " + WriteFailure.reason(e));
         }
     }
 
@@ -52,12 +55,53 @@ final class Outputs {
      * other file is overwritten only with {@code force}.
      */
     static void png(Path file, boolean force) {
-        folder(file.toAbsolutePath().getParent());
-        if (Files.isDirectory(file)) {
-            throw refused(file, "is a folder; give a file name ending in .png");
+        notEmpty(file);
+        if (!String.valueOf(file.getFileName()).toLowerCase(Locale.ROOT).endsWith(".png")) {
+            throw refused(file, "is not a .png name; this command writes PNG files only");
         }
-        if (Files.exists(file) && !force && !isPng(file)) {
-            throw refused(file, "exists and is not a PNG; give another name, or --force to overwrite it");
+        picture(file, force);
+    }
+
+    /**
+     * A picture to write, PNG or JPEG by its name ({@link Image#write}): a name ending in {@code .png},
+     * {@code .jpg} or {@code .jpeg}, its folder as {@link #folder}, and the file absent or a picture (PNG or JPEG),
+     * which is overwritten; any other file is overwritten only with {@code force}.
+     */
+    static void picture(Path file, boolean force) {
+        notEmpty(file);
+        String name = String.valueOf(file.getFileName()).toLowerCase(Locale.ROOT);
+        if (Files.isDirectory(file)) {
+            throw refused(file, "is a folder; give a file name ending in .png or .jpg");
+        }
+        if (!name.endsWith(".png") && !Image.isJpegName(file)) {
+            throw refused(file, "has no picture extension; give a name ending in .png (PNG) or .jpg (JPEG)");
+        }
+        folder(file.toAbsolutePath().getParent());
+        if (Files.exists(file) && !force && !isPicture(file)) {
+            throw refused(file, "exists and is not a PNG or JPEG; give another name, or --force to overwrite it");
+        }
+    }
+
+    /**
+     * Refuses an output that is one of the command's inputs (the same file, also through a link or another spelling
+     * of its path): writing it would replace what is being read, e.g. {@code diff a.png a.png --out a.png}.
+     */
+    static void notAnInput(Path out, Path... inputs) {
+        for (Path input : inputs) {
+            try {
+                if (Files.exists(out) && Files.exists(input) && Files.isSameFile(out, input)) {
+                    throw refused(out, "is also an input (" + input + "); give the output another name");
+                }
+            } catch (IOException e) {
+                throw refused(out, "cannot compare it with the input " + input + ": " + WriteFailure.reason(e));
+            }
+        }
+    }
+
+    /** An empty {@code --out} (a script's unset variable) names the current folder: refused as what it is. */
+    private static void notEmpty(Path path) {
+        if (path.toString().isBlank()) {
+            throw new UserError("--out is empty: give a file or folder name");
         }
     }
 
@@ -67,6 +111,7 @@ final class Outputs {
      * keeps whatever else the folder holds ({@code AtomicFiles.replaceFolder}).
      */
     static void runFolder(Path dir, Set<String> names) {
+        notEmpty(dir);
         Path absolute = dir.toAbsolutePath();
         folder(absolute.getParent());
         if (Files.exists(dir) && !Files.isDirectory(dir)) {
@@ -78,33 +123,18 @@ final class Outputs {
         }
     }
 
-    private static boolean isPng(Path file) {
+    private static boolean isPicture(Path file) {
         try (InputStream in = Files.newInputStream(file)) {
-            return Arrays.equals(in.readNBytes(PNG_SIGNATURE.length), PNG_SIGNATURE);
+            byte[] start = in.readNBytes(PNG_SIGNATURE.length);
+            return Arrays.equals(start, PNG_SIGNATURE)
+                    || start.length >= JPEG_SIGNATURE.length
+                    && Arrays.equals(start, 0, JPEG_SIGNATURE.length, JPEG_SIGNATURE, 0, JPEG_SIGNATURE.length);
         } catch (IOException e) {
-            throw refused(file, "cannot read it to check it is a PNG: " + reason(e));
+            throw refused(file, "cannot read it to check it is a picture: " + WriteFailure.reason(e));
         }
     }
 
     private static UserError refused(Path path, String why) {
         return new UserError("--out " + path + ": " + why);
-    }
-
-    /**
-     * The operating system's reason, as {@code strerror} says it: the JDK keeps it in
-     * {@link FileSystemException#getReason()}, except for the two errors it gives their own exception type and no
-     * reason.
-     */
-    static String reason(IOException e) {
-        if (e instanceof FileSystemException f && f.getReason() != null) {
-            return f.getReason();
-        }
-        if (e instanceof NoSuchFileException) {
-            return "No such file or directory";
-        }
-        if (e instanceof AccessDeniedException) {
-            return "Permission denied";
-        }
-        return e.getMessage();
     }
 }

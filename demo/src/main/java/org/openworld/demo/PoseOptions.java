@@ -53,6 +53,13 @@ final class PoseOptions {
                             + " (x,y,z,yaw,pitch, e.g. " + EXAMPLE + ")");
                 }
             }
+            for (int i = 0; i < 3; i++) {
+                if (!CameraPose.drawable(v[i])) {
+                    throw new picocli.CommandLine.TypeConversionException("'" + text + "': " + FIELDS[i] + " is "
+                            + parts[i].trim() + " m, beyond the renderer's reach: expected -1000000 .. 1000000 m "
+                            + "(1000 km from the origin; float32 positions on the GPU)");
+                }
+            }
             if (v[4] < -89 || v[4] > 89) {
                 throw new picocli.CommandLine.TypeConversionException("'" + text + "': pitch must be within -89..89 degrees");
             }

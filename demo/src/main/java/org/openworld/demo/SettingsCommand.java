@@ -14,7 +14,6 @@ final class SettingsCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         var settings = Launch.settings(render);
-        System.out.printf("%-28s %-10s %-6s %-22s %s%n", "KEY", "DEFAULT", "UNIT", "VALID", "MEANING");
         System.out.print(settings.describe());
         if (render.preset != null) {
             System.out.println();

@@ -11,7 +11,7 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code openworld shot}: one image, headless by default. */
-@Command(name = "shot", mixinStandardHelpOptions = true, description = "Render one image to a PNG file (headless unless --window).")
+@Command(name = "shot", mixinStandardHelpOptions = true, description = "Render one image to a PNG or JPEG file (headless unless --window).")
 final class ShotCommand implements Callable<Integer> {
 
     @Mixin
@@ -20,7 +20,8 @@ final class ShotCommand implements Callable<Integer> {
     @Mixin
     PoseOptions pose;
 
-    @Option(names = "--out", paramLabel = "FILE.png", required = true, description = "The PNG file to write.")
+    @Option(names = "--out", paramLabel = "FILE.png", required = true,
+            description = "The picture to write: a PNG, or a JPEG for a name ending in .jpg or .jpeg.")
     Path out;
 
     @Option(names = "--force", description = "Overwrite --out even if it is a file other than a PNG.")
@@ -47,11 +48,11 @@ final class ShotCommand implements Callable<Integer> {
 
     /**
      * Renders the image these options describe and writes it to {@code --out} (checked first, {@link Outputs#png};
-     * written whole or not at all, {@link Image#writePng}): the whole of {@code shot}, less its printed line, so {@code openworld figures} makes each picture exactly as its printed command would.
+     * written whole or not at all, {@link Image#write}): the whole of {@code shot}, less its printed line, so {@code openworld figures} makes each picture exactly as its printed command would.
      */
     Result take() throws Exception {
         var path = Poses.loadPath(pose);
-        Outputs.png(out, force);
+        Outputs.picture(out, force);
         long start = System.nanoTime();
         try (Launch launch = ui ? Launch.startWithGui(render, render.windowed(false), "OpenWorld shot")
                 : Launch.start(render, render.windowed(false), "OpenWorld shot")) {
@@ -63,7 +64,7 @@ final class ShotCommand implements Callable<Integer> {
                 launch.engine.render();
             }
             Image image = opaque(launch.engine.readImage());
-            image.writePng(out);
+            image.write(out);
             return new Result(image, launch.gl.renderer(), launch.gl.mode().toString(),
                     (System.nanoTime() - start) / 1e6);
         }

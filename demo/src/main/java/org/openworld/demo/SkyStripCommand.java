@@ -21,6 +21,7 @@ import org.openworld.engine.sky.AtmosphereSettings.Scattering;
 import org.openworld.engine.sky.SkyPicture;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -35,6 +36,9 @@ import picocli.CommandLine.Option;
         description = "Draw the sky on the CPU at several wavelength counts or samples per sum, each with its "
                 + "CIEDE2000 difference to a finely sampled reference printed under it (the paper's findings, 3.1).")
 final class SkyStripCommand implements Callable<Integer> {
+
+    @Mixin
+    DevOption dev;
 
     /** One panel measured: its value and its mean ΔE00 to the reference. */
     record Panel(int value, double deltaE) {

@@ -16,8 +16,13 @@ import java.util.concurrent.TimeUnit;
  */
 final class StopSignal implements AutoCloseable {
 
-    /** How long the hook waits for the main thread: writing a bench run of a few thousand frames takes ~1 s. */
-    static final long WAIT_MS = 20_000;
+    /**
+     * How long the hook waits for the main thread: the frame in flight, then the write. Writing a stopped bench run
+     * of a few thousand frames takes about 1 s on the project's 2-core machine, 3 s at a load average of 15 (the
+     * chart's cost is bounded by its width, and Java2D is warmed up before the frames); a minute leaves room for a
+     * slow frame and a run of several hundred thousand frames, whose frames.csv is the longest part.
+     */
+    static final long WAIT_MS = 60_000;
 
     private final CountDownLatch done = new CountDownLatch(1);
     private final Thread hook = new Thread(this::stopAndWait, "openworld-stop-signal");

@@ -45,6 +45,13 @@ class ErrorMessagesTest {
     }
 
     @Test
+    void aCameraBeyondTheRenderersReachIsRefusedWithTheLimit() {
+        userMistake("'1e9,400,1e9,45,-10': x is 1e9 m, beyond the renderer's reach: expected -1000000 .. 1000000 m "
+                + "(1000 km from the origin; float32 positions on the GPU)", "shot", "--out",
+                dir.resolve("x.png").toString(), "--camera", "1e9,400,1e9,45,-10");
+    }
+
+    @Test
     void anUnknownPresetNamesTheValidOnes() {
         userMistake("unknown preset 'fast': expected one of low, default, ultra, paper", "settings", "--preset", "fast");
     }
@@ -125,9 +132,18 @@ class ErrorMessagesTest {
     @Test
     void aMisspeltOptionIsOneLineWithoutTheUsage() {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("settings", "--sed", "3"));
-        assertTrue(console.stderr().startsWith("openworld: Unknown options: '--sed', '3' ('openworld settings --help' "
-                + "lists the options)"), console.stderr());
+        assertTrue(console.stderr().startsWith("openworld: Unknown options: '--sed', '3'; did you mean --seed"),
+                console.stderr());
+        assertTrue(console.stderr().strip().endsWith("('openworld settings --help' lists the options)"),
+                console.stderr());
+        assertEquals(1, console.stderr().lines().count(), "the suggestion in the same line: " + console.stderr());
         assertFalse(console.stderr().contains("Usage:"), console.stderr());
+    }
+
+    @Test
+    void aMisspeltCommandIsOneLineWithTheSuggestion() {
+        userMistake("openworld: Unmatched arguments from index 0: 'shoot', '--out', 'x.png'; did you mean shot?",
+                "shoot", "--out", "x.png");
     }
 
     @Test
@@ -143,6 +159,15 @@ class ErrorMessagesTest {
         assertEquals(ExitCode.INTERNAL_FAILURE.code(), Main.report(bug, cli, true));
         assertTrue(text.toString().contains("java.lang.IllegalStateException: tile 3 has no parent")
                 && text.toString().contains("\tat "), "the stack trace under --dev: " + text);
+    }
+
+    @Test
+    void everyCommandTakesTheDevThatTheBugReportAsksFor() {
+        CommandLine cli = new CommandLine(new Main());
+        List<String> without = cli.getSubcommands().entrySet().stream()
+                .filter(c -> !c.getKey().equals("help") && c.getValue().getCommandSpec().findOption("--dev") == null)
+                .map(java.util.Map.Entry::getKey).toList();
+        assertEquals(List.of(), without, "commands that refuse --dev, which the internal error's line offers");
     }
 
     /** A forked JVM running the command line; its exit code and stderr. */

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
@@ -103,6 +105,25 @@ class HeightmapCommandTest {
     }
 
     @Test
+    void aMapWhosePowerLiesInNoTwoRingsHasNoSlopeInsteadOfAnInternalError() throws Exception {
+        // a checkerboard of ±1e30 m (finite float32, 1e60 apart): its power lies at one frequency, past the rings
+        int side = 257;
+        ByteBuffer raw = ByteBuffer.allocate(side * side * Float.BYTES).order(ByteOrder.LITTLE_ENDIAN);
+        for (int i = 0; i < side * side; i++) {
+            raw.putFloat((i % side + i / side) % 2 == 0 ? 1e30f : -1e30f);
+        }
+        Path file = Files.write(dir.resolve("checkerboard.raw"), raw.array());
+        Path out = dir.resolve("maps");
+        assertEquals(0, Main.execute("heightmap", "--out", out.toString(), "--set", "terrain.import-file=" + file),
+                console.stderr());
+        assertTrue(console.stdout().contains("spectrum slope: none"), console.stdout());
+        assertTrue(Image.read(out.resolve(HeightmapCommand.SPECTRUM_PNG)).width() > 0, "the spectrum chart is written");
+        var heights = ImageIO.read(out.resolve(HeightmapCommand.HEIGHT_PNG).toFile()).getRaster();
+        assertEquals(0, heights.getSample(1, 0, 0), "the low squares are black");
+        assertEquals(65535, heights.getSample(0, 0, 0), "the high squares are white");
+    }
+
+    @Test
     void repeatMustBePositive() {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--out", dir.toString(), "--repeat", "0"));
         assertTrue(console.stderr().contains("--repeat"), console.stderr());
@@ -144,6 +165,9 @@ class HeightmapCommandTest {
         assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
                 "--set", "terrain.import-file=" + dir.resolve("map.png")));
         assertTrue(console.stderr().contains("terrain.import-file"), console.stderr());
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--overview", "--out", dir.toString(),
+                "--set", "terrain.world=tile"));
+        assertTrue(console.stderr().contains("not terrain.world=tile"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
 }

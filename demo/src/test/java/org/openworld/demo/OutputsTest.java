@@ -59,7 +59,8 @@ class OutputsTest {
     @Test
     void shotRefusesToOverwriteAFileThatIsNotAPng() throws Exception {
         Path notes = Files.writeString(dir.resolve("notes.png"), "my notes, not a picture");
-        assertRefused("--out " + notes + ": exists and is not a PNG; give another name, or --force to overwrite it",
+        assertRefused("--out " + notes + ": exists and is not a PNG or JPEG; give another name, or --force to "
+                + "overwrite it",
                 "shot", "--out", notes.toString());
         assertEquals("my notes, not a picture", Files.readString(notes));
     }
@@ -67,7 +68,7 @@ class OutputsTest {
     @Test
     void shotRefusesAFolderAsItsFile() throws Exception {
         Path folder = Files.createDirectory(dir.resolve("pictures"));
-        assertRefused("--out " + folder + ": is a folder; give a file name ending in .png", "shot", "--out",
+        assertRefused("--out " + folder + ": is a folder; give a file name ending in .png or .jpg", "shot", "--out",
                 folder.toString());
     }
 
@@ -90,8 +91,9 @@ class OutputsTest {
         assertEquals(8, Image.read(old).width());
         assertTrue(Image.read(old).channel(0, 0, 0) != 7, "the earlier PNG was overwritten");
 
-        Path text = Files.writeString(dir.resolve("d.txt"), "keep me");
-        assertRefused("--out " + text + ": exists and is not a PNG; give another name, or --force to overwrite it",
+        Path text = Files.writeString(dir.resolve("d-notes.png"), "keep me");
+        assertRefused("--out " + text + ": exists and is not a PNG or JPEG; give another name, or --force to "
+                + "overwrite it",
                 "diff", a.toString(), b.toString(), "--out", text.toString());
         assertEquals("keep me", Files.readString(text));
         assertEquals(0, Main.execute("diff", a.toString(), b.toString(), "--out", text.toString(), "--force"));
@@ -112,6 +114,38 @@ class OutputsTest {
         assertEquals(0, Main.execute("shot", "--out", text.toString(), "--size", "32x18", "--force"),
                 console.stderr());
         assertEquals(18, Image.read(text).height());
+    }
+
+    @Test
+    void diffRefusesAnOutThatIsOneOfItsInputsAlsoThroughALinkOrAnotherSpelling() throws Exception {
+        Path a = picture("a.png", 100);
+        Path b = picture("b.png", 120);
+        byte[] before = Files.readAllBytes(a);
+        assertRefused("--out " + a + ": is also an input (" + a + "); give the output another name",
+                "diff", a.toString(), a.toString(), "--out", a.toString());
+        Path link = Files.createSymbolicLink(dir.resolve("link.png"), a);
+        assertRefused("--out " + link + ": is also an input (" + a + "); give the output another name",
+                "diff", a.toString(), b.toString(), "--out", link.toString());
+        Path spelt = dir.resolve(".").resolve("b.png");
+        assertRefused("--out " + spelt + ": is also an input (" + b + "); give the output another name",
+                "diff", a.toString(), b.toString(), "--out", spelt.toString());
+        assertArrayEquals(before, Files.readAllBytes(a), "the input is untouched");
+    }
+
+    @Test
+    void aJpegNameGetsAJpegAndAnotherExtensionOrAnEmptyNameIsRefused() throws Exception {
+        Path a = picture("a.png", 100);
+        Path b = picture("b.png", 120);
+        Path jpeg = dir.resolve("d.jpg");
+        assertEquals(0, Main.execute("diff", a.toString(), b.toString(), "--out", jpeg.toString()), console.stderr());
+        assertArrayEquals(new byte[] {(byte) 0xFF, (byte) 0xD8, (byte) 0xFF}, Arrays.copyOf(Files.readAllBytes(jpeg), 3),
+                "JPEG's start-of-image marker");
+        assertEquals(8, Image.read(jpeg).width());
+        Path bmp = dir.resolve("d.bmp");
+        assertRefused("--out " + bmp + ": has no picture extension; give a name ending in .png (PNG) or .jpg (JPEG)",
+                "diff", a.toString(), b.toString(), "--out", bmp.toString());
+        assertRefused("--out is empty: give a file or folder name", "shot", "--out", "");
+        assertRefused("--out is empty: give a file or folder name", "heightmap", "--out", " ");
     }
 
     /** The command exits 2 with exactly this one line after the program's name, and prints nothing else. */

@@ -39,9 +39,12 @@ public final class BenchReport {
             throws IOException {
         Summary summary = Summary.of(run, frames, memory).withComplete(complete);
         AtomicFiles.replaceFolder(outDir, dir -> {
-            FramesCsv.write(frames, dir.resolve(FRAMES_CSV));
-            SummaryJson.write(summary, dir.resolve(SUMMARY_JSON));
-            FrameTimeChart.write(run, frames, dir.resolve(FRAMETIME_PNG));
+            AtomicFiles.writeInto(dir.resolve(FRAMES_CSV), outDir.resolve(FRAMES_CSV),
+                    file -> FramesCsv.write(frames, file));
+            AtomicFiles.writeInto(dir.resolve(SUMMARY_JSON), outDir.resolve(SUMMARY_JSON),
+                    file -> SummaryJson.write(summary, file));
+            AtomicFiles.writeInto(dir.resolve(FRAMETIME_PNG), outDir.resolve(FRAMETIME_PNG),
+                    file -> FrameTimeChart.write(run, frames, file));
         });
         return summary;
     }

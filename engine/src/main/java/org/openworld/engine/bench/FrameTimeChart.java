@@ -13,7 +13,10 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Draws {@code frametime.png}: each frame's GPU time split by pass as stacked filled areas, with the frame time and
@@ -23,6 +26,12 @@ import java.util.List;
  * passes up to and including it, and the areas are added from the top of the stack down: each lower pass then paints
  * over the part of the taller areas below its own top. Drawn into a {@link java.awt.image.BufferedImage}, so it needs
  * no display ({@code -Djava.awt.headless=true} works).
+ *
+ * <p>A run longer than the chart is wide is drawn as its slowest frame per pixel column
+ * ({@link #slowestPerColumn}): every spike stays, with the passes that made it, and the chart costs the same for
+ * ten thousand frames as for {@value #WIDTH_PX}, about 0.5 s warm (1.5 s with Java2D's first use) on the project's
+ * 2-core machine, so a run stopped by a signal is written in well under the stop's limit. frames.csv keeps every
+ * frame.
  */
 public final class FrameTimeChart {
 
@@ -59,6 +68,7 @@ public final class FrameTimeChart {
         chart.getStyler().setLegendPosition(LegendPosition.OutsideE);
         chart.getStyler().setYAxisMin(0.0);
 
+        frames = slowestPerColumn(frames);
         double[] x = frames.stream().mapToDouble(FrameRecord::frame).toArray();
 
         // 1. cumulative GPU time: stack[p][i] = sum of passes 0..p in frame i (a pass missing in a frame costs 0)
@@ -87,6 +97,40 @@ public final class FrameTimeChart {
         line(chart, "CPU", x, frames.stream().mapToDouble(FrameRecord::cpuMs).toArray(), Color.DARK_GRAY,
                 new BasicStroke(LINE_WIDTH_PX, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 1f, CPU_DASH_PX, 0f));
         return chart;
+    }
+
+    /**
+     * Draws a small chart on a daemon thread and throws it away: Java2D's first use (its classes, the fonts) takes
+     * about a second, several on a loaded machine, and a run stopped by a signal should not spend the stop's time
+     * on it. Called before a run's frames, it overlaps the world's building.
+     */
+    public static void warmUpInBackground() {
+        RunInfo none = new RunInfo("", "", "", 1, 1, 0, Map.of(), "", 0, false);
+        FrameRecord frame = new FrameRecord(0, 0, 1, 1, Map.of("", 1.0), Map.of("", 1.0), 0, 0,
+                Map.of());
+        Thread warmUp = new Thread(() -> BitmapEncoder.getBufferedImage(chart(none, List.of(frame, frame))),
+                "frametime-chart-warm-up");
+        warmUp.setDaemon(true);
+        warmUp.start();
+    }
+
+    /**
+     * At most {@value #WIDTH_PX} frames, one per pixel column: of each column's consecutive frames the one with the
+     * longest frame time, so the drawn line reaches every spike. Drawing more points than columns adds nothing to
+     * the picture and costs time in proportion.
+     */
+    static List<FrameRecord> slowestPerColumn(List<FrameRecord> frames) {
+        if (frames.size() <= WIDTH_PX) {
+            return frames;
+        }
+        List<FrameRecord> kept = new ArrayList<>(WIDTH_PX);
+        for (int column = 0; column < WIDTH_PX; column++) {
+            int from = (int) ((long) column * frames.size() / WIDTH_PX);
+            int to = (int) ((long) (column + 1) * frames.size() / WIDTH_PX);
+            kept.add(frames.subList(from, to).stream().max(Comparator.comparingDouble(FrameRecord::frameMs))
+                    .orElseThrow());
+        }
+        return kept;
     }
 
     private static void line(XYChart chart, String name, double[] x, double[] y, Color color, BasicStroke stroke) {

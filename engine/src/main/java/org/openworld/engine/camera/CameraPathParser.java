@@ -134,9 +134,9 @@ public final class CameraPathParser {
         if (previous != null && !(time - previous.time() >= MIN_KEY_GAP)) {
             throw line.error(line.token(0), "a time at least 0.001 s after the previous key's " + previousTime);
         }
-        double x = line.number(1, "x");
-        double y = line.number(2, "y");
-        double z = line.number(3, "z");
+        double x = coordinate(line, 1, "x");
+        double y = coordinate(line, 2, "y");
+        double z = coordinate(line, 3, "z");
         double yaw = line.number(4, "yaw");
         double pitch = line.number(5, "pitch");
         if (Math.abs(pitch) > Keyframe.MAX_PITCH) {
@@ -153,6 +153,15 @@ public final class CameraPathParser {
             throw line.error(line.token(7), "end of line after fov");
         }
         return new Keyframe(time, x, y, z, yaw, pitch, fov);
+    }
+
+    /** A position's coordinate, metres, within the distance the renderer draws ({@link CameraPose#drawable}). */
+    private static double coordinate(Line line, int index, String name) throws CameraPathFormatException {
+        double metres = line.number(index, name);
+        if (!CameraPose.drawable(metres)) {
+            throw line.error(line.token(index), name + " within -1000000 .. 1000000 m (1000 km, the renderer's reach)");
+        }
+        return metres;
     }
 
     private static CameraPathFormatException unreadable(String source, String found) {

@@ -1,11 +1,13 @@
 package org.openworld.engine.files;
 
 import java.io.IOException;
+import java.nio.channels.FileChannel;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.Comparator;
 import java.util.stream.Stream;
 
@@ -26,9 +28,17 @@ import java.util.stream.Stream;
  * moment {@code NAME} holds the whole old folder or the whole new one. Leftover {@code .NAME.new-*} folders of a
  * crashed write are deleted by the next write.
  *
- * <p>Cost: one extra rename per file, two per folder; the old and the new folder take disk space together until
- * the old one is deleted. Limits: this guards against a process that dies (a signal, a crash), not against a power
- * loss: nothing is {@code fsync}ed, so after a power cut a file system may show a renamed file empty.
+ * <p><b>A write that fails</b> (a full disk, a folder removed meanwhile) fails the call with a {@link WriteFailure}
+ * naming the file and the operating system's reason, and leaves the old output whole: every new file is flushed to
+ * the disk ({@code FileChannel.force}, {@code fsync(2)}) before the rename, since a file system may accept a write and
+ * find no room for it only when it is flushed, and a rename of a file not yet on the disk can show an empty file
+ * after a power cut. Content must report its own failures: a writer that ignores them (stb_image_write's
+ * {@code fwrite}) encodes into memory first, and the bytes are written here ({@link #write(Path, byte[])}).
+ *
+ * <p>Cost: one extra rename per file, two per folder, and one {@code fsync} per file (milliseconds on a disk, nothing
+ * on tmpfs); the old and the new folder take disk space together until the old one is deleted. Limits: the folder
+ * holding the renamed entry is not itself flushed, so a power cut just after the rename may show the old output
+ * again (whole), never a part of either.
  */
 public final class AtomicFiles {
 
@@ -41,15 +51,43 @@ public final class AtomicFiles {
     private AtomicFiles() {
     }
 
-    /** Writes a file through a temporary file in the same folder and renames it over {@code file}. */
+    /**
+     * Writes a file through a temporary file in the same folder, flushes it to the disk and renames it over
+     * {@code file}; a failure is a {@link WriteFailure} naming {@code file}, and {@code file} is left as it was.
+     */
     public static void write(Path file, Content content) throws IOException {
         Path target = file.toAbsolutePath();
         Path temp = target.resolveSibling("." + target.getFileName() + "." + uniqueSuffix() + ".tmp");
         try {
             content.writeTo(temp);
+            flush(temp);
             move(temp, target);
+        } catch (WriteFailure e) {
+            throw e;
+        } catch (IOException e) {
+            throw new WriteFailure(file, e);
         } finally {
             Files.deleteIfExists(temp);
+        }
+    }
+
+    /** Writes bytes encoded in memory as {@code file}, as {@link #write(Path, Content)} does. */
+    public static void write(Path file, byte[] bytes) throws IOException {
+        write(file, temp -> Files.write(temp, bytes));
+    }
+
+    /**
+     * Writes one file of a folder being filled by {@link #replaceFolder}: {@code shown} is the name the user knows
+     * it by (in the folder's place, not in the hidden new folder), which a failure names.
+     */
+    public static void writeInto(Path file, Path shown, Content content) throws IOException {
+        try {
+            content.writeTo(file);
+            flush(file);
+        } catch (WriteFailure e) {
+            throw e;
+        } catch (IOException e) {
+            throw new WriteFailure(shown, e);
         }
     }
 
@@ -61,6 +99,16 @@ public final class AtomicFiles {
      * {@code content} fails, the new folder is deleted and {@code folder} is left as it was.
      */
     public static void replaceFolder(Path folder, Content content) throws IOException {
+        try {
+            swapIn(folder, content);
+        } catch (WriteFailure e) {
+            throw e;
+        } catch (IOException e) {
+            throw new WriteFailure(folder, e);
+        }
+    }
+
+    private static void swapIn(Path folder, Content content) throws IOException {
         Path target = folder.toAbsolutePath();
         Path parent = target.getParent();
         Files.createDirectories(parent);
@@ -125,6 +173,13 @@ public final class AtomicFiles {
             for (Path leftover : stale) {
                 deleteTree(leftover);
             }
+        }
+    }
+
+    /** Flushes a written file to the disk: where a full disk shows itself on file systems that accept writes first. */
+    private static void flush(Path file) throws IOException {
+        try (FileChannel channel = FileChannel.open(file, StandardOpenOption.WRITE)) {
+            channel.force(true);
         }
     }
 

@@ -37,4 +37,10 @@ public @interface Setting {
      * each frame and takes effect at once.
      */
     boolean atStart() default false;
+
+    /**
+     * A file name: in a settings file ({@code --config}), a relative name is read from the settings file's folder,
+     * as an include is in most formats, so a folder holding a settings file and its data can be moved whole.
+     */
+    boolean file() default false;
 }

@@ -123,6 +123,12 @@ public final class Settings {
         set(assignment.substring(0, eq).trim(), assignment.substring(eq + 1).trim());
     }
 
+    /** Whether a key names a file ({@link Setting#file}). */
+    public boolean isFile(String key) {
+        return groups.values().stream().flatMap(g -> g.keys().stream())
+                .anyMatch(k -> k.key().equals(key) && k.doc().file());
+    }
+
     /** Sets one key from text. */
     public void set(String key, String text) {
         if (switches.containsKey(key)) {
@@ -184,19 +190,35 @@ public final class Settings {
         return group.value(group.type().cast(current.get(group.type())), key);
     }
 
-    /** A table of every key: default, unit, valid values and meaning (for {@code openworld settings}). */
+    /**
+     * A table of every key under a header: default, unit, valid values and meaning (for {@code openworld settings}).
+     * Each column is as wide as its longest entry, so a long default or list of values does not push the row's
+     * later columns out of line.
+     */
     public String describe() {
-        StringBuilder s = new StringBuilder();
-        String row = "%-28s %-10s %-6s %-22s %s%n";
-        switchDefaults.forEach((key, on) -> s.append(String.format(Locale.ROOT, row, key, format(on), "", "on|off",
-                "run the " + key.substring(SYSTEM_PREFIX.length()) + " system (its updates and drawing)")));
+        List<String[]> rows = new ArrayList<>();
+        rows.add(new String[] {"KEY", "DEFAULT", "UNIT", "VALID", "MEANING"});
+        switchDefaults.forEach((key, on) -> rows.add(new String[] {key, format(on), "", "on|off",
+                "run the " + key.substring(SYSTEM_PREFIX.length()) + " system (its updates and drawing)"}));
         for (SettingsGroup<?> group : groups.values()) {
             for (SettingsGroup.Key k : group.keys()) {
                 Object def = defaultOf(group, k);
-                s.append(String.format(Locale.ROOT, row, k.key(),
-                        def instanceof String text && text.isEmpty() ? "(none)" : format(def), k.doc().unit(),
-                        validValues(k), k.doc().doc() + (k.doc().atStart() ? AT_START_NOTE : "")));
+                rows.add(new String[] {k.key(), def instanceof String text && text.isEmpty() ? "(none)" : format(def),
+                        k.doc().unit(), validValues(k), k.doc().doc() + (k.doc().atStart() ? AT_START_NOTE : "")});
             }
+        }
+        int[] widths = new int[rows.get(0).length - 1];
+        for (String[] row : rows) {
+            for (int c = 0; c < widths.length; c++) {
+                widths[c] = Math.max(widths[c], row[c].length());
+            }
+        }
+        StringBuilder s = new StringBuilder();
+        for (String[] row : rows) {
+            for (int c = 0; c < widths.length; c++) {
+                s.append(row[c]).append(" ".repeat(widths[c] - row[c].length() + 1));
+            }
+            s.append(row[widths.length]).append('\n');
         }
         return s.toString();
     }

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
@@ -14,7 +15,9 @@ import java.util.List;
  * blank lines are ignored. The settings panel saves every key, so a file read
  * into fresh settings gives the same settings; a hand-written file may hold just a few keys.
  * {@code openworld --config FILE} reads one, with any {@code --set} given after it winning. The file is read as UTF-8
- * with a leading byte order mark skipped ({@link TextFile}).
+ * with a leading byte order mark skipped ({@link TextFile}). A file name ({@link Setting#file}) given relative in a
+ * file is read from the file's own folder; saved, it is written absolute, so it names the same file wherever the
+ * settings file is read from.
  */
 public final class SettingsFile {
 
@@ -27,7 +30,8 @@ public final class SettingsFile {
                 # OpenWorld settings: one key=value per line, as --set takes them ('openworld settings' lists them).
                 # Use with: openworld --config FILE  (a --set after it wins). Lines starting with '#' are comments.
                 """);
-        settings.asExactText().forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
+        settings.asExactText().forEach((key, value) -> text.append(key).append('=')
+                .append(settings.isFile(key) ? absolute(value) : value).append('\n'));
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null) {
             Files.createDirectories(parent);
@@ -52,7 +56,7 @@ public final class SettingsFile {
         } catch (IOException e) {
             throw new SettingsException("cannot read settings file " + file + ": " + e.getMessage());
         }
-        apply(file.toString(), text, settings);
+        apply(file.toString(), file.toAbsolutePath().getParent(), text, settings);
     }
 
     /**
@@ -67,7 +71,7 @@ public final class SettingsFile {
             if (in == null) {
                 return false;
             }
-            apply(name, TextFile.decode(in.readAllBytes()), settings);
+            apply(name, null, TextFile.decode(in.readAllBytes()), settings);
             return true;
         } catch (TextFile.NotTextException e) {
             throw new SettingsException("settings file " + name + " is " + e.getMessage());
@@ -76,8 +80,11 @@ public final class SettingsFile {
         }
     }
 
-    /** Applies each {@code key=value} line of {@code text}; {@code source} names the file in an error. */
-    private static void apply(String source, String text, Settings settings) {
+    /**
+     * Applies each {@code key=value} line of {@code text}; {@code source} names the file in an error, and a relative
+     * file name ({@link Setting#file}) is resolved against {@code folder}, the file's folder (none for a resource).
+     */
+    private static void apply(String source, Path folder, String text, Settings settings) {
         List<String> lines = text.lines().toList();
         for (int i = 0; i < lines.size(); i++) {
             String line = lines.get(i).strip();
@@ -85,10 +92,40 @@ public final class SettingsFile {
                 continue;
             }
             try {
-                settings.apply(line);
+                settings.apply(resolved(line, folder, settings));
             } catch (SettingsException e) {
                 throw new SettingsException(source + ":" + (i + 1) + ": " + e.getMessage());
             }
+        }
+    }
+
+    /**
+     * A file name as a saved file holds it: absolute, since a relative one would be read back from the settings
+     * file's folder ({@link #read}), not from the current folder it meant. A value that is no file name is kept.
+     */
+    private static String absolute(String value) {
+        try {
+            return value.isBlank() ? value : Path.of(value.strip()).toAbsolutePath().normalize().toString();
+        } catch (InvalidPathException e) {
+            return value;
+        }
+    }
+
+    /** A {@code key=value} line whose value is a relative file name, resolved against {@code folder}. */
+    private static String resolved(String line, Path folder, Settings settings) {
+        int eq = line.indexOf('=');
+        if (folder == null || eq <= 0) {
+            return line;
+        }
+        String key = line.substring(0, eq).trim();
+        String value = line.substring(eq + 1).trim();
+        try {
+            if (value.isEmpty() || !settings.isFile(key) || Path.of(value).isAbsolute()) {
+                return line;
+            }
+            return key + "=" + folder.resolve(value).normalize();
+        } catch (InvalidPathException e) {
+            return line; // not a file name at all: the setting's own check names it
         }
     }
 }

@@ -42,7 +42,9 @@ public final class HeightImport {
     /** Reads and normalises a height map file. */
     public static HeightMap read(Path file, TerrainSettings s) {
         if (!Files.isRegularFile(file)) {
-            throw new HeightImportException(file + ": " + (Files.exists(file) ? "is not a file" : "no such file"));
+            throw new HeightImportException(file + ": " + (Files.exists(file) ? "is not a file"
+                    : Files.isSymbolicLink(file) ? "a link that leads to no file (its target is missing, or it loops)"
+                    : "no such file"));
         }
         String name = file.getFileName().toString();
         String extension = name.substring(name.lastIndexOf('.') + 1).toLowerCase(Locale.ROOT);

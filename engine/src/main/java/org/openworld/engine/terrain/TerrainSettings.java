@@ -48,7 +48,8 @@ public record TerrainSettings(
         @Setting(doc = "longest wavelength kept (low-frequency cut-off)",
                 unit = "m", min = 0.1, max = 1e6, atStart = true)
         double maxWavelength,
-        @Setting(doc = "16-bit PNG or float32 .raw height map to load instead of generating one", atStart = true)
+        @Setting(doc = "16-bit PNG or float32 .raw height map to load instead of generating one", atStart = true,
+                file = true)
         String importFile,
         @Setting(doc = "normalised height where snow starts (probability 0)", min = 0, max = 1, atStart = true)
         double snowBase,

@@ -9,7 +9,11 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
@@ -53,5 +57,26 @@ class BenchChartTest {
         assertArrayEquals(new double[] {3, 6, 8}, chart.getSeriesMap().get("GPU water").getYData());
         assertArrayEquals(new double[] {5, 6, 8}, chart.getSeriesMap().get("frame time").getYData());
         assertTrue(chart.getTitle().contains("test renderer") && chart.getTitle().contains("640x360"));
+    }
+
+    @Test
+    void aLongRunIsDrawnAsItsSlowestFramePerColumnSoItCostsNoMoreThanAShortOne() {
+        // ten frames per column, frame times rising 0..9 ms within each column, and one spike of 1000 ms
+        int frames = FrameTimeChart.WIDTH_PX * 10;
+        int spike = 4321;
+        List<FrameRecord> run = new ArrayList<>();
+        for (int i = 0; i < frames; i++) {
+            double ms = i == spike ? 1000 : i % 10;
+            run.add(new FrameRecord(i, i / 60.0, ms, ms / 2, Map.of("terrain", ms / 2), Map.of("terrain", ms / 2),
+                    1000, 10, Map.of()));
+        }
+        XYChart chart = FrameTimeChart.chart(BenchFrames.RUN, run);
+        for (var series : chart.getSeriesMap().values()) {
+            assertEquals(FrameTimeChart.WIDTH_PX, series.getXData().length, series.getName());
+        }
+        double[] frameTimes = chart.getSeriesMap().get("frame time").getYData();
+        assertEquals(1000, Arrays.stream(frameTimes).max().orElseThrow(), "the spike is drawn");
+        assertEquals(9, frameTimes[0], "each column shows its slowest frame");
+        assertEquals(spike, chart.getSeriesMap().get("frame time").getXData()[spike / 10], "at its own frame");
     }
 }

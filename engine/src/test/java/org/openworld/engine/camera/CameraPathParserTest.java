@@ -34,6 +34,17 @@ class CameraPathParserTest {
     }
 
     @Test
+    void refusesAPositionBeyondTheRenderersReach() throws CameraPathFormatException {
+        assertError("0 0 0 0 0 0\n1 0 100 -2e6 0 0\n", "2:9: expected z within -1000000 .. 1000000 m (1000 km, the "
+                + "renderer's reach), found '-2e6'");
+        assertError("0 1e9 400 1e9 45 -10\n1 0 0 0 0 0\n", "1:3: expected x within -1000000 .. 1000000 m (1000 km, "
+                + "the renderer's reach), found '1e9'");
+        double edge = CameraPose.MAX_COORDINATE_M;
+        assertEquals(edge, CameraPathParser.parse(SOURCE, "0 " + edge + " 0 0 0 0\n1 0 0 0 0 0\n").keys().get(0).x(),
+                "the limit itself is drawable");
+    }
+
+    @Test
     void heightsDefaultToSeaLevel() throws CameraPathFormatException {
         assertEquals(HeightReference.SEA, CameraPathParser.parse(SOURCE, "0 0 0 0 0 0\n1 0 0 0 0 0\n").heights());
     }
@@ -50,7 +61,8 @@ class CameraPathParserTest {
     void reportsANumberTooLargeForThePathArithmetic() throws CameraPathFormatException {
         assertError("0 0 0 0 0 0\n1 -1e308 0 0 0 0\n", "2:3: expected a number within ±1e9 for x, found '-1e308'");
         assertError("0 0 0 0 0 0\n1e10 0 0 0 0 0\n", "2:1: expected a number within ±1e9 for time, found '1e10'");
-        CameraPath widest = CameraPathParser.parse(SOURCE, "-1e9 -1e9 1e9 -1e9 -1e9 0\n1e9 1e9 -1e9 1e9 1e9 0\n");
+        // times and yaws at the arithmetic's bound, positions at the renderer's reach
+        CameraPath widest = CameraPathParser.parse(SOURCE, "-1e9 -1e6 1e6 -1e6 -1e9 0\n1e9 1e6 -1e6 1e6 1e9 0\n");
         CameraPose middle = widest.sample(0, (x, z) -> 0);
         assertTrue(Double.isFinite(middle.x()) && Double.isFinite(middle.y()) && Double.isFinite(middle.yaw()),
                 middle.toString());

@@ -32,8 +32,26 @@ class SettingsFileTest {
                 SettingsGroup.of("file", FileSettings.class, FileSettings.DEFAULTS)), systems);
     }
 
-    public record FileSettings(@Setting(doc = "a file to read") String source) {
-        public static final FileSettings DEFAULTS = new FileSettings("");
+    public record FileSettings(@Setting(doc = "a file to read") String source,
+                               @Setting(doc = "a file name, resolved from a settings file's folder", file = true)
+                               String map) {
+        public static final FileSettings DEFAULTS = new FileSettings("", "");
+    }
+
+    @Test
+    void aRelativeFileNameInAFileIsReadFromTheFilesFolder() throws IOException {
+        Path folder = Files.createDirectories(dir.resolve("world"));
+        Path file = Files.writeString(folder.resolve("my.settings"), "file.map=heights/ok257.raw\nfile.source=notes\n");
+        Settings s = fresh();
+        SettingsFile.read(file, s);
+        assertEquals(folder.toAbsolutePath().resolve("heights/ok257.raw").toString(), s.text("file.map"),
+                "a file setting: from the settings file's folder");
+        assertEquals("notes", s.text("file.source"), "any other text is kept as written");
+        Files.writeString(file, "file.map=" + dir.toAbsolutePath().resolve("abs.raw") + "\n");
+        SettingsFile.read(file, s);
+        assertEquals(dir.toAbsolutePath().resolve("abs.raw").toString(), s.text("file.map"), "an absolute name as is");
+        s.set("file.map", "here.raw");
+        assertEquals("here.raw", s.text("file.map"), "--set keeps the current folder's meaning");
     }
 
     @Test
