@@ -26,7 +26,7 @@ import org.openworld.engine.terrain.TerrainSystem;
  * the whole world, 184 m ahead of an eye 4 m above the water, the default wind (5 m/s) and the half-size reflection.
  * Right under the waterline the water must mirror the wall, in every column: a look-up that the ripples push past
  * the mirrored waterline reads the part of the mirror picture that the wall hides in the real view (sky or far
- * ground), a pale block in the dark band.
+ * ground), a pale block in the dark band. And far water, whose pixels span many ripples, must not be a mosaic.
  */
 @GlTest
 class WaterShoreTest {
@@ -70,6 +70,40 @@ class WaterShoreTest {
     @Test
     void nearTheShoreTheRipplesDoNotReachPastTheMirroredWaterline() {
         assertNoColumnOfSky(AT_THE_FOOT);
+    }
+
+    /** 120 m above the water, 400 m from the wall, 14° down: the water's pixels there are metres long. */
+    static final CameraPose HIGH_ABOVE = new CameraPose(0, 120, 420, 0, -14, 60);
+
+    /**
+     * Far water under a strong wind must look like the calm water's mirror, not a mosaic: there a pixel's footprint
+     * spans many ripples, and a slope read at one point per pixel sends neighbouring pixels to unrelated parts of the
+     * mirror picture, so the mean difference between neighbours grows towards the contrast of what is mirrored. The
+     * wind of 0.5 m/s is the reference; half as much again leaves room for ripples longer than the footprint, which
+     * may stay (the unfiltered ripples gave about four times the calm's).
+     */
+    @Test
+    void distantWaterIsNoMosaic() {
+        double rippled = neighbourDifference(render(WaterRenderTest.settings(wall, "water.reflection=HALF",
+                "water.wind=5"), HIGH_ABOVE, true));
+        double calm = neighbourDifference(render(WaterRenderTest.settings(wall, "water.reflection=HALF",
+                "water.wind=0.5"), HIGH_ABOVE, true));
+        assertTrue(rippled < 1.5 * calm, "the far water's neighbouring pixels differ by " + rippled
+                + " levels of luma on average, the calm water's by " + calm);
+    }
+
+    /** The mean luma difference of horizontally neighbouring pixels over the water under the wall's mirror image. */
+    static double neighbourDifference(Image picture) {
+        int top = (int) Math.ceil(WaterRenderTest.rowOfZ(HIGH_ABOVE, 16)) + 2;
+        double sum = 0;
+        int n = 0;
+        for (int y = top; y < top + 20; y++) {
+            for (int x = 0; x + 1 < picture.width(); x++) {
+                sum += Math.abs(picture.luma(x, y) - picture.luma(x + 1, y));
+                n++;
+            }
+        }
+        return sum / n;
     }
 
     static final CameraPose AT_THE_FOOT = new CameraPose(0, 0.6, 21, 0, -10, 60);
