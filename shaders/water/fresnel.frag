@@ -73,7 +73,8 @@ bool mirrorSeen(vec3 eye, vec2 uv, float texel) {
 }
 
 // The sun's glitter on the ripples: a microfacet lobe (Beckmann, slope variance m2: uMicroSlope2, plus the share of
-// uResolvedSlope2 that `amplitude` took off the normal) around the mirror direction, display units: pi * E_sun * F * D / (4 cos(view)), with D = exp(-tan^2/m^2) / (pi m^2 cos^4).
+// uResolvedSlope2 that `amplitude` took off the normal) around the mirror direction, display units:
+// pi * E_sun * F * D / (4 cos(view)), with D = exp(-tan^2/m2) / (pi m2 cos^4).
 vec3 glitter(vec3 n, vec3 toEye, float amplitude) {
     vec3 l = sunDir();
     if (l.y <= 0.0) {
