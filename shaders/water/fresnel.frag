@@ -20,6 +20,12 @@ uniform sampler2D reflection;    // the mirrored scene, aligned with the screen;
 uniform int uReflected;          // 1 when the reflection pass ran this frame
 uniform vec3 uBody;              // reflectance of deep water from the light scattered back inside it, rgb
 uniform float uMicroSlope2;      // mean square slope of the ripples finer than the texture (the glitter's spread)
+uniform float uResolvedSlope2;   // mean square slope of the ripples the texture holds
+
+// Pixels a ripple's wavelength must span for its slope to bend the reflection smoothly from pixel to pixel: with
+// fewer, neighbouring pixels see unrelated slopes and mirror unrelated things (a mosaic); at 8 they are 45 degrees
+// of the wave's phase apart.
+const float PIXELS_PER_WAVE = 8.0;
 
 // Furthest that ripples shift what is seen through the water, metres of path (the shift grows with the path).
 const float REFRACTION_REACH = 4.0;
@@ -39,9 +45,37 @@ bool onScreen(vec2 uv) {
     return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
 }
 
-// The sun's glitter on the ripples: a microfacet lobe (Beckmann, slope variance uMicroSlope2) around the mirror
-// direction, display units: pi * E_sun * F * D / (4 cos(view)), with D = exp(-tan^2/m^2) / (pi m^2 cos^4).
-vec3 glitter(vec3 n, vec3 toEye) {
+// The share of the ripples' slope the pixel can show, as an amplitude: Phillips' spectrum (P ~ k^-4) puts equal slope
+// variance in every octave of wavelength, from the tile's width down to two texels, and the waves shorter than
+// PIXELS_PER_WAVE pixel footprints are dropped. `footprint` is the pixel's longer side on the water (m); grazing
+// views stretch it along the view, so far water turns to a still mirror there first. Specular anti-aliasing: what
+// is dropped from the normal widens the glitter's lobe instead (see aboveWater).
+float resolvedAmplitude(float footprint) {
+    float tile = 1.0 / uRipple.x;                       // metres, the larger layer's repeat
+    float octaves = log2(float(textureSize(ripples, 0).x) / 2.0);
+    float large = clamp(log2(tile / (PIXELS_PER_WAVE * footprint)) / octaves, 0.0, 1.0);
+    float small = clamp(log2(SMALL_SCALE * tile / (PIXELS_PER_WAVE * footprint)) / octaves, 0.0, 1.0);
+    return sqrt((large + SMALL_WEIGHT * SMALL_WEIGHT * small) / (1.0 + SMALL_WEIGHT * SMALL_WEIGHT));
+}
+
+// Whether the mirror picture at uv shows a reflection on water the viewer sees: the scene there lies on or behind the
+// water plane. Where the terrain stands in front of the water (above a shore's mirrored waterline), the mirror
+// picture holds what the shore hides: sky, or ground far behind it. `texel` is one mirror texel up, so the bilinear
+// look-up's upper texel is checked too.
+bool mirrorSeen(vec3 eye, vec2 uv, float texel) {
+    vec2 above = uv + vec2(0.0, texel);
+    vec3 dir = viewRay(above * 2.0 - 1.0);
+    if (dir.y >= 0.0) {
+        return false;
+    }
+    float plane = windowDepth(eye + (uLevel - eye.y) / dir.y * dir);
+    return texture(depthCopy, above).r >= plane;
+}
+
+// The sun's glitter on the ripples: a microfacet lobe (Beckmann, slope variance m2: uMicroSlope2, plus the share of
+// uResolvedSlope2 that `amplitude` took off the normal) around the mirror direction, display units:
+// pi * E_sun * F * D / (4 cos(view)), with D = exp(-tan^2/m2) / (pi m2 cos^4).
+vec3 glitter(vec3 n, vec3 toEye, float amplitude) {
     vec3 l = sunDir();
     if (l.y <= 0.0) {
         return vec3(0.0);
@@ -49,14 +83,17 @@ vec3 glitter(vec3 n, vec3 toEye) {
     vec3 h = normalize(l + toEye);
     float cosH = max(dot(n, h), 1e-3);
     float tan2 = (1.0 - cosH * cosH) / (cosH * cosH);
-    float d = exp(-tan2 / uMicroSlope2) / (uMicroSlope2 * cosH * cosH * cosH * cosH);
+    float m2 = uMicroSlope2 + (1.0 - amplitude * amplitude) * uResolvedSlope2; // what the normal lost
+    float d = exp(-tan2 / m2) / (m2 * cosH * cosH * cosH * cosH);
     float f = fresnel(dot(h, toEye), false);
     return frame.sunColor.rgb * f * d / (4.0 * max(dot(n, toEye), 0.05));
 }
 
 vec3 aboveWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     vec3 p = eye + t * dir;
-    vec3 n = rippleNormal(p.xz);
+    float footprint = max(length(dFdx(p.xz)), length(dFdy(p.xz)));
+    float amplitude = resolvedAmplitude(footprint);
+    vec3 n = rippleNormal(p.xz, amplitude);
     vec3 toEye = -dir;
     float f = fresnel(dot(n, toEye), false);
     vec4 air = airTo(p);
@@ -67,6 +104,9 @@ vec3 aboveWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     vec3 sky = toneMapped(environmentRadiance(r, 0.0) * air.a + air.rgb);
     vec3 reflected = sky;
     vec2 uvR = screenUvOfDirection(vec3(r.x, -r.y, r.z));
+    if (!mirrorSeen(eye, uvR, 1.0 / float(textureSize(reflection, 0).y))) {
+        uvR = uv; // the ripples reached past the mirrored waterline: the plain mirror, which is the shore's image
+    }
     if (uReflected == 1 && onScreen(uvR)) {
         vec4 mirrored = texture(reflection, uvR);
         reflected = mix(sky, srgbToLinear(mirrored.rgb), mirrored.a);
@@ -89,7 +129,7 @@ vec3 aboveWater(vec3 eye, vec3 dir, float t, vec2 uv, float sceneDepth) {
     vec3 body = toneMapped(lightAtDepth(0.0, sunSeen) * uBody * air.a + air.rgb);
     vec3 seen = transmittance * picture(refraction, uvT) + (1.0 - transmittance) * body;
     // 3. the mix, and the sun
-    return f * reflected + (1.0 - f) * seen + toneMapped(glitter(n, toEye) * sunSeen * air.a);
+    return f * reflected + (1.0 - f) * seen + toneMapped(glitter(n, toEye, amplitude) * sunSeen * air.a);
 }
 
 void main() {

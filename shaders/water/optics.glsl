@@ -30,13 +30,18 @@ vec2 slopes(vec2 xz, float scale, float cycles) {
     return (mix(pair.rg, pair.ba, f - layer) * 255.0 - 128.0) / 127.0 * uRipple.w;
 }
 
-// The rippled surface's upward normal. The smaller layer runs slower by 1/sqrt(scale): deep-water waves' frequency
-// goes as the square root of their wavenumber (omega^2 = g k), so geometrically smaller waves are also quicker.
-vec3 rippleNormal(vec2 xz) {
+// The rippled surface's upward normal, the ripples' slopes times `amplitude` (1: as synthesised). The smaller layer
+// runs slower by 1/sqrt(scale): deep-water waves' frequency goes as the square root of their wavenumber
+// (omega^2 = g k), so geometrically smaller waves are also quicker.
+vec3 rippleNormal(vec2 xz, float amplitude) {
     vec2 s = slopes(xz, 1.0, uRipple.z)
            + SMALL_WEIGHT * slopes(xz + vec2(17.3, -5.1), SMALL_SCALE, uRipple.z / sqrt(SMALL_SCALE));
-    s /= sqrt(1.0 + SMALL_WEIGHT * SMALL_WEIGHT);
+    s *= amplitude / sqrt(1.0 + SMALL_WEIGHT * SMALL_WEIGHT);
     return normalize(vec3(-s.x, 1.0, -s.y));
+}
+
+vec3 rippleNormal(vec2 xz) {
+    return rippleNormal(xz, 1.0);
 }
 
 float fresnel(float cosAngle, bool fromBelow) {

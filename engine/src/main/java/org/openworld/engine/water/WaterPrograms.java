@@ -75,13 +75,14 @@ final class WaterPrograms {
 
     /** The water seen from above (fresnel.frag) and its uniforms, for one kind of sunlight. */
     private record Above(ShaderProgram program, Optics optics, Uniform.Int reflected, Uniform.Vec3 body,
-                         Uniform.Float microSlope2) {
+                         Uniform.Float microSlope2, Uniform.Float resolvedSlope2) {
 
         static Above of(EngineContext context, String role, List<String> light) {
             ShaderProgram p = context.own(role, context.shaders().program(light, "water/water.vert",
                     "water/fresnel.frag"));
             p.sampler("reflection", UNIT_REFLECTION);
-            return new Above(p, Optics.of(p), p.int1("uReflected"), p.vec3("uBody"), p.float1("uMicroSlope2"));
+            return new Above(p, Optics.of(p), p.int1("uReflected"), p.vec3("uBody"), p.float1("uMicroSlope2"),
+                    p.float1("uResolvedSlope2"));
         }
     }
 
@@ -112,16 +113,19 @@ final class WaterPrograms {
      *
      * @param hasReflection whether the reflection pass ran for this camera this frame
      * @param glitterSlope2 mean square slope of the ripples finer than the texture
+     * @param resolvedSlope2 mean square slope of the ripples the texture holds: where a pixel is too coarse to show
+     *                       them, the shader moves this variance from the normal into the glitter's lobe
      * @param sunShadowed   the pass has the sun's shadow maps bound (RenderContext#sunShadowed)
      */
     void useAbove(PlaneOnScreen plane, float level, WaterOptics optics, Ripple ripple, boolean hasReflection,
-                  float glitterSlope2, boolean sunShadowed) {
+                  float glitterSlope2, float resolvedSlope2, boolean sunShadowed) {
         Above a = sunShadowed ? above : aboveUnshadowed;
         a.program().use();
         a.optics().set(plane, level, optics, ripple);
         a.reflected().set(hasReflection ? 1 : 0);
         a.body().set(optics.body());
         a.microSlope2().set(glitterSlope2);
+        a.resolvedSlope2().set(resolvedSlope2);
     }
 
     /** The water seen from below, a full-screen triangle that writes its own depth. */

@@ -266,7 +266,8 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         }
         double slopeVariance = s.rmsSlope() * s.rmsSlope();
         programs.useAbove(onScreen(context.camera(), s), (float) s.level(), optics, ripple, reflected,
-                (float) (slopeVariance * (1 - RESOLVED_VARIANCE)), context.sunShadowed());
+                (float) (slopeVariance * (1 - RESOLVED_VARIANCE)), (float) (slopeVariance * RESOLVED_VARIANCE),
+                context.sunShadowed());
         drawPlane(context);
     }
 

@@ -46,6 +46,14 @@
  *       successive frames (RG and BA) so the blend between frames is one texture read; their slope variance is Cox
  *       and Munk's for the wind, the part the texture cannot resolve spreads the sun's glitter (a Beckmann lobe).
  *       Ripples bend where the reflection and the refraction are looked up.</li>
+ *   <li>Two guards on the bent reflection (fresnel.frag). A look-up is kept only where the scene copy shows water or
+ *       sky at its texel and one mirror texel above (else the plain mirror at the pixel): near a far shore seen at a
+ *       grazing angle the ripples tilt the reflected ray by more than the shore's angle below the horizon, and
+ *       the look-up by direction lands in the part of the mirror picture the shore hides (sky or far ground, a
+ *       pale band of blocks). And the slopes fade with the pixel's footprint on the water {@code w}: Phillips'
+ *       {@code k⁻⁴} puts equal slope variance in every octave, so a layer of tile {@code L} keeps the share
+ *       {@code log2(L / (8 w)) / log2(size / 2)} (waves under 8 footprints dropped), and the variance dropped widens
+ *       the glitter's lobe (specular anti-aliasing): distant water is a calm mirror, not a mosaic.</li>
  *   <li>Where the bent reflected ray leaves the reflection picture, the sky's cube map answers.</li>
  *   <li>Under the water the reflection pass rests; every pixel is seen through {@code exp(−σ d)} of water glowing
  *       with its in-water colour, and the surface from below shows the world above through Snell's window and
@@ -53,13 +61,14 @@
  * </ul>
  *
  * <p><b>Cost.</b> The reflection pass redraws the terrain (a quarter of the pixels, a quarter of the triangles) and
- * the sky, below the horizon; the water shades only the pixels where it is seen, about 10 texture reads each, plus a
+ * the sky, below the horizon; the water shades only the pixels where it is seen, about 11 texture reads each, plus a
  * copy of the scene. On llvmpipe at 1280 × 720 with the sea over half the picture that took the water from about
  * 111 ms to about 36 ms a frame (docs/water.md, "Cost").
  * Start-up: the ripple field, 64 frames of 128² by FFT, about 0.2 s. Figures in {@code docs/benchmarks.md}.
  *
  * <p><b>Limits.</b> A plane, not a height field: no lakes above sea level, no waves that move the geometry, no
  * foam. The reflection is exact only for a flat surface; the ripples bend its look-up as if what they reflect were
- * far away. The pictures are mixed after tone mapping. The eye within 5 cm of the surface has no reflection pass.
+ * far away, and where that would reach past a shore's mirrored waterline the pixel shows the unbent mirror. Far
+ * water keeps its ripples' variance only in the glitter: the reflection there is sharp, not blurred. The pictures are mixed after tone mapping. The eye within 5 cm of the surface has no reflection pass.
  */
 package org.openworld.engine.water;
