@@ -32,8 +32,11 @@ import org.openworld.engine.failure.ExitCode;
  * {@code EGL_EXT_device_base}, the older name that includes it: {@link #lacks});
  * {@code eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device)} opens one as a display
  * ({@code EGL_EXT_platform_device}); {@code eglCreateContext} makes an OpenGL 4.5 (else 3.3) core context, made
- * current with no surface at all ({@code EGL_KHR_surfaceless_context}), so everything is drawn into the engine's
- * own framebuffer objects. OpenGL's functions then come from {@code eglGetProcAddress} ({@link #glFunctions}), never
+ * current on a 1×1 pbuffer, or with no surface at all ({@code EGL_KHR_surfaceless_context}) where the display makes
+ * no pbuffer. Everything is drawn into the engine's own framebuffer objects; the pbuffer is there so that
+ * framebuffer 0 is complete: a surfaceless context's framebuffer 0 is undefined, and any draw call made while it is
+ * bound fails ({@code GL_INVALID_FRAMEBUFFER_OPERATION}), even one that rasterises nothing, such as the snow's
+ * transform-feedback step. OpenGL's functions then come from {@code eglGetProcAddress} ({@link #glFunctions}), never
  * from libGL, which a bare GPU server need not have.
  *
  * <p>Who offers it: NVIDIA's proprietary driver (one device per GPU, the same on a server with no X), and Mesa
@@ -60,10 +63,13 @@ final class EglDevice implements AutoCloseable {
 
     private final long display;
     private final long context;
+    /** The 1×1 pbuffer the context is current on, or {@code EGL_NO_SURFACE} where the display gives none. */
+    private final long surface;
 
-    private EglDevice(long display, long context) {
+    private EglDevice(long display, long context, long surface) {
         this.display = display;
         this.context = context;
+        this.surface = surface;
     }
 
     /**
@@ -213,12 +219,17 @@ final class EglDevice implements AutoCloseable {
                         EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
                 long context = eglCreateContext(display, config.get(0), EGL_NO_CONTEXT, attributes);
                 if (context != EGL_NO_CONTEXT) {
-                    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+                    long surface = eglCreatePbufferSurface(display, config.get(0),
+                            stack.ints(EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE));
+                    if (!eglMakeCurrent(display, surface, surface, context)) {
+                        if (surface != EGL_NO_SURFACE) {
+                            eglDestroySurface(display, surface);
+                        }
                         eglDestroyContext(display, context);
                         eglTerminate(display);
-                        throw failed("eglMakeCurrent with no surface");
+                        throw failed("eglMakeCurrent");
                     }
-                    return new EglDevice(display, context);
+                    return new EglDevice(display, context, surface);
                 }
             }
             eglTerminate(display);
@@ -249,6 +260,9 @@ final class EglDevice implements AutoCloseable {
     @Override
     public void close() {
         eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (surface != EGL_NO_SURFACE) {
+            eglDestroySurface(display, surface);
+        }
         eglDestroyContext(display, context);
         eglTerminate(display);
         releaseThread();
