@@ -133,6 +133,7 @@ class OutputsTest {
     }
 
     @Test
+    @Tag("gl")
     void aJpegNameGetsAJpegAndAnotherExtensionOrAnEmptyNameIsRefused() throws Exception {
         Path a = picture("a.png", 100);
         Path b = picture("b.png", 120);
