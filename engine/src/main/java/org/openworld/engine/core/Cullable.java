@@ -13,8 +13,15 @@ package org.openworld.engine.core;
  * @param tree    the boxes, for the copy at offset (0, 0)
  * @param offsets x, z pairs, metres: where each copy is drawn; copy {@code c} is at
  *                ({@code offsets[2c]}, {@code offsets[2c + 1]})
+ * @param heights the heights each node spans in each copy where known more tightly than its box
+ *                ({@link NodeHeights#NONE}: the boxes' own)
  */
-public record Cullable(BoundsTree tree, float[] offsets) {
+public record Cullable(BoundsTree tree, float[] offsets, NodeHeights heights) {
+
+    /** A tree tested with its boxes' own heights. */
+    public Cullable(BoundsTree tree, float[] offsets) {
+        this(tree, offsets, NodeHeights.NONE);
+    }
 
     public Cullable {
         if (offsets.length == 0 || offsets.length % 2 != 0) {

@@ -11,6 +11,7 @@ import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -30,7 +31,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * answers go into the entity's {@link Visibility}, read top-down with {@link Visibility#of}.
  *
  * <p>Counters per pass, e.g. {@code culling.main.tested} (boxes tested), {@code culling.main.outside} (subtrees
- * rejected) and {@code culling.main.inside} (subtrees accepted whole).
+ * rejected), {@code culling.main.inside} (subtrees accepted whole) and {@code culling.main.kept} (partial nodes not
+ * descended into, because their owner draws nothing below them on its own: {@link NodeHeights#splits}).
  *
  * <p>With {@link CullingSettings#freeze} on, each pass keeps the frustum it had when freezing began, and the frozen
  * main frustum is outlined in {@link Pass#OVERLAY}: after every drawer, so nothing paints over it (the culling
@@ -53,6 +55,7 @@ public final class CullingSystem implements EngineSystem {
     private final String[] testedName = new String[Pass.values().length];
     private final String[] outsideName = new String[Pass.values().length];
     private final String[] insideName = new String[Pass.values().length];
+    private final String[] keptName = new String[Pass.values().length];
     /** Made once, so iterating the world does not allocate a lambda per pass. */
     private final BiConsumer<Integer, Cullable> cullEntity = this::cullEntity;
     private final Predicate<Integer> withdraw = this::withdraw;
@@ -66,6 +69,9 @@ public final class CullingSystem implements EngineSystem {
     private int tested;
     private int outside;
     private int inside;
+    private int kept;
+    /** The heights of the node being tested, when its cullable knows them. */
+    private final float[] range = new float[2];
 
     public CullingSystem() {
         for (Pass pass : Pass.values()) {
@@ -73,6 +79,7 @@ public final class CullingSystem implements EngineSystem {
             testedName[pass.ordinal()] = "culling." + pass.label() + ".tested";
             outsideName[pass.ordinal()] = "culling." + pass.label() + ".outside";
             insideName[pass.ordinal()] = "culling." + pass.label() + ".inside";
+            keptName[pass.ordinal()] = "culling." + pass.label() + ".kept";
         }
     }
 
@@ -124,12 +131,14 @@ public final class CullingSystem implements EngineSystem {
         tested = 0;
         outside = 0;
         inside = 0;
+        kept = 0;
         world.each(Cullable.class, cullEntity);
         // 3. what it cost and what it found
         Counters counters = world.resource(Counters.class);
         counters.put(testedName[p], tested);
         counters.put(outsideName[p], outside);
         counters.put(insideName[p], inside);
+        counters.put(keptName[p], kept);
     }
 
     private void cullEntity(Integer entity, Cullable cullable) {
@@ -143,7 +152,8 @@ public final class CullingSystem implements EngineSystem {
         world.add(entity, visibility);
         float[] offsets = cullable.offsets();
         for (int copy = 0; copy < cullable.copies(); copy++) {
-            visit(tree, visibility, copy, 0, offsets[2 * copy], offsets[2 * copy + 1]);
+            visit(tree, cullable.heights(), visibility, copy, 0, offsets[2 * copy], offsets[2 * copy + 1],
+                    Float.NEGATIVE_INFINITY, Float.POSITIVE_INFINITY);
         }
     }
 
@@ -153,18 +163,37 @@ public final class CullingSystem implements EngineSystem {
         return world.get(entity, Cullable.class).isEmpty();
     }
 
-    /** Tests one node and, only when it straddles the frustum, its children. */
-    private void visit(BoundsTree tree, Visibility visibility, int copy, int node, float offsetX, float offsetZ) {
-        Containment containment = frustum.test(tree.boxes(), node, offsetX, offsetZ);
+    /**
+     * Tests one node and, only when it straddles the frustum, its children. Its heights are its box's, narrowed to
+     * those its cullable knows it spans in this copy and to its parent's ({@code lowest .. highest}): whatever the
+     * node draws lies within its parent's range, so a node whose heights are not known (the streamed world's, where
+     * its levels have not arrived) keeps its parent's rather than falling back to the whole world's.
+     */
+    private void visit(BoundsTree tree, NodeHeights heights, Visibility visibility, int copy, int node,
+                       float offsetX, float offsetZ, float lowest, float highest) {
+        float[] boxes = tree.boxes();
+        float minY = Math.max(lowest, boxes[6 * node + 1]);
+        float maxY = Math.min(highest, boxes[6 * node + 4]);
+        if (heights.range(node, offsetX, offsetZ, range)) {
+            minY = Math.max(minY, range[0]);
+            maxY = Math.min(maxY, range[1]);
+        }
+        Containment containment = frustum.test(boxes, node, offsetX, offsetZ, minY, maxY);
         visibility.set(copy, node, containment);
         tested++;
         switch (containment) {
             case OUTSIDE -> outside++;
             case INSIDE -> inside++;
+            case KEPT -> throw new IllegalStateException("a box test answers outside, partial or inside");
             case PARTIAL -> {
+                if (tree.childCount(node) > 0 && !heights.splits(node, offsetX, offsetZ)) {
+                    visibility.set(copy, node, Containment.KEPT);
+                    kept++;
+                    return;
+                }
                 int first = tree.firstChild(node);
                 for (int child = first; child < first + tree.childCount(node); child++) {
-                    visit(tree, visibility, copy, child, offsetX, offsetZ);
+                    visit(tree, heights, visibility, copy, child, offsetX, offsetZ, minY, maxY);
                 }
             }
         }

@@ -87,9 +87,14 @@ public final class Frustum {
      * @param offsetZ added to the box's z, metres
      */
     public Containment test(float[] boxes, int node, float offsetX, float offsetZ) {
+        return test(boxes, node, offsetX, offsetZ, boxes[6 * node + 1], boxes[6 * node + 4]);
+    }
+
+    /** As {@link #test(float[], int, float, float)}, with the box's heights replaced by {@code minY .. maxY}. */
+    public Containment test(float[] boxes, int node, float offsetX, float offsetZ, float minY, float maxY) {
         int b = 6 * node;
-        float minX = boxes[b] + offsetX, minY = boxes[b + 1], minZ = boxes[b + 2] + offsetZ;
-        float maxX = boxes[b + 3] + offsetX, maxY = boxes[b + 4], maxZ = boxes[b + 5] + offsetZ;
+        float minX = boxes[b] + offsetX, minZ = boxes[b + 2] + offsetZ;
+        float maxX = boxes[b + 3] + offsetX, maxZ = boxes[b + 5] + offsetZ;
         boolean inside = true;
         for (int i = 0; i < 4 * PLANES; i += 4) {
             float a = planes[i], bb = planes[i + 1], c = planes[i + 2], d = planes[i + 3];

@@ -18,7 +18,13 @@ public final class Visibility {
         /** Neither outside nor inside: the box may straddle the frustum (a conservative test's "maybe"). */
         PARTIAL,
         /** All eight corners are inside every plane. */
-        INSIDE
+        INSIDE,
+        /**
+         * Partly inside, and not descended into: its owner draws nothing below it on its own
+         * ({@link org.openworld.engine.core.NodeHeights#splits}), so its subtree is kept whole, unculled, as if it
+         * were inside.
+         */
+        KEPT
     }
 
     private static final Containment[] VALUES = Containment.values();
@@ -50,7 +56,8 @@ public final class Visibility {
     }
 
     /**
-     * A node's answer, given its parent's: the parent's when that was final, else the node's own test.
+     * A node's answer, given its parent's: the parent's when that was final (outside, inside or kept), else the
+     * node's own test.
      *
      * @param parent the answer for the node's parent (for the root, use {@link #root(int)} instead)
      */

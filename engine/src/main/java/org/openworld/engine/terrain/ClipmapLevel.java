@@ -9,11 +9,20 @@ import java.util.function.Consumer;
  */
 final class ClipmapLevel {
 
+    /**
+     * Samples per side of the cells whose height range each slot keeps (or the block's side, if smaller): a
+     * rectangle much smaller than a block (a quadtree node's on the coarser levels it reads) gets a range not much
+     * wider than its own, for 2 floats per 64 samples.
+     */
+    static final int CELL = 8;
+
     final int index;
     final Slot[] slots;
     private final double spacing;
     private final int size;
     private final int block;
+    /** {@link #CELL}, or the block's side if smaller. */
+    private final int cell;
     private final int side;
     private final double lookahead;
     private long centreX;
@@ -26,6 +35,7 @@ final class ClipmapLevel {
         this.spacing = spacing;
         this.size = size;
         this.block = block;
+        this.cell = Math.min(CELL, block);
         this.side = size / block;
         this.lookahead = lookaheadSeconds;
         slots = new Slot[side * side];
@@ -120,6 +130,35 @@ final class ClipmapLevel {
         return true;
     }
 
+    /**
+     * As {@link #range} with out given, but the lowest and highest height of the cells ({@link #CELL}) the
+     * rectangle touches rather than of its blocks: a tighter range for a rectangle smaller than a block.
+     */
+    boolean cellRange(long ix0, long iz0, long ix1, long iz1, float[] out) {
+        if (!placed || ix0 < windowX() || iz0 < windowZ() || ix1 > windowX() + size || iz1 > windowZ() + size) {
+            return false;
+        }
+        int cells = block / cell;
+        float min = Float.POSITIVE_INFINITY;
+        float max = Float.NEGATIVE_INFINITY;
+        for (long cz = Math.floorDiv(iz0, cell); cz <= Math.floorDiv(iz1 - 1, cell); cz++) {
+            for (long cx = Math.floorDiv(ix0, cell); cx <= Math.floorDiv(ix1 - 1, cell); cx++) {
+                long bx = Math.floorDiv(cx, cells);
+                long bz = Math.floorDiv(cz, cells);
+                Slot s = slots[Math.floorMod(bz, side) * side + Math.floorMod(bx, side)];
+                if (!s.holds(bx, bz)) {
+                    return false;
+                }
+                int c = (int) (cz - bz * cells) * cells + (int) (cx - bx * cells);
+                min = Math.min(min, s.cellMin[c]);
+                max = Math.max(max, s.cellMax[c]);
+            }
+        }
+        out[0] = min;
+        out[1] = max;
+        return true;
+    }
+
     /** The centre after the aim t: kept while within a block of t, else the multiple of block nearest t. */
     private long recentre(long centre, double t) {
         return placed && Math.abs(t - centre) < block ? centre : Math.round(t / block) * block;
@@ -144,10 +183,15 @@ final class ClipmapLevel {
         private long heldZ;
         private float min;
         private float max;
+        /** Per cell of the block ({@link #CELL}), row-major: its samples' lowest and highest height. */
+        private final float[] cellMin;
+        private final float[] cellMax;
 
         private Slot(int sx, int sz) {
             this.sx = sx;
             this.sz = sz;
+            cellMin = new float[(block / cell) * (block / cell)];
+            cellMax = new float[cellMin.length];
         }
 
         ClipmapLevel level() {
@@ -167,13 +211,32 @@ final class ClipmapLevel {
             return placed && holds(wantedX(), wantedZ());
         }
 
-        /** Records that the texels now hold block (bx, bz), whose heights span min .. max. */
-        void hold(long bx, long bz, float min, float max) {
+        /**
+         * Records that the texels now hold block (bx, bz), its heights given with {@code border} samples on each
+         * side; keeps their range, the block's and each cell's.
+         */
+        void hold(long bx, long bz, float[] bordered, int border) {
             uploaded = true;
             heldX = bx;
             heldZ = bz;
-            this.min = min;
-            this.max = max;
+            int cells = block / cell;
+            int stride = block + 2 * border;
+            java.util.Arrays.fill(cellMin, Float.POSITIVE_INFINITY);
+            java.util.Arrays.fill(cellMax, Float.NEGATIVE_INFINITY);
+            for (int j = 0; j < block; j++) {
+                for (int i = 0; i < block; i++) {
+                    float h = bordered[(j + border) * stride + i + border];
+                    int c = (j / cell) * cells + i / cell;
+                    cellMin[c] = Math.min(cellMin[c], h);
+                    cellMax[c] = Math.max(cellMax[c], h);
+                }
+            }
+            min = Float.POSITIVE_INFINITY;
+            max = Float.NEGATIVE_INFINITY;
+            for (int c = 0; c < cellMin.length; c++) {
+                min = Math.min(min, cellMin[c]);
+                max = Math.max(max, cellMax[c]);
+            }
         }
 
         private boolean holds(long bx, long bz) {

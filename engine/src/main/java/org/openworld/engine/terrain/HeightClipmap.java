@@ -234,7 +234,7 @@ public final class HeightClipmap implements AutoCloseable {
             ClipmapLevel level = f.slot.level();
             sink.upload(level.index, f.bx * block, f.bz * block, level.texel(f.bx), level.texel(f.bz), block,
                     f.heights);
-            f.slot.hold(f.bx, f.bz, f.min, f.max);
+            f.slot.hold(f.bx, f.bz, f.heights, border);
             outstanding--;
         }
         ready.subList(0, n).clear();
@@ -253,6 +253,18 @@ public final class HeightClipmap implements AutoCloseable {
      */
     public boolean heightRange(int level, long ix0, long iz0, long ix1, long iz1, float[] out) {
         return range(level, ix0, iz0, ix1, iz1, out);
+    }
+
+    /**
+     * As {@link #heightRange}, from the ranges of the blocks' {@value ClipmapLevel#CELL}-sample cells the rectangle
+     * touches: tighter for a rectangle smaller than a block.
+     */
+    public boolean cellRange(int level, long ix0, long iz0, long ix1, long iz1, float[] out) {
+        if (ix1 <= ix0 || iz1 <= iz0) {
+            throw new IllegalArgumentException("an empty rectangle of samples [" + ix0 + ", " + ix1 + ") × ["
+                    + iz0 + ", " + iz1 + ")");
+        }
+        return level(level).cellRange(ix0, iz0, ix1, iz1, out);
     }
 
     /** True when every level's whole window is resident: nothing queued, computing or waiting to be drained. */
@@ -373,25 +385,17 @@ public final class HeightClipmap implements AutoCloseable {
         }
     }
 
-    /** A worker's job: the block's heights and range, or nothing if it went stale while waiting. */
+    /** A worker's job: the block's heights, or nothing if it went stale while waiting. */
     private Finished compute(Slot slot, int generation, long bx, long bz) {
         if (closed || slot.generation != generation) {
-            return new Finished(slot, generation, bx, bz, null, 0, 0);
+            return new Finished(slot, generation, bx, bz, null);
         }
         int side = block + 2 * border;
         float[] h = heights.level(slot.level().index, bx * block - border, bz * block - border, side);
-        float min = Float.POSITIVE_INFINITY;
-        float max = Float.NEGATIVE_INFINITY;
-        for (int j = border; j < border + block; j++) {
-            for (int i = border; i < border + block; i++) {
-                min = Math.min(min, h[j * side + i]);
-                max = Math.max(max, h[j * side + i]);
-            }
-        }
-        return new Finished(slot, generation, bx, bz, h, min, max);
+        return new Finished(slot, generation, bx, bz, h);
     }
 
-    /** A worker's result for a slot's generation: the block's heights and range, or null heights if skipped. */
-    private record Finished(Slot slot, int generation, long bx, long bz, float[] heights, float min, float max) {
+    /** A worker's result for a slot's generation: the block's heights, or null heights if skipped. */
+    private record Finished(Slot slot, int generation, long bx, long bz, float[] heights) {
     }
 }

@@ -5,6 +5,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.settings.SettingsException;
 
 /**
@@ -169,7 +170,7 @@ final class StreamedWorld implements Residency, AutoCloseable {
      */
     @Override
     public boolean drawable(int node, float offsetX, float offsetZ) {
-        return levelsOf(node, offsetX, offsetZ, null);
+        return levelsOf(node, offsetX, offsetZ, null, false);
     }
 
     /**
@@ -181,17 +182,61 @@ final class StreamedWorld implements Residency, AutoCloseable {
     public boolean heightRange(int node, float offsetX, float offsetZ, float[] out) {
         out[0] = Float.POSITIVE_INFINITY;
         out[1] = Float.NEGATIVE_INFINITY;
-        if (!levelsOf(node, offsetX, offsetZ, out)) {
-            return false;
-        }
+        return levelsOf(node, offsetX, offsetZ, out, false) && widenByError(node, out);
+    }
+
+    /**
+     * As {@link #heightRange}, the levels' heights taken over the clipmap's cells ({@link ClipmapLevel#CELL} samples
+     * a side) the node touches rather than over its whole blocks: what the culling tests a node's box with. A
+     * block of level L + log2 N spans 64 of that level's samples, 2^(log2 N + 1) = 64 times a level-L node's side,
+     * so block ranges make every node's heights those of the land far around it (a leaf's −190 .. 840 m where the
+     * sea meets the hills); the cells' are 8 times closer. The level rule and the drawing order keep the blocks'
+     * ranges, so this changes no patch drawn.
+     */
+    boolean cullRange(int node, float offsetX, float offsetZ, float[] out) {
+        out[0] = Float.POSITIVE_INFINITY;
+        out[1] = Float.NEGATIVE_INFINITY;
+        return levelsOf(node, offsetX, offsetZ, out, true) && widenByError(node, out);
+    }
+
+    /**
+     * What the culling tests the roots with: each node's {@link #cullRange}, and whether it may be split (all four
+     * children {@linkplain #drawable drawable}): the level choice splits a node into no child whose heights have
+     * not arrived, so below such a node nothing is drawn on its own, and the culling need not descend.
+     */
+    NodeHeights cullHeights() {
+        return new NodeHeights() {
+            @Override
+            public boolean range(int node, float offsetX, float offsetZ, float[] out) {
+                return cullRange(node, offsetX, offsetZ, out);
+            }
+
+            @Override
+            public boolean splits(int node, float offsetX, float offsetZ) {
+                int first = tree.bounds().firstChild(node);
+                for (int child = first; child < first + 4; child++) {
+                    if (!drawable(child, offsetX, offsetZ)) {
+                        return false;
+                    }
+                }
+                return true;
+            }
+        };
+    }
+
+    /** Widens a node's range by its level's error: the finer levels below it lie within it of its surface. */
+    private boolean widenByError(int node, float[] out) {
         float error = tree.error(node);
         out[0] -= error;
         out[1] += error;
         return true;
     }
 
-    /** Whether the node's levels are resident; with {@code range}, their heights' union widened into it. */
-    private boolean levelsOf(int node, float offsetX, float offsetZ, float[] range) {
+    /**
+     * Whether the node's levels are resident; with {@code range}, their heights' union (of the blocks touched, or
+     * with {@code cells} of their cells) widened into it.
+     */
+    private boolean levelsOf(int node, float offsetX, float offsetZ, float[] range, boolean cells) {
         int level = tree.level(node);
         long originX = rootOrigin(offsetX) + tree.sampleX(node);
         long originZ = rootOrigin(offsetZ) + tree.sampleZ(node);
@@ -203,6 +248,7 @@ final class StreamedWorld implements Residency, AutoCloseable {
             long x1 = ((originX + span) >> l) + 1;
             long z1 = ((originZ + span) >> l) + 1;
             if (range == null ? !clipmap.resident(l, x0, z0, x1, z1)
+                    : cells ? !clipmap.cellRange(l, x0, z0, x1, z1, levelRange)
                     : !clipmap.heightRange(l, x0, z0, x1, z1, levelRange)) {
                 return false;
             }

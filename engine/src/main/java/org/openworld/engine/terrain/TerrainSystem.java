@@ -14,6 +14,7 @@ import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
@@ -66,6 +67,8 @@ public final class TerrainSystem implements EngineSystem {
     private PatchSelection selection;
     /** Which nodes are on the GPU and the heights they span: all of a tile's, the streamed world's as it streams. */
     private Residency residency = Residency.ALL;
+    /** The heights the culling tests each node with: the boxes' own for a tile, the streamed cells' otherwise. */
+    private NodeHeights heights = NodeHeights.NONE;
     private final PatchList patches = new PatchList();
     private PatchPatterns patterns;
     private final PatchOrder order = new PatchOrder();
@@ -128,7 +131,7 @@ public final class TerrainSystem implements EngineSystem {
         }
         entity = context.world().spawn();
         copyOffsets = new float[] {0, 0};
-        context.world().add(entity, new Cullable(tree.bounds(), copyOffsets));
+        context.world().add(entity, new Cullable(tree.bounds(), copyOffsets, heights));
         depthProgram = context.own("depth", context.shaders().program(layout.defines(), "terrain/terrain.vert",
                 "terrain/depth.frag"));
         layout.apply(depthProgram, UNIT_HEIGHTS);
@@ -189,6 +192,7 @@ public final class TerrainSystem implements EngineSystem {
         context.world().setResource(HeightField.class, stream.heights());
         tree = stream.tree();
         residency = stream;
+        heights = stream.cullHeights();
         selection = new PatchSelection(tree, stream);
         layout = PatchLayout.clipmap(tree, stream.clipSize(), terrain);
         shading = new TerrainShading(context, layout, null, seed, UNIT_HEIGHTS, times);
@@ -235,7 +239,7 @@ public final class TerrainSystem implements EngineSystem {
         copyRadius = unbounded != null ? unbounded.stream().rootRadius()
                 : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
         copyOffsets = copies(cx, cz, copyRadius, extent);
-        world.add(entity, new Cullable(tree.bounds(), copyOffsets));
+        world.add(entity, new Cullable(tree.bounds(), copyOffsets, heights));
     }
 
     /**

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.EnumMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Random;
 import org.joml.Matrix4d;
@@ -58,8 +59,9 @@ class FrustumTest {
                 }
             }
         }
-        // the cases must all occur, or the checks above proved nothing about them
-        for (Containment containment : Containment.values()) {
+        // the box test's three cases must all occur, or the checks above proved nothing about them (KEPT is the
+        // walk's, never a box test's)
+        for (Containment containment : List.of(Containment.OUTSIDE, Containment.PARTIAL, Containment.INSIDE)) {
             assertTrue(seen.getOrDefault(containment, 0) > CAMERAS, containment + " seen too rarely: " + seen);
         }
     }
