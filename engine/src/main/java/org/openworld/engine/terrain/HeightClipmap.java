@@ -9,9 +9,9 @@ import java.util.concurrent.ExecutorService;
 import org.openworld.engine.terrain.ClipmapLevel.Slot;
 
 /**
- * The unbounded world's heights around the camera (issue 20): for each level L of {@link BandedHeights}, a window of
- * {@code size × size} samples d_L apart, kept in a texture-shaped array that never moves; the window moves over it,
- * and only the blocks it uncovers are made, on worker threads, and handed to the GL thread in small pieces.
+ * The unbounded world's heights around the camera: for each level L of {@link BandedHeights}, a window of {@code size
+ * × size} samples d_L apart, kept in a texture-shaped array that never moves; the window moves over it, and only the
+ * blocks it uncovers are made, on worker threads, and handed to the GL thread in small pieces.
  *
  * <h2>Toroidal storage</h2>
  * Level-L sample (ix, iz), the one at world (ix · d_L, iz · d_L), lives at texel
@@ -255,10 +255,7 @@ public final class HeightClipmap implements AutoCloseable {
         return range(level, ix0, iz0, ix1, iz1, out);
     }
 
-    /**
-     * As {@link #heightRange}, from the ranges of the blocks' {@value ClipmapLevel#CELL}-sample cells the rectangle
-     * touches: tighter for a rectangle smaller than a block.
-     */
+    /** As {@link #heightRange}, from its blocks' {@value ClipmapLevel#CELL}-sample cells: tighter within a block. */
     public boolean cellRange(int level, long ix0, long iz0, long ix1, long iz1, float[] out) {
         if (ix1 <= ix0 || iz1 <= iz0) {
             throw new IllegalArgumentException("an empty rectangle of samples [" + ix0 + ", " + ix1 + ") × ["
