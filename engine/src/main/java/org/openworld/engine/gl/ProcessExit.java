@@ -17,8 +17,9 @@ import org.lwjgl.system.linux.DynamicLinkLoader;
  * in {@code libEGL_nvidia.so.0}, on a thread of the driver's own). {@code System.exit} ends in libc's {@code exit},
  * which runs every library's destructors, glvnd's libEGL's among them (it unloads its vendors there); the crash fits
  * the driver's thread running on into that teardown, though the reports cannot show it. {@code _exit} ends the
- * process without running them; the kernel stops that thread with the others. Before it, the Java side is already done: files are closed by the commands, {@code System.out}
- * and {@code System.err} are flushed here, and no shutdown hook of ours is left registered.
+ * process without running them; the kernel stops that thread with the others. Before it, the Java side is already
+ * done: files are closed by the commands, {@code System.out} and {@code System.err} are flushed here, and no
+ * shutdown hook of ours is left registered.
  *
  * <p>Cost: nothing. Limits: only contexts whose {@code GL_VENDOR} is NVIDIA's and that EGL made (the two EGL
  * headless modes) ask for it, so Mesa and every window keep the ordinary exit; JVM shutdown hooks and
