@@ -46,13 +46,13 @@ strip --strip-unneeded "$out"/runtime/lib/server/libjvm.so # jlink's own strippi
 
 # 4. Native libraries this machine's Java and EGL use that a bare GPU server has not.
 libs=(libEGL.so.1 libGLdispatch.so.0 libfontconfig.so.1)
-fontconfig=$(ldconfig -p | awk '$1 == "libfontconfig.so.1" && /x86-64/ {print $NF; exit}')
+fontconfig=$(ldconfig -p | awk '$1 == "libfontconfig.so.1" && /x86-64/ && !found++ {print $NF}')
 for lib in $(ldd "$out/runtime/lib/libfontmanager.so" ${fontconfig:+"$fontconfig"} | awk '/=>/ {print $1}' | sort -u); do
   case $lib in libc.so*|libm.so*|libdl.so*|libpthread.so*|librt.so*|libgcc_s.so*|libstdc++.so*|libz.so*|libjava.so|libjvm.so|libawt*) ;;
     *) libs+=("$lib");; esac
 done
 for lib in "${libs[@]}"; do
-  path=$(ldconfig -p | awk -v l="$lib" '$1 == l && /x86-64/ {print $NF; exit}')
+  path=$(ldconfig -p | awk -v l="$lib" '$1 == l && /x86-64/ && !found++ {print $NF}')
   [ -n "$path" ] || { echo "make-image: $lib not found (install it: libegl1 libfontconfig1)" >&2; exit 1; }
   cp -L "$path" "$out/lib/native/$lib"
   pkg=$(dpkg -S "$(readlink -f "$path")" 2>/dev/null | head -n 1 | cut -d: -f1) || true
