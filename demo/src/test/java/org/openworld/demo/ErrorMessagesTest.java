@@ -20,7 +20,7 @@ import org.openworld.engine.failure.ExitCode;
 import picocli.CommandLine;
 
 /**
- * Every error is one clear line (docs/errors.md): the cases issue 18 found unclear or answered with a stack trace,
+ * Every error is one clear line (docs/errors.md): the cases a hostile pass found unclear or answered with a stack trace,
  * each run as the user would, checking the useful part of the message, the exit code, and that no Java exception
  * reaches the user. The tests that name a rendering command carry the tag {@code gl}; none of them gets as far as
  * making a context except where it says so.

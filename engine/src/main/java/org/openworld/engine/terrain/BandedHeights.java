@@ -6,7 +6,7 @@ import java.util.stream.IntStream;
 import org.openworld.engine.core.HeightField;
 
 /**
- * The unbounded world's heights, made per level (issue 20): the 1/ω^β spectrum of {@link SpectralSynthesis} split
+ * The unbounded world's heights, made per level: the 1/ω^β spectrum of {@link SpectralSynthesis} split
  * into octave bands ({@link OctaveBand}), each a small periodic tile, so that level L of the pyramid is the sum of the
  * bands L and coarser, computed directly at L's spacing for any window, with no full-resolution map anywhere.
  *

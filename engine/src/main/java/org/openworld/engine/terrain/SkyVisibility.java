@@ -5,7 +5,7 @@ import java.util.function.IntToDoubleFunction;
 import java.util.stream.IntStream;
 
 /**
- * How much of its sky each place of the ground sees (issue 21, the light in the shadows): horizon-based ambient
+ * How much of its sky each place of the ground sees (the light in the shadows): horizon-based ambient
  * occlusion from the height field, one value per sample of a map as fine as the snow map, computed once on the CPU
  * when the world is built.
  *

@@ -9,7 +9,7 @@ import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.settings.SettingsException;
 
 /**
- * The unbounded world ({@code terrain.world=UNBOUNDED}, issue 20) without its textures: the heights of
+ * The unbounded world ({@code terrain.world=UNBOUNDED}) without its textures: the heights of
  * {@link BandedHeights}, streamed level by level around the camera by a {@link HeightClipmap}, and a
  * {@link TerrainQuadtree} over one root whose copies, laid on a lattice of the root's side around the camera, are each
  * a different piece of the world. It says which nodes can be drawn and which heights they span

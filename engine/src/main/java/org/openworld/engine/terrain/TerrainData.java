@@ -4,7 +4,7 @@ import java.nio.file.Path;
 
 /**
  * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow
- * map (paper 2.2) and how much sky each place sees (issue 21). Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
+ * map (paper 2.2) and how much sky each place sees. Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
  *
  * @param pyramid the heights at every power-of-two resolution, level 0 the full map
  * @param snow    where snow lies

@@ -14,7 +14,7 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.TextureArray;
 
 /**
- * The unbounded world ({@code terrain.world=UNBOUNDED}, issue 20) on the GPU: the {@link StreamedWorld}'s blocks, as
+ * The unbounded world ({@code terrain.world=UNBOUNDED}) on the GPU: the {@link StreamedWorld}'s blocks, as
  * they arrive, uploaded into three texture arrays, one layer a level, at the texels the clipmap's toroidal storage
  * gives them (heights; slopes and snow for the shading).
  *

@@ -14,7 +14,7 @@
  * ({@link org.openworld.engine.terrain.HeightImport}: 16-bit PNG or float32 raw); it is not periodic and clamps.
  * Cost O(n² log n): about 0.2 s for 2048², 0.8 s for 4096² on two cores.
  *
- * <p><b>The unbounded world: heights made per level (issue 20).</b> {@link
+ * <p><b>The unbounded world: heights made per level.</b> {@link
  * org.openworld.engine.terrain.BandedHeights} makes what the paper's conclusion proposes: each resolution directly,
  * with no full-resolution map. The spectrum is cut into octave bands, band k holding {@code 1/(4 d_k) ≤ ω < 1/(2 d_k)}
  * for level k's spacing {@code d_k = 2^k · spacing}; each band ({@link org.openworld.engine.terrain.OctaveBand}) is
@@ -96,7 +96,7 @@
  * element buffer holds them all, and {@link org.openworld.engine.terrain.PatchRenderer} draws each pattern in use
  * with one instanced call, so draw calls do not grow with the visible patches.
  *
- * <p><b>Geomorphing (issue 20, CDLOD-style after Strugar 2009).</b> In the quadtree cut each patch morphs into its
+ * <p><b>Geomorphing (CDLOD-style after Strugar 2009).</b> In the quadtree cut each patch morphs into its
  * parent's surface before it merges: it carries a factor k that rises from 0 to 1, by its box's distance D, over the
  * last 30 % of the way from its own merge distance to its parent's ({@link org.openworld.engine.terrain.DetailLimit#fineFrom}:
  * B · 2^L under the paper's rule, e · f / p under the screen error), and the vertex shader blends each vertex's
@@ -129,7 +129,7 @@
  * which keeps the contrast a plain blend would wash out. Three times the lookups of the near material and the bake;
  * the repetition measure reads 0.06 / 0.08 / 0.04 (docs/terrain.md section 4).
  *
- * <p><b>The sky the relief hides (issue 21).</b> Shadowed ground is lit by the sky's irradiance for its normal,
+ * <p><b>The sky the relief hides.</b> Shadowed ground is lit by the sky's irradiance for its normal,
  * E(n) from nine spherical-harmonic factors (the sky system's); {@link org.openworld.engine.terrain.SkyVisibility}
  * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
  * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
@@ -137,7 +137,7 @@
  * (about half a second on two cores, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
  * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
  *
- * <p><b>Cliffs (issue 21).</b> Projected from above, texture coordinates (x, z) stretch a face of slope a by
+ * <p><b>Cliffs.</b> Projected from above, texture coordinates (x, z) stretch a face of slope a by
  * 1 / cos a down its fall line (2.9 times at 70°). {@code materials.cliffs=triplanar} projects the rock three ways in
  * the near program, onto (x, z), (z, y) and (x, y), blended by the geometric normal with weights
  * {@code w_i = |n_i|^8 / Σ_j |n_j|^8}: each plane shows the surface where it faces it (at most √3 stretch where it

@@ -64,7 +64,7 @@ class ShaderProgramTest {
 
     @Test
     void semanticErrorInAnIncludedFileNamesThatFileAndLine() throws IOException {
-        // The case of issue 18: Mesa gives an undeclared name the source number 0, whatever file it is in.
+        // The case a hostile pass found: Mesa gives an undeclared name the source number 0, whatever file it is in.
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT.replace("lib/tint.glsl", "common/fog.glsl"));
         write("common/fog.glsl", "// fog\n".repeat(14) + """

@@ -36,7 +36,7 @@ import org.openworld.engine.terrain.SkyVisibility;
 import org.openworld.engine.terrain.TerrainSystem;
 
 /**
- * Light in the shadows (issue 21), on real GL: {@link WallWorld}'s wall on ground rising westwards at
+ * Light in the shadows (docs/terrain.md), on real GL: {@link WallWorld}'s wall on ground rising westwards at
  * {@value #SLOPE}°, facing the 10:00 sun, lit by the sky system. Each pixel of ground deep in the wall's shadow is
  * compared with the same pixel drawn without the shadow system, so the material cancels: its brightness ratio must
  * be what the sky's tables predict, E_shadow / E_lit with E_shadow = the sky's irradiance on the slope's normal (a

@@ -24,7 +24,7 @@ import org.openworld.engine.gl.Image;
 import org.openworld.engine.terrain.TerrainSystem;
 
 /**
- * Shadow edges soften with the distance to their caster (issue 21), as far as the filter allows: a 100 m wall and a
+ * Shadow edges soften with the distance to their caster, as far as the filter allows: a 100 m wall and a
  * 6 m wall side by side on flat ground under {@link WallWorld#EAST_SUN}, the far edge of each one's shadow seen from
  * 12 m above. The tall wall's edge lies 174 m from its caster along the sun's ray, the low wall's 10 m: the sun's
  * disc blurs the first 1.6 m and the second 0.1 m. The filter of 3 × 3 tests cannot widen by that much, but the

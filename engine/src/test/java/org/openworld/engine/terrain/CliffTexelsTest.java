@@ -22,7 +22,7 @@ import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 
 /**
- * A cliff shows its rock as finely as level ground does (issue 21): a wall world whose 70° face rises eastwards from
+ * A cliff shows its rock as finely as level ground does: a wall world whose 70° face rises eastwards from
  * a floor to a level rock plateau, the face seen head-on and the plateau straight down, both from 10 m, with the
  * normal and gloss maps off so the pictures show the rock's albedo. The texel density along a picture's rows and
  * columns is measured as the mean luma step between neighbouring pixels there; the face's rows run across it and its

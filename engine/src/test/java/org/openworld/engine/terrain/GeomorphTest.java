@@ -15,7 +15,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.camera.CameraPose;
 
 /**
- * Geomorphing (issue 20, "No popping"), GL-free: the morph ranges the quadtree cut gives its patches, and the surface
+ * Geomorphing (no popping), GL-free: the morph ranges the quadtree cut gives its patches, and the surface
  * the vertex shader draws from them, computed here by the same formulas as {@code shaders/terrain/terrain.vert}
  * (ramp, morph factor over sides and corners, the coarser level's surface).
  */

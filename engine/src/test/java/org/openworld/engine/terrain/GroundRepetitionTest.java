@@ -24,7 +24,7 @@ import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.gl.Image;
 
 /**
- * How much the ground repeats ({@link Repetition}, issue 21's measure), on a flat grass world seen straight down from
+ * How much the ground repeats ({@link Repetition}, docs/terrain.md's measure), on a flat grass world seen straight down from
  * 20, 100 and 500 m: the paper's named flaw, 1 m-scale detail textures that tile visibly, as one number per height.
  * The numbers of today's tiling are in docs/terrain.md; here the measure is shown to see the tiles on a real picture:
  * from 100 m (about 115 m of ground across the picture) the 2.7 m detail tile repeats strongly, and with tiles 50 m
@@ -79,7 +79,7 @@ class GroundRepetitionTest {
     }
 
     /**
-     * Issue 21's goal, at most half the repeated tiles' repetition from 20, 100 and 500 m: stochastic tiling meets it
+     * The goal docs/terrain.md states, at most half the repeated tiles' repetition from 20, 100 and 500 m: stochastic tiling meets it
      * by far (0.04 to 0.08 against 0.54 to 0.97: nothing in its pictures repeats), the quilted Wang tiles with 0.20,
      * 0.31 and 0.17 (0.28 to 0.32 of repeat's): two colours per edge leave each edge one of two diamonds, so some
      * likeness at one tile's shift stays, but each tile's own centre block and the random layout break the rest.
