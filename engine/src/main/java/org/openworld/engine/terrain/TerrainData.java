@@ -1,6 +1,15 @@
 package org.openworld.engine.terrain;
 
 import java.nio.file.Path;
+import org.openworld.engine.terrain.heights.HeightImport;
+import org.openworld.engine.terrain.heights.HeightImportException;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.HeightPyramid;
+import org.openworld.engine.terrain.heights.SpectralSynthesis;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.material.SkyVisibility;
+import org.openworld.engine.terrain.material.SnowMap;
 
 /**
  * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow

@@ -10,6 +10,16 @@ import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.lod.PatchList;
+import org.openworld.engine.terrain.material.FarMaterial;
+import org.openworld.engine.terrain.material.MaterialSettings;
+import org.openworld.engine.terrain.material.TerrainMaterials;
+import org.openworld.engine.terrain.material.TerrainTextures;
+import org.openworld.engine.terrain.mesh.PatchLayout;
+import org.openworld.engine.terrain.mesh.PatchOrder;
+import org.openworld.engine.terrain.mesh.PatchRenderer;
 
 /**
  * The terrain's colour in the passes that see it (main, reflection): materials that cost less with distance, and a

@@ -25,6 +25,25 @@ import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.lod.DetailLimit;
+import org.openworld.engine.terrain.lod.LodRule;
+import org.openworld.engine.terrain.lod.LodSettings;
+import org.openworld.engine.terrain.lod.PatchList;
+import org.openworld.engine.terrain.lod.PatchSelection;
+import org.openworld.engine.terrain.lod.Residency;
+import org.openworld.engine.terrain.lod.TerrainQuadtree;
+import org.openworld.engine.terrain.material.MaterialSettings;
+import org.openworld.engine.terrain.material.SnowLines;
+import org.openworld.engine.terrain.material.TerrainMaps;
+import org.openworld.engine.terrain.mesh.PatchLayout;
+import org.openworld.engine.terrain.mesh.PatchOrder;
+import org.openworld.engine.terrain.mesh.PatchPatterns;
+import org.openworld.engine.terrain.mesh.PatchRenderer;
+import org.openworld.engine.terrain.stream.StreamedWorld;
+import org.openworld.engine.terrain.stream.UnboundedWorld;
 
 /**
  * The mountains: generates (or imports) the height field with its pyramid and snow map, publishes it as the world's
@@ -47,7 +66,7 @@ public final class TerrainSystem implements EngineSystem {
      * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
      * faded into the air; beyond them the {@link FarField} carries the ground on to the horizon.
      */
-    static final double COPY_DISTANCE = 12_000;
+    public static final double COPY_DISTANCE = 12_000;
     /** The tile's pyramid level the far field reads: 256 m apart at 2 m, as the unbounded world's coarsest. */
     static final int FAR_LEVEL = 7;
     /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
@@ -246,7 +265,7 @@ public final class TerrainSystem implements EngineSystem {
      * The offsets, metres, of the copies (roots) on a square of {@code radius} around copy (cx, cz), each
      * {@code extent} a side: x, z pairs, row by row from the north-west.
      */
-    static float[] copies(long cx, long cz, int radius, double extent) {
+    public static float[] copies(long cx, long cz, int radius, double extent) {
         int side = 2 * radius + 1;
         float[] offsets = new float[2 * side * side];
         int c = 0;
@@ -344,7 +363,7 @@ public final class TerrainSystem implements EngineSystem {
     }
 
     /** The unbounded world, once initialised (tests read its textures); null for a tile. */
-    UnboundedWorld unbounded() {
+    public UnboundedWorld unbounded() {
         return unbounded;
     }
 }

@@ -32,7 +32,7 @@ import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.sky.SkyView;
 import org.openworld.engine.sky.SolarPosition;
 import org.openworld.engine.sky.SunTables;
-import org.openworld.engine.terrain.SkyVisibility;
+import org.openworld.engine.terrain.material.SkyVisibility;
 import org.openworld.engine.terrain.TerrainSystem;
 
 /**

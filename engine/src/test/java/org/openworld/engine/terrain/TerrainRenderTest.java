@@ -24,6 +24,9 @@ import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.material.SnowLines;
 
 /**
  * The terrain rendered headless on small worlds: the stitching leaves no crack between levels, and the default
