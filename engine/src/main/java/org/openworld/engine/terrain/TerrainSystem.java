@@ -28,6 +28,7 @@ import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.DetailLimit;
 import org.openworld.engine.terrain.lod.LodRule;
 import org.openworld.engine.terrain.lod.LodSettings;
@@ -62,11 +63,6 @@ import org.openworld.engine.terrain.stream.UnboundedWorld;
  */
 public final class TerrainSystem implements EngineSystem {
 
-    /**
-     * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
-     * faded into the air; beyond them the {@link FarField} carries the ground on to the horizon.
-     */
-    public static final double COPY_DISTANCE = 12_000;
     /** The tile's pyramid level the far field reads: 256 m apart at 2 m, as the unbounded world's coarsest. */
     static final int FAR_LEVEL = 7;
     /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
@@ -256,26 +252,9 @@ public final class TerrainSystem implements EngineSystem {
         copyCentreX = cx;
         copyCentreZ = cz;
         copyRadius = unbounded != null ? unbounded.stream().rootRadius()
-                : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
-        copyOffsets = copies(cx, cz, copyRadius, extent);
+                : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(CopyLattice.COPY_DISTANCE / extent - 0.5));
+        copyOffsets = CopyLattice.copies(cx, cz, copyRadius, extent);
         world.add(entity, new Cullable(tree.bounds(), copyOffsets, heights));
-    }
-
-    /**
-     * The offsets, metres, of the copies (roots) on a square of {@code radius} around copy (cx, cz), each
-     * {@code extent} a side: x, z pairs, row by row from the north-west.
-     */
-    public static float[] copies(long cx, long cz, int radius, double extent) {
-        int side = 2 * radius + 1;
-        float[] offsets = new float[2 * side * side];
-        int c = 0;
-        for (int dz = -radius; dz <= radius; dz++) {
-            for (int dx = -radius; dx <= radius; dx++) {
-                offsets[c++] = (float) ((cx + dx) * extent);
-                offsets[c++] = (float) ((cz + dz) * extent);
-            }
-        }
-        return offsets;
     }
 
     @Override

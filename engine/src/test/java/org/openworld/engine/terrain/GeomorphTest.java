@@ -17,6 +17,7 @@ import org.openworld.engine.terrain.heights.HeightPyramid;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TestPyramids;
 import org.openworld.engine.terrain.heights.TestTerrain;
+import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.Corner;
 import org.openworld.engine.terrain.lod.DetailLimit;
 import org.openworld.engine.terrain.lod.LodMode;
@@ -234,7 +235,7 @@ class GeomorphTest {
                     });
             last.set(eye);
             double extent = world.tree().extent();
-            return TerrainSystem.copies(Math.round(eye.x / extent), Math.round(eye.z / extent), world.rootRadius(),
+            return CopyLattice.copies(Math.round(eye.x / extent), Math.round(eye.z / extent), world.rootRadius(),
                     extent);
         }
 

@@ -7,7 +7,13 @@ import java.util.Arrays;
  * the camera for a periodic map, one copy for an imported map); a patch at a tile's edge has its neighbour in the
  * adjacent copy, or none when no copy is drawn there. Rebuilt per selection from the offsets; grows, never shrinks.
  */
-final class CopyLattice {
+public final class CopyLattice {
+
+    /**
+     * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
+     * faded into the air; beyond them the {@code FarField} carries the ground on to the horizon.
+     */
+    public static final double COPY_DISTANCE = 12_000;
 
     /** The 3 × 3 steps (dx, dz) ∈ {−1, 0, 1}², row-major. */
     private static final int STEPS = 9;
@@ -64,5 +70,22 @@ final class CopyLattice {
     /** The copy one tile away in direction (dx, dz), each −1, 0 or 1; −1 when none is drawn there. */
     int neighbour(int copy, int dx, int dz) {
         return neighbours[copy * STEPS + (dz + 1) * 3 + dx + 1];
+    }
+
+    /**
+     * The offsets, metres, of the copies (roots) on a square of {@code radius} around copy (cx, cz), each
+     * {@code extent} a side: x, z pairs, row by row from the north-west.
+     */
+    public static float[] copies(long cx, long cz, int radius, double extent) {
+        int side = 2 * radius + 1;
+        float[] offsets = new float[2 * side * side];
+        int c = 0;
+        for (int dz = -radius; dz <= radius; dz++) {
+            for (int dx = -radius; dx <= radius; dx++) {
+                offsets[c++] = (float) ((cx + dx) * extent);
+                offsets[c++] = (float) ((cz + dz) * extent);
+            }
+        }
+        return offsets;
     }
 }

@@ -7,10 +7,10 @@ import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.settings.SettingsException;
-import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.QuadtreeLod;
 import org.openworld.engine.terrain.lod.Residency;
 import org.openworld.engine.terrain.lod.TerrainQuadtree;
@@ -84,7 +84,7 @@ public final class StreamedWorld implements Residency, AutoCloseable {
         float[] errors = times.time("errors", () -> heights.levelErrors(levels));
         tree = TerrainQuadtree.uniform(cells << root, s.spacing(), cells, errors, (float) heights.lowest(),
                 (float) heights.highest());
-        rootRadius = (int) Math.ceil(TerrainSystem.COPY_DISTANCE / tree.extent());
+        rootRadius = (int) Math.ceil(CopyLattice.COPY_DISTANCE / tree.extent());
         int size = clipSize(s, levels, heights.spacing(levels - 1), tree.extent(), rootRadius);
         // at low priority: the frame's own thread comes first
         workers = (ThreadPoolExecutor) Executors.newFixedThreadPool(flightWorkers, r -> {
@@ -313,7 +313,7 @@ public final class StreamedWorld implements Residency, AutoCloseable {
         return Math.round(offset / heights.spacing(0)) - tree.size() / 2;
     }
 
-    /** Roots drawn on each side of the camera's: enough to reach {@link TerrainSystem#COPY_DISTANCE}. */
+    /** Roots drawn on each side of the camera's: enough to reach {@link CopyLattice#COPY_DISTANCE}. */
     public int rootRadius() {
         return rootRadius;
     }

@@ -23,9 +23,9 @@ import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.gl.DrawStats;
-import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TestTerrain;
+import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.LodSettings;
 import org.openworld.engine.terrain.lod.TerrainQuadtree;
 import org.openworld.engine.water.MirrorCamera;
@@ -175,7 +175,7 @@ class StreamedCullingTest {
     /** The roots around the camera, as the terrain lays them. */
     private static float[] offsets() {
         double extent = world.tree().extent();
-        return TerrainSystem.copies(Math.round(pose.x() / extent), Math.round(pose.z() / extent), world.rootRadius(),
+        return CopyLattice.copies(Math.round(pose.x() / extent), Math.round(pose.z() / extent), world.rootRadius(),
                 extent);
     }
 
