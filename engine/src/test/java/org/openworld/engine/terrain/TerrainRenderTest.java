@@ -106,7 +106,7 @@ class TerrainRenderTest {
             // the normalised height's 0 and 1: the tile's lowest and highest sample; the unbounded world, which has
             // neither, puts 0 the sea fraction of the relief below the sea and 1 the relief above that
             TerrainSettings s = TerrainSettings.DEFAULTS;
-            HeightMap base = terrain.data() != null ? terrain.data().pyramid().base() : null;
+            HeightMap base = terrain.ground() instanceof TileGround tile ? tile.data().pyramid().base() : null;
             double lowest = base != null ? base.min() : -s.seaFraction() * s.relief();
             double range = base != null ? base.max() - base.min() : s.relief();
             // at init, before any update: the snow map's 40 % to 70 % of the way up

@@ -3,7 +3,6 @@ package org.openworld.engine.terrain.heights;
 import java.util.SplittableRandom;
 import java.util.function.DoubleBinaryOperator;
 import java.util.stream.IntStream;
-import org.openworld.engine.core.HeightField;
 
 /**
  * The unbounded world's heights, made per level: the 1/ω^β spectrum of {@link SpectralSynthesis} split
@@ -41,7 +40,7 @@ import org.openworld.engine.core.HeightField;
  * Making the world: one 512² inverse FFT per band, 9 MiB of tiles for the defaults (1 MiB a band). A height of
  * level L: one 16-sample B-spline per band k ≥ L.
  */
-public final class BandedHeights implements HeightField {
+public final class BandedHeights implements HeightSource {
 
     /** The relief spans this many standard deviations of the summed bands (±3σ). */
     static final double RELIEF_SIGMAS = 6;
@@ -87,11 +86,13 @@ public final class BandedHeights implements HeightField {
     }
 
     /** No height of any level lies below this, metres: the mean less every band's largest magnitude. */
+    @Override
     public double lowest() {
         return base - reach;
     }
 
     /** No height of any level lies above this, metres. */
+    @Override
     public double highest() {
         return base + reach;
     }
@@ -127,22 +128,19 @@ public final class BandedHeights implements HeightField {
     }
 
     /** The number of bands, and of levels with a band of their own: level L holds bands L .. levels() − 1. */
+    @Override
     public int levels() {
         return bands.length;
     }
 
     /** Metres between the samples of a level: 2^level · terrain.spacing. */
+    @Override
     public double spacing(int level) {
         return Math.scalb(spacing, level);
     }
 
-    /** Height of level 0, the finest, at (x, z): every band. */
-    @Override
-    public double heightAt(double x, double z) {
-        return height(0, x, z);
-    }
-
     /** Height of a level at (x, z), metres: the mean height plus the bands {@code level} and coarser. */
+    @Override
     public double height(int level, double x, double z) {
         checkLevel(level);
         double h = base;
@@ -183,6 +181,7 @@ public final class BandedHeights implements HeightField {
      * A window of level {@code level}: n × n heights, row-major, sample (i, j) at world
      * ((ix0 + i) · d, (iz0 + j) · d) for d = {@link #spacing(int)}.
      */
+    @Override
     public float[] level(int level, long ix0, long iz0, int n) {
         return window(level, ix0, iz0, n, (x, z) -> height(level, x, z));
     }

@@ -15,8 +15,12 @@ import java.util.stream.IntStream;
  * the finer level; its frequency response is cos⁴(πf) (f in cycles per sample), 1/4 at the new Nyquist frequency
  * f = 1/4 and 0 at the old one, so what would alias after keeping every second sample is mostly gone. Periodic maps
  * wrap at the edges, imported ones repeat their edge samples.
+ *
+ * <p>As a {@link HeightSource} (the generated tile's and the imported map's) its levels are the pyramid's, each
+ * tile centred on the origin, so world sample (i, j) of level L is texel (i + n_L/2, j + n_L/2) of a level n_L a
+ * side.
  */
-public final class HeightPyramid {
+public final class HeightPyramid implements HeightSource {
 
     /** Binomial weights 1/16, 4/16, 6/16 of the 5-tap kernel: exact in binary, so no rounding in the weights. */
     private static final float W0 = 6f / 16;
@@ -107,5 +111,44 @@ public final class HeightPyramid {
 
     public HeightMap base() {
         return levels.get(0);
+    }
+
+    @Override
+    public int levels() {
+        return levels.size();
+    }
+
+    @Override
+    public double spacing(int level) {
+        return levels.get(level).spacing();
+    }
+
+    @Override
+    public double height(int level, double x, double z) {
+        return levels.get(level).heightAt(x, z);
+    }
+
+    @Override
+    public double lowest() {
+        return base().min();
+    }
+
+    @Override
+    public double highest() {
+        return base().max();
+    }
+
+    /** The level's own samples, wrapped (periodic) or clamped (imported) outside the tile. */
+    @Override
+    public float[] level(int level, long ix0, long iz0, int n) {
+        HeightMap map = levels.get(level);
+        int half = map.size() / 2;
+        float[] h = new float[n * n];
+        for (int j = 0; j < n; j++) {
+            for (int i = 0; i < n; i++) {
+                h[j * n + i] = map.sample((int) (ix0 + i + half), (int) (iz0 + j + half));
+            }
+        }
+        return h;
     }
 }

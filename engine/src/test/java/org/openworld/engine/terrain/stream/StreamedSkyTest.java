@@ -27,6 +27,7 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.settings.Settings;
+import org.openworld.engine.terrain.StreamedGround;
 import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.material.SkyVisibility;
@@ -76,7 +77,7 @@ class StreamedSkyTest {
                     -30, 60));
             engine.update();
             engine.render();
-            UnboundedWorld unbounded = terrain.unbounded();
+            UnboundedWorld unbounded = ((StreamedGround) terrain.ground()).world();
             for (int frame = 0; frame < 200 && unbounded.skyWaiting() > 0; frame++) { // eight blocks a frame
                 engine.render();
             }
@@ -156,7 +157,7 @@ class StreamedSkyTest {
             double[] mirrored = new double[1];
             engine.collectFrames(true, f -> mirrored[0] = f.counters().getOrDefault("terrain.reflection.patches", 0.0));
             assertTrue(mirrored[0] > 0, "the reflection draws ground");
-            UnboundedWorld unbounded = terrain.unbounded();
+            UnboundedWorld unbounded = ((StreamedGround) terrain.ground()).world();
             int waiting = unbounded.skyWaiting();
             int slots = unbounded.stream().clipSize() / StreamedWorld.BLOCK;
             int blocks = unbounded.stream().levels() * slots * slots;
