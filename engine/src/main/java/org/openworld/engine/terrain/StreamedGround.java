@@ -32,7 +32,7 @@ public final class StreamedGround implements Ground {
         this.stream = world.stream();
         layout = PatchLayout.clipmap(stream.tree(), stream.clipSize(), context.settings()
                 .get(TerrainSettings.class));
-        shading = new TerrainShading(context, layout, null, seed, unitHeights, times);
+        shading = TerrainShading.coarse(context, layout, seed, unitHeights, times);
     }
 
     /** The world's streams and textures (tests read them). */

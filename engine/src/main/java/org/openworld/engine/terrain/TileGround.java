@@ -41,7 +41,7 @@ public final class TileGround implements Ground {
         tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         layout = PatchLayout.tile(base, cells);
         maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
-        shading = new TerrainShading(context, layout, base, seed, unitHeights, times);
+        shading = TerrainShading.baked(context, layout, base, seed, unitHeights, times);
         bind(unitHeights, unitGradients, unitSnow);
         shading.bake(context.settings().get(MaterialSettings.class));
     }

@@ -52,6 +52,21 @@ public record PatchLayout(int mapSize, double spacing, int cells, boolean period
         return (streamed() ? clipSize : mapSize) * spacing;
     }
 
+    /** The sampler the slopes are read through: the clipmap's slopes, or the tile's gradient map. */
+    public String slopeSampler() {
+        return streamed() ? "slopes" : "gradients";
+    }
+
+    /** Sets the extent the programs' texture coordinates span ({@link #extent}), under the layout's name for it. */
+    public void extentUniforms(ShaderProgram p) {
+        if (streamed()) {
+            p.int1("clipSize").set(clipSize);
+            p.float1("clipExtent").set((float) extent());
+        } else {
+            p.float1("extent").set((float) extent());
+        }
+    }
+
     /** Sets the vertex stage's uniforms on {@code p}: where the heights are and how the patch grid maps onto them. */
     public void apply(ShaderProgram p, int unitHeights) {
         p.use();
