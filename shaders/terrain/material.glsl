@@ -1,6 +1,6 @@
 // Terrain materials (paper 2.2, figures 1, 3 and 4): grass low, rock in between and on steep slopes, snow high,
 // each a synthesised tileable texture with a tangent-space normal map and a gloss map; lit by the sun and the sky.
-// Engine side: org.openworld.engine.terrain.TerrainMaterials (binds everything below), TerrainTextures (synthesis).
+// Engine side: org.openworld.engine.terrain.material.TerrainMaterials (binds everything below), TerrainTextures (synthesis).
 //
 //   vec3 shadeTerrain(TerrainSurface s)       linear RGB, lit, before fog: steps 1-5 below, as the near terrain does
 //   MatTexel terrainMaterial(TerrainSurface s, float coarseWeight, vec2 macroTint)

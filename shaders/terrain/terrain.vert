@@ -1,5 +1,5 @@
 #version 330 core
-// Geomipmapped terrain patches (engine: org.openworld.engine.terrain.PatchRenderer). Every patch is the same grid
+// Geomipmapped terrain patches (engine: org.openworld.engine.terrain.mesh.PatchRenderer). Every patch is the same grid
 // of (N+1)² vertices; the instance says where it lies, how far apart its vertices are and which pyramid level each
 // of its vertices reads. Heights come from the R32F pyramid texture, level L = pyramid level L, read exactly; with
 // TERRAIN_CLIPMAP (terrain.world=unbounded) from layer L of the streamed clipmap (HeightClipmap), whose window

@@ -13,7 +13,7 @@ import org.openworld.engine.gl.ShaderSources;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsException;
 import org.openworld.engine.settings.SettingsFile;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 
 /**
  * One place that turns the common options into a running engine: settings with the user's {@code --set} values,

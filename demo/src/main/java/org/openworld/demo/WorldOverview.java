@@ -8,10 +8,10 @@ import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import org.openworld.engine.files.AtomicFiles;
-import org.openworld.engine.terrain.BandedHeights;
-import org.openworld.engine.terrain.HeightMap;
-import org.openworld.engine.terrain.PowerSpectrum;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.BandedHeights;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.PowerSpectrum;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 
 /**
  * {@code openworld heightmap --overview}: a picture of the unbounded world ({@link BandedHeights}), 64 km × 64 km

@@ -21,7 +21,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.gl.Texture3D;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import picocli.CommandLine;
 
 /**

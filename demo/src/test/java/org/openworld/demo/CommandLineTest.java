@@ -17,7 +17,7 @@ import org.openworld.engine.bench.SummaryJson;
 import org.openworld.engine.failure.ExitCode;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.settings.SettingsException;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 
 /**
  * The commands as a user runs them: real OpenGL (headless), real files, exit codes and messages. The tests that run a

@@ -14,7 +14,7 @@ import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.HeightField;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import picocli.CommandLine;
 
 /**

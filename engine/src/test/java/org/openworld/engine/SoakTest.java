@@ -18,7 +18,7 @@ import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.camera.HeightReference;
 import org.openworld.engine.camera.Keyframe;
 import org.openworld.engine.core.EngineSystem;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.trees.TreeSystem;
 
 /**

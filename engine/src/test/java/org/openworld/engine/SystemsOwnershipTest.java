@@ -32,7 +32,7 @@ import org.openworld.engine.minimap.MinimapSystem;
 import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.shadow.ShadowSystem;
 import org.openworld.engine.sky.SkySystem;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.water.WaterSystem;
 

@@ -1,5 +1,5 @@
 #version 330 core
-// A glossy surface seen where it mirrors the sun (engine test: org.openworld.engine.terrain.SpecularAntialiasTest):
+// A glossy surface seen where it mirrors the sun (engine test: org.openworld.engine.terrain.material.SpecularAntialiasTest):
 // every pixel shows the same ground point, the mirror point of the sun for the camera, under the same light, with
 // the gloss of a polished texel (1). The left half is smooth; on the right half the detail normal tilts by uTilt
 // (tangent-space slope along x) on every other pixel, in a checkerboard: bumps smaller than a pixel, as far ground

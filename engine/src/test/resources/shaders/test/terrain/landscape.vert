@@ -1,5 +1,5 @@
 #version 330 core
-// A stand-in landscape mesh for the material tests (org.openworld.engine.terrain.MaterialRenderTest), or, with
+// A stand-in landscape mesh for the material tests (org.openworld.engine.terrain.material.MaterialRenderTest), or, with
 // uSky = 1, a full-screen triangle (positions given in clip space) for the sky behind it.
 #include "common/frame.glsl"
 

@@ -1,6 +1,6 @@
 #version 330 core
 // Eight material cases side by side, each a cell of ground seen from above (engine test:
-// org.openworld.engine.terrain.MaterialRenderTest, which knows the same layout). Top row, left to right:
+// org.openworld.engine.terrain.material.MaterialRenderTest, which knows the same layout). Top row, left to right:
 //   0 a flat low meadow, 1 a flat high snowfield, 2 a 55-degree slope at low height, 3 a flat high bare peak;
 // bottom row:
 //   4 height rising 0 -> 1 left to right with a snow map rising above 0.55, 5 slope rising 0 -> 65 degrees at low

@@ -34,7 +34,7 @@ import org.openworld.engine.core.FftThreads;
  * sort another 30 ms.
  *
  * <h2>Determinism</h2>
- * As in {@link org.openworld.engine.terrain.SpectralSynthesis}: phases from one {@link SplittableRandom} in index
+ * As in {@link org.openworld.engine.terrain.heights.SpectralSynthesis}: phases from one {@link SplittableRandom} in index
  * order, drawn as points of the unit disc by rejection (no sin/cos), amplitudes by {@link StrictMath}, and the
  * transform with JTransforms' thread count pinned by {@link FftThreads} under a lock, so a seed gives the same field
  * bit for bit on any number of cores.

@@ -1,6 +1,16 @@
 package org.openworld.engine.terrain;
 
 import java.nio.file.Path;
+import org.openworld.engine.terrain.heights.HeightImport;
+import org.openworld.engine.terrain.heights.HeightImportException;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.HeightPyramid;
+import org.openworld.engine.terrain.heights.HeightSource;
+import org.openworld.engine.terrain.heights.SpectralSynthesis;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.material.SkyVisibility;
+import org.openworld.engine.terrain.material.SnowMap;
 
 /**
  * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow
@@ -15,9 +25,16 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
     /** Stage names as {@link StageTimes} records them. */
     public static final String SYNTHESIS = "synthesis";
     public static final String IMPORT = "import";
+    public static final String SAMPLING = "sampling";
     public static final String PYRAMID = "pyramid";
     public static final String SNOW_MAP = "snow map";
     public static final String SKY_VISIBILITY = "sky view";
+
+    /** Makes a tile's data from the settings and the seed: {@link #create}, or a tile of another source. */
+    @FunctionalInterface
+    public interface Maker {
+        TerrainData make(TerrainSettings s, int seed, StageTimes times);
+    }
 
     /**
      * Makes the heights (synthesised from the seed, or imported when {@link TerrainSettings#importFile()} is set),
@@ -29,6 +46,23 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
         HeightMap base = s.imports()
                 ? times.time(IMPORT, () -> HeightImport.read(Path.of(s.importFile()), s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
+        return of(base, s, seed, times);
+    }
+
+    /**
+     * A tile of any height source: level 0's samples over the tile of {@code size²} samples centred on the origin,
+     * then the pyramid, the snow map and the sky's visibility as for a generated tile.
+     *
+     * @param periodic whether the source repeats every {@code size} samples, so that copies of the tile join
+     */
+    public static TerrainData of(HeightSource source, int size, boolean periodic, TerrainSettings s, int seed,
+                                 StageTimes times) {
+        HeightMap base = times.time(SAMPLING, () -> new HeightMap(size, source.spacing(0),
+                source.level(0, -size / 2, -size / 2, size), periodic));
+        return of(base, s, seed, times);
+    }
+
+    private static TerrainData of(HeightMap base, TerrainSettings s, int seed, StageTimes times) {
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
         SkyVisibility sky = times.time(SKY_VISIBILITY, () -> SkyVisibility.of(pyramid));

@@ -4,12 +4,23 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.Owned;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.lod.PatchList;
+import org.openworld.engine.terrain.material.FarMaterial;
+import org.openworld.engine.terrain.material.MaterialSettings;
+import org.openworld.engine.terrain.material.TerrainMaterials;
+import org.openworld.engine.terrain.material.TerrainTextures;
+import org.openworld.engine.terrain.mesh.PatchLayout;
+import org.openworld.engine.terrain.mesh.PatchOrder;
+import org.openworld.engine.terrain.mesh.PatchRenderer;
 
 /**
  * The terrain's colour in the passes that see it (main, reflection): materials that cost less with distance, and a
@@ -72,30 +83,42 @@ final class TerrainShading {
     private TerrainMaterials materials;
     private boolean quilted;
     private final PatchLayout layout;
-    /** The baked far material over the tile; null for the streamed world, whose patches are all near. */
-    private final FarMaterial farMaterial;
+    /** How the ground beyond the far distance is coloured: the tile's bake, or the materials' coarse scale. */
+    private final Far far;
     private final int unitMaterials;
+    private final int unitGradients;
     private final int unitFar;
     /** The far field's material uniforms, once {@link #farField} made its program. */
     private TerrainMaterials.Uniforms farFieldUniforms;
 
     /**
-     * Makes the programs, the materials (quilted if the settings of the start ask for it, timed as the
-     * {@code quilting} stage) and the far material, handed to the system's owner; {@link #bake} bakes the far
-     * material.
+     * The shading of a tile, its far ground baked over {@code base} ({@link #bake} bakes it).
      *
-     * <p>The streamed world ({@link PatchLayout#streamed()}) has no baked far material: its programs read the slopes
-     * and the snow of the clipmap on the gradients' and the snow map's units, and its far program samples the
-     * materials at the coarse scale alone.
-     *
-     * @param base          the tile's heights, for the far material; null for the streamed world
-     * @param unitHeights   the unit of the height pyramid (clipmap); the gradients (slopes) and the snow map take
-     *                      the next two, the materials the {@link TerrainMaterials#UNITS} after those, then the far
-     *                      material two
+     * @param unitHeights the unit of the height pyramid; the gradients and the snow map take the next two, the
+     *                    materials the {@link TerrainMaterials#UNITS} after those, then the far material two
      */
-    TerrainShading(EngineContext context, PatchLayout layout, HeightMap base, int seed, int unitHeights,
-                   StageTimes times) {
-        int unitGradients = unitHeights + 1;
+    static TerrainShading baked(EngineContext context, PatchLayout layout, HeightMap base, int seed, int unitHeights,
+                                StageTimes times) {
+        return new TerrainShading(context, layout, seed, unitHeights, times,
+                shading -> shading.new Baked(new FarMaterial(context, base, unitHeights)));
+    }
+
+    /**
+     * The shading of streamed levels: no bake, the programs read the slopes and the snow of the clipmap on the
+     * gradients' and the snow map's units, and the far program samples the materials at the coarse scale alone.
+     */
+    static TerrainShading coarse(EngineContext context, PatchLayout layout, int seed, int unitHeights,
+                                 StageTimes times) {
+        return new TerrainShading(context, layout, seed, unitHeights, times, shading -> shading.new Coarse());
+    }
+
+    /**
+     * Makes the programs, the materials (quilted if the settings of the start ask for it, timed as the
+     * {@code quilting} stage) and the far look, handed to the system's owner.
+     */
+    private TerrainShading(EngineContext context, PatchLayout layout, int seed, int unitHeights, StageTimes times,
+                           Function<TerrainShading, Far> far) {
+        unitGradients = unitHeights + 1;
         unitMaterials = unitHeights + 3;
         unitFar = unitMaterials + TerrainMaterials.UNITS; // and the next: colour, slope
         gl = context.gl();
@@ -105,22 +128,14 @@ final class TerrainShading {
         tiles = TerrainTextures.generate(seed);
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         this.layout = layout;
-        farMaterial = layout.streamed() ? null : new FarMaterial(context, base, unitHeights);
+        this.far = far.apply(this);
         MaterialSettings.Cliffs cliffs = context.settings().get(MaterialSettings.class).cliffs();
         shadowed = lit(context, "", List.of(), cliffs, unitHeights);
         unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), cliffs, unitHeights);
-        if (layout.streamed()) { // the near material, tinted
-            ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_LEVELS"), unitHeights);
-            nearSamplers(levels, unitHeights);
-            levelsUniforms = TerrainMaterials.uniforms(levels);
-        } else {
-            ShaderProgram levels = variant(context, "program.levels", List.of("TERRAIN_FAR", "TERRAIN_LEVELS"),
-                    unitHeights);
-            farSamplers(levels, unitFar);
-            levelsUniforms = TerrainMaterials.lightUniforms(levels);
-        }
+        ShaderProgram levels = variant(context, "program.levels", this.far.levelsDefines(), unitHeights);
+        levelsUniforms = this.far.reads(levels, unitHeights); // the far look, tinted
         tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), unitHeights);
-        tangentSpace.sampler(layout.streamed() ? "slopes" : "gradients", unitGradients);
+        tangentSpace.sampler(layout.slopeSampler(), unitGradients);
     }
 
     /**
@@ -128,9 +143,7 @@ final class TerrainShading {
      * since); nothing for the streamed world.
      */
     void bake(MaterialSettings settings) {
-        if (farMaterial != null) {
-            farMaterial.refresh(materials, settings, unitMaterials);
-        }
+        far.refresh(settings);
     }
 
     /** The materials' textures for this tiling: the tiles, or the Wang tiles quilted from them now. */
@@ -148,33 +161,14 @@ final class TerrainShading {
                     int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far = new EnumMap<>(MaterialSettings.Tiling.class);
-        TerrainMaterials.Uniforms baked = layout.streamed() ? null : bakedFar(context, suffix, light, unitHeights);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
                     with(with(light, tiling.defines()), cliffs.defines()), unitHeights);
             nearSamplers(p, unitHeights);
             near.put(tiling, new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
-            far.put(tiling, baked != null ? baked : coarseFar(context, suffix, light, tiling, unitHeights));
         }
+        this.far.programs(context, suffix, light, unitHeights, far);
         return new Lit(near, far);
-    }
-
-    /** The tile's far program: the baked material, lit, its sky per vertex. */
-    private TerrainMaterials.Uniforms bakedFar(EngineContext context, String suffix, List<String> light,
-                                               int unitHeights) {
-        ShaderProgram f = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")), unitHeights);
-        farSamplers(f, unitFar);
-        f.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
-        return TerrainMaterials.lightUniforms(f);
-    }
-
-    /** The unbounded world's far program for one tiling: the materials at the coarse scale, its sky per vertex. */
-    private TerrainMaterials.Uniforms coarseFar(EngineContext context, String suffix, List<String> light,
-                                                MaterialSettings.Tiling tiling, int unitHeights) {
-        ShaderProgram f = variant(context, "program.far" + tiling.roleSuffix() + suffix,
-                with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
-        nearSamplers(f, unitHeights);
-        return TerrainMaterials.uniforms(f);
     }
 
     /**
@@ -186,21 +180,12 @@ final class TerrainShading {
     ShaderProgram farField(EngineContext context, int unitHeights) {
         List<String> defines = with(layout.defines(), List.of("SUN_UNSHADOWED", "TERRAIN_FAR", "TERRAIN_FARFIELD"));
         ShaderProgram p = context.own("program.far-field", context.shaders().program(
-                layout.streamed() ? with(defines, List.of("MAT_COARSE_ONLY")) : defines,
-                "terrain/farfield.vert", "terrain/terrain.frag"));
+                with(defines, far.farFieldDefines()), "terrain/farfield.vert", "terrain/terrain.frag"));
         p.use();
         p.sampler("heights", unitHeights);
         p.sampler("snowMap", unitHeights + 2);
-        if (layout.streamed()) {
-            nearSamplers(p, unitHeights);
-            p.int1("clipSize").set(layout.clipSize());
-            p.float1("clipExtent").set((float) layout.extent());
-            farFieldUniforms = TerrainMaterials.uniforms(p);
-        } else {
-            farSamplers(p, unitFar);
-            p.float1("extent").set((float) layout.extent());
-            farFieldUniforms = TerrainMaterials.lightUniforms(p);
-        }
+        farFieldUniforms = far.reads(p, unitHeights);
+        layout.extentUniforms(p);
         return p;
     }
 
@@ -213,12 +198,8 @@ final class TerrainShading {
     private void nearSamplers(ShaderProgram p, int unitHeights) {
         p.vec2("heightRange").set(layout.lowest(), 1f / Math.max(1e-3f, layout.highest() - layout.lowest()));
         p.sampler("snowMap", unitHeights + 2);
-        if (layout.streamed()) {
-            p.sampler("slopes", unitHeights + 1);
-            return;
-        }
-        p.sampler("gradients", unitHeights + 1); // the far programs read the gradient from the far material
-        farSamplers(p, unitFar);
+        p.sampler(layout.slopeSampler(), unitGradients); // the far programs read the gradient from the far look
+        far.fadesInto(p);
     }
 
     private static List<String> with(List<String> defines, List<String> more) {
@@ -237,7 +218,7 @@ final class TerrainShading {
         ShaderProgram p = context.own(role, context.shaders().program(with(defines, layout.defines()),
                 "terrain/terrain.vert", "terrain/terrain.frag"));
         layout.apply(p, unitHeights);
-        p.float1(layout.streamed() ? "clipExtent" : "extent").set((float) layout.extent());
+        layout.extentUniforms(p);
         return p;
     }
 
@@ -255,17 +236,14 @@ final class TerrainShading {
             materials = owned.replace("materials", materials, upload(settings.tiling()));
         }
         int all = order.size();
-        if (farMaterial != null) {
-            farMaterial.refresh(materials, settings, unitMaterials);
-            farMaterial.bind(unitFar);
-        }
+        far.refresh(settings);
+        far.bind();
         return switch (colouring) {
             case SHADED -> {
                 Lit lit = sunShadowed ? shadowed : unshadowed;
                 Near near = lit.near().get(settings.tiling());
                 materials.bind(near.uniforms(), settings, unitMaterials);
-                double texelMetres = farMaterial != null ? farMaterial.texelMetres() : layout.spacing();
-                double farDistance = settings.farTexels() * texelMetres;
+                double farDistance = settings.farTexels() * far.texelMetres();
                 int nearCount = order.nearerThan(farDistance);
                 near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
@@ -284,5 +262,136 @@ final class TerrainShading {
                 yield all;
             }
         };
+    }
+
+    /** How the ground beyond the far distance D is coloured, and what the near programs fade into before D. */
+    private interface Far {
+        /** The defines of the levels view (figure 6), which shows the far look tinted by level. */
+        List<String> levelsDefines();
+        /** Sets the samplers a program reading the far look needs; its material uniforms. */
+        TerrainMaterials.Uniforms reads(ShaderProgram p, int unitHeights);
+        /** Sets what a near program reads of the far look it fades into. */
+        void fadesInto(ShaderProgram p);
+        /** Makes the far programs of one kind of sunlight, per tiling, into {@code far}. */
+        void programs(EngineContext context, String suffix, List<String> light, int unitHeights,
+                      Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far);
+        /** The far field's further defines. */
+        List<String> farFieldDefines();
+        /** Brings the far look up to these settings (bakes again if they changed it). */
+        void refresh(MaterialSettings settings);
+        /** Binds what the far programs read. */
+        void bind();
+        /** Metres of one far texel, the unit of {@code materials.far-texels}. */
+        double texelMetres();
+    }
+
+    /** The tile: the materials baked once over the tile ({@link FarMaterial}), one far program for every tiling. */
+    private final class Baked implements Far {
+
+        private final FarMaterial material;
+
+        Baked(FarMaterial material) {
+            this.material = material;
+        }
+
+        @Override
+        public List<String> levelsDefines() {
+            return List.of("TERRAIN_FAR", "TERRAIN_LEVELS");
+        }
+
+        @Override
+        public TerrainMaterials.Uniforms reads(ShaderProgram p, int unitHeights) {
+            farSamplers(p, unitFar);
+            return TerrainMaterials.lightUniforms(p);
+        }
+
+        @Override
+        public void fadesInto(ShaderProgram p) {
+            farSamplers(p, unitFar);
+        }
+
+        @Override
+        public void programs(EngineContext context, String suffix, List<String> light, int unitHeights,
+                             Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far) {
+            // one program: the baked material, lit, its sky per vertex
+            ShaderProgram f = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")),
+                    unitHeights);
+            farSamplers(f, unitFar);
+            f.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
+            TerrainMaterials.Uniforms baked = TerrainMaterials.lightUniforms(f);
+            for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
+                far.put(tiling, baked);
+            }
+        }
+
+        @Override
+        public List<String> farFieldDefines() {
+            return List.of();
+        }
+
+        @Override
+        public void refresh(MaterialSettings settings) {
+            material.refresh(materials, settings, unitMaterials);
+        }
+
+        @Override
+        public void bind() {
+            material.bind(unitFar);
+        }
+
+        @Override
+        public double texelMetres() {
+            return material.texelMetres();
+        }
+    }
+
+    /** Streamed levels: nothing baked, the far programs make the material at its coarse scale, one per tiling. */
+    private final class Coarse implements Far {
+
+        @Override
+        public List<String> levelsDefines() {
+            return List.of("TERRAIN_LEVELS");
+        }
+
+        @Override
+        public TerrainMaterials.Uniforms reads(ShaderProgram p, int unitHeights) {
+            nearSamplers(p, unitHeights);
+            return TerrainMaterials.uniforms(p);
+        }
+
+        @Override
+        public void fadesInto(ShaderProgram p) {
+            // the near program fades its fine scale out: it reads nothing more
+        }
+
+        @Override
+        public void programs(EngineContext context, String suffix, List<String> light, int unitHeights,
+                             Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far) {
+            for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
+                // the materials at the coarse scale, its sky per vertex
+                ShaderProgram f = variant(context, "program.far" + tiling.roleSuffix() + suffix,
+                        with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
+                nearSamplers(f, unitHeights);
+                far.put(tiling, TerrainMaterials.uniforms(f));
+            }
+        }
+
+        @Override
+        public List<String> farFieldDefines() {
+            return List.of("MAT_COARSE_ONLY");
+        }
+
+        @Override
+        public void refresh(MaterialSettings settings) {
+        }
+
+        @Override
+        public void bind() {
+        }
+
+        @Override
+        public double texelMetres() {
+            return layout.spacing();
+        }
     }
 }

@@ -14,7 +14,6 @@ import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
-import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
@@ -25,6 +24,22 @@ import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.lod.CopyLattice;
+import org.openworld.engine.terrain.lod.DetailLimit;
+import org.openworld.engine.terrain.lod.LodRule;
+import org.openworld.engine.terrain.lod.LodSettings;
+import org.openworld.engine.terrain.lod.PatchList;
+import org.openworld.engine.terrain.lod.PatchSelection;
+import org.openworld.engine.terrain.lod.TerrainQuadtree;
+import org.openworld.engine.terrain.material.MaterialSettings;
+import org.openworld.engine.terrain.material.SnowLines;
+import org.openworld.engine.terrain.mesh.PatchLayout;
+import org.openworld.engine.terrain.mesh.PatchOrder;
+import org.openworld.engine.terrain.mesh.PatchPatterns;
+import org.openworld.engine.terrain.mesh.PatchRenderer;
+import org.openworld.engine.terrain.stream.UnboundedWorld;
 
 /**
  * The mountains: generates (or imports) the height field with its pyramid and snow map, publishes it as the world's
@@ -43,37 +58,22 @@ import org.openworld.engine.settings.SettingsGroup;
  */
 public final class TerrainSystem implements EngineSystem {
 
-    /**
-     * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
-     * faded into the air; beyond them the {@link FarField} carries the ground on to the horizon.
-     */
-    static final double COPY_DISTANCE = 12_000;
-    /** The tile's pyramid level the far field reads: 256 m apart at 2 m, as the unbounded world's coarsest. */
-    static final int FAR_LEVEL = 7;
-    /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
-    static final int MAX_COPY_RADIUS = 3;
     /** Texture units: the terrain's maps first (heights, gradients, snow), then the materials (TerrainShading). */
     private static final int UNIT_HEIGHTS = 0;
     private static final int UNIT_GRADIENTS = 1;
     private static final int UNIT_SNOW = 2;
 
     private final Consumer<String> progress;
-    /** The tile's heights, pyramid, snow map and sky view; null for the unbounded world. */
-    private TerrainData data;
-    /** The unbounded world, streamed around the camera; null for a tile. */
-    private UnboundedWorld unbounded;
+    /** Makes a tile's heights, pyramid, snow map and sky view: generated or imported unless told otherwise. */
+    private final TerrainData.Maker tiles;
+    /** The heights and how their levels reach the GPU: a tile, or the unbounded world streamed. */
+    private Ground ground;
     private PatchLayout layout;
     private TerrainQuadtree tree;
     private PatchSelection selection;
-    /** Which nodes are on the GPU and the heights they span: all of a tile's, the streamed world's as it streams. */
-    private Residency residency = Residency.ALL;
-    /** The heights the culling tests each node with: the boxes' own for a tile, the streamed cells' otherwise. */
-    private NodeHeights heights = NodeHeights.NONE;
     private final PatchList patches = new PatchList();
     private PatchPatterns patterns;
     private final PatchOrder order = new PatchOrder();
-    /** The tile's maps on the GPU; null for the unbounded world, whose clipmap holds its own. */
-    private TerrainMaps maps;
     private TerrainShading shading;
     private PatchRenderer renderer;
     /** The same patches for the sun's shadow pass: the vertex stage alone, writing depth. */
@@ -86,9 +86,6 @@ public final class TerrainSystem implements EngineSystem {
     private int copyRadius;
     /** Ground from the copies' edge to the horizon; null for an imported map, which has an edge by design. */
     private FarField farField;
-    /** The lowest and highest heights drawn, metres. */
-    private double lowest;
-    private double highest;
     /** Where levels are chosen from while {@code terrain-debug.freeze-lod} is on; null while it is off. */
     private Vector3f frozenEye;
 
@@ -99,7 +96,17 @@ public final class TerrainSystem implements EngineSystem {
 
     /** @param progress receives one line per generation stage with its time, e.g. for the console */
     public TerrainSystem(Consumer<String> progress) {
+        this(progress, TerrainData::create);
+    }
+
+    /**
+     * @param progress receives one line per generation stage with its time
+     * @param tiles    makes the tile drawn when {@code terrain.world=tile}, e.g. from a height source of one's own
+     *                 ({@link TerrainData#of})
+     */
+    public TerrainSystem(Consumer<String> progress, TerrainData.Maker tiles) {
         this.progress = progress;
+        this.tiles = tiles;
     }
 
     @Override
@@ -124,91 +131,36 @@ public final class TerrainSystem implements EngineSystem {
         int cells = settings.get(LodSettings.class).patchVertices() - 1;
         patterns = new PatchPatterns(cells);
         renderer = context.own(new PatchRenderer(context, patterns));
-        if (terrain.world() == TerrainSettings.World.UNBOUNDED) {
-            initUnbounded(context, terrain, seed, cells, times);
-        } else {
-            initTile(context, terrain, seed, cells, times);
-        }
+        ground = terrain.world() == TerrainSettings.World.UNBOUNDED
+                ? unbounded(context, terrain, seed, cells, times) : tile(context, terrain, seed, cells, times);
+        context.world().setResource(HeightField.class, ground.heights());
+        tree = ground.tree();
+        selection = new PatchSelection(tree, ground.residency());
+        layout = ground.layout();
+        shading = ground.shading();
         entity = context.world().spawn();
         copyOffsets = new float[] {0, 0};
-        context.world().add(entity, new Cullable(tree.bounds(), copyOffsets, heights));
+        context.world().add(entity, new Cullable(tree.bounds(), copyOffsets, ground.cullHeights()));
         depthProgram = context.own("depth", context.shaders().program(layout.defines(), "terrain/terrain.vert",
                 "terrain/depth.frag"));
         layout.apply(depthProgram, UNIT_HEIGHTS);
         publishSnowLine(context.world(), settings);
-        farField = farField(context);
+        farField = ground.farField(context, UNIT_HEIGHTS);
     }
 
-    /**
-     * The far field, reading the coarsest streamed level or the tile's pyramid level of the same spacing (its
-     * periodic copies go on for ever); none for an imported map.
-     */
-    private FarField farField(EngineContext context) {
-        if (unbounded != null) {
-            StreamedWorld stream = unbounded.stream();
-            int level = stream.levels() - 1;
-            lowest = stream.heights().lowest();
-            highest = stream.heights().highest();
-            double mean = (lowest + highest) / 2; // the bands' bounds lie symmetric about the mean
-            ShaderProgram program = shading.farField(context, UNIT_HEIGHTS);
-            program.float1("uFarSnow").set((float) unbounded.snowCoverageAt(mean));
-            return new FarField(context, program,
-                    new FarField.Source(level, stream.heights().spacing(level), 0, mean));
-        }
-        HeightMap base = data.pyramid().base();
-        lowest = base.min();
-        highest = base.max();
-        if (!base.periodic()) {
-            return null;
-        }
-        int top = data.pyramid().levelCount() - 1;
-        int level = Math.min(top, FAR_LEVEL);
-        return new FarField(context, shading.farField(context, UNIT_HEIGHTS), new FarField.Source(level,
-                Math.scalb(base.spacing(), level), -base.extent() / 2, data.pyramid().level(top).sample(0, 0)));
-    }
-
-    /** The tile: its data off the GPU, its quadtree, its maps, then the programs and materials (which bake on them). */
-    private void initTile(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
+    /** A generated or imported tile. */
+    private Ground tile(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
         progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
                 : "generating " + terrain.size() + "² samples, seed " + seed));
-        data = TerrainData.create(terrain, seed, times);
-        HeightMap base = data.pyramid().base();
-        context.world().setResource(HeightField.class, base::heightAt);
-        tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
-        selection = new PatchSelection(tree);
-        layout = PatchLayout.tile(base, cells);
-        maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
-        shading = new TerrainShading(context, layout, base, seed, UNIT_HEIGHTS, times);
-        bindMaps();
-        shading.bake(context.settings().get(MaterialSettings.class));
+        return new TileGround(context, tiles.make(terrain, seed, times), seed, cells, UNIT_HEIGHTS,
+                UNIT_GRADIENTS, UNIT_SNOW, times);
     }
 
     /** The unbounded world: bands, streamed around where the camera starts, and the programs that read them. */
-    private void initUnbounded(EngineContext context, TerrainSettings terrain, int seed, int cells,
-                               StageTimes times) {
+    private Ground unbounded(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
         progress.accept("terrain: the unbounded world, seed " + seed);
-        unbounded = context.own(new UnboundedWorld(context, terrain, seed, cells, UNIT_HEIGHTS, times, progress));
-        StreamedWorld stream = unbounded.stream();
-        context.world().setResource(HeightField.class, stream.heights());
-        tree = stream.tree();
-        residency = stream;
-        heights = stream.cullHeights();
-        selection = new PatchSelection(tree, stream);
-        layout = PatchLayout.clipmap(tree, stream.clipSize(), terrain);
-        shading = new TerrainShading(context, layout, null, seed, UNIT_HEIGHTS, times);
-    }
-
-    /** Binds the heights, then the gradients (slopes) and the snow map, to their units. */
-    private void bindMaps() {
-        if (unbounded != null) {
-            unbounded.heightTexture.bind(UNIT_HEIGHTS);
-            unbounded.slopeTexture.bind(UNIT_GRADIENTS);
-            unbounded.snowTexture.bind(UNIT_SNOW);
-        } else {
-            maps.heights.bind(UNIT_HEIGHTS);
-            maps.gradients.bind(UNIT_GRADIENTS);
-            maps.snow.bind(UNIT_SNOW);
-        }
+        return new StreamedGround(context.own(new UnboundedWorld(context, terrain, seed, cells, UNIT_HEIGHTS, times,
+                progress)), context, seed, UNIT_HEIGHTS, times);
     }
 
     /** The snow line in metres of the snow rule in use (the snow map's, or the altitude bands') over the heights. */
@@ -221,9 +173,7 @@ public final class TerrainSystem implements EngineSystem {
     public void update(World world, double step) {
         publishSnowLine(world, world.resource(Settings.class));
         CameraPose pose = world.resource(Camera.class).pose();
-        if (unbounded != null) {
-            unbounded.follow(pose, step);
-        } else if (!data.pyramid().base().periodic()) {
+        if (!ground.follow(pose, step)) {
             return;
         }
         // Copies of the periodic tile (roots of the unbounded world) on a square around the one under the camera:
@@ -236,27 +186,9 @@ public final class TerrainSystem implements EngineSystem {
         }
         copyCentreX = cx;
         copyCentreZ = cz;
-        copyRadius = unbounded != null ? unbounded.stream().rootRadius()
-                : (int) Math.min(MAX_COPY_RADIUS, Math.ceil(COPY_DISTANCE / extent - 0.5));
-        copyOffsets = copies(cx, cz, copyRadius, extent);
-        world.add(entity, new Cullable(tree.bounds(), copyOffsets, heights));
-    }
-
-    /**
-     * The offsets, metres, of the copies (roots) on a square of {@code radius} around copy (cx, cz), each
-     * {@code extent} a side: x, z pairs, row by row from the north-west.
-     */
-    static float[] copies(long cx, long cz, int radius, double extent) {
-        int side = 2 * radius + 1;
-        float[] offsets = new float[2 * side * side];
-        int c = 0;
-        for (int dz = -radius; dz <= radius; dz++) {
-            for (int dx = -radius; dx <= radius; dx++) {
-                offsets[c++] = (float) ((cx + dx) * extent);
-                offsets[c++] = (float) ((cz + dz) * extent);
-            }
-        }
-        return offsets;
+        copyRadius = ground.copyRadius();
+        copyOffsets = CopyLattice.copies(cx, cz, copyRadius, extent);
+        world.add(entity, new Cullable(tree.bounds(), copyOffsets, ground.cullHeights()));
     }
 
     @Override
@@ -288,9 +220,8 @@ public final class TerrainSystem implements EngineSystem {
             patches.withoutMorph();
         }
         double selectMs = (System.nanoTime() - t0) / 1e6;
-        if (unbounded != null && pass != Pass.SHADOW) {
-            // the share of the sky seen where the shading reads it, and a few blocks more with the picture
-            unbounded.shadeFor(patches, copyOffsets, pass == Pass.MAIN ? StreamedWorld.UPLOADS_PER_FRAME : 0);
+        if (pass != Pass.SHADOW) {
+            ground.prepare(patches, copyOffsets, pass); // what the shading reads
         }
         Counters counters = world.resource(Counters.class);
         String prefix = "terrain." + pass.label() + ".";
@@ -298,10 +229,10 @@ public final class TerrainSystem implements EngineSystem {
         counters.add(prefix + "culled", selection.culledPatches());
         counters.add(prefix + "select-ms", selectMs);
         // 2. nearest first, so near ground hides far ground before it is shaded
-        order.sort(patches, tree.bounds(), residency, copyOffsets, eye);
+        order.sort(patches, tree.bounds(), ground.residency(), copyOffsets, eye);
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
         // materials near and far and the view options
-        bindMaps();
+        ground.bind(UNIT_HEIGHTS, UNIT_GRADIENTS, UNIT_SNOW);
         long triangles = context.stats().triangles();
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
@@ -322,7 +253,8 @@ public final class TerrainSystem implements EngineSystem {
                 shading.bindFarField(settings.get(MaterialSettings.class));
                 double extent = tree.extent();
                 farField.draw(context.camera().position(), copyCentreX * extent, copyCentreZ * extent,
-                        (copyRadius + 0.5) * extent, lowest, highest, context.stats());
+                        (copyRadius + 0.5) * extent, ground.heights().lowest(), ground.heights().highest(),
+                        context.stats());
             }
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
@@ -336,15 +268,10 @@ public final class TerrainSystem implements EngineSystem {
     }
 
     /**
-     * The generated or imported tile, once initialised (tests and tools read the heights the terrain draws); null
-     * for the unbounded world, which has no map.
+     * The ground, once initialised: a {@link TileGround} or a {@link StreamedGround} (tests and tools read the
+     * heights the terrain draws).
      */
-    public TerrainData data() {
-        return data;
-    }
-
-    /** The unbounded world, once initialised (tests read its textures); null for a tile. */
-    UnboundedWorld unbounded() {
-        return unbounded;
+    public Ground ground() {
+        return ground;
     }
 }

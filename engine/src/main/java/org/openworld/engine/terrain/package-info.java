@@ -3,48 +3,18 @@
  * stitching, and textured by altitude, slope and a probabilistic snow map (paper sections 2.1, 2.2 and 2.5;
  * figures 1–4 and 6). The page {@code docs/terrain.md} shows each step.
  *
- * <p><b>Generation (2.1).</b> {@link org.openworld.engine.terrain.SpectralSynthesis} fills a spectrum with random
- * phases and amplitudes {@code A(ω) ∝ 1/ω^β} between two wavelength cut-offs and takes one inverse real 2D FFT
- * (JTransforms), then normalises to the relief: {@code h = relief · (n − seaFraction)}. Power then falls as
- * {@code ω^(−2β)}, which {@link org.openworld.engine.terrain.PowerSpectrum} measures back. β = 1 is the paper's
- * literal 1/ω: each octave adds as much slope as the one before, and the result is crumpled; the default β = 2.2 lets
- * the large ranges dominate (mean slope 34°, close to alpine ground). The field is <em>periodic</em> — the inverse
- * DFT makes every edge continue into the opposite one — so copies of the tile meet without a seam, and the terrain
- * draws copies around the camera: the world has no edge. A map can be imported instead
- * ({@link org.openworld.engine.terrain.HeightImport}: 16-bit PNG or float32 raw); it is not periodic and clamps.
- * Cost O(n² log n): about 0.2 s for 2048², 0.8 s for 4096² on two cores.
- *
- * <p><b>The unbounded world: heights made per level.</b> {@link
- * org.openworld.engine.terrain.BandedHeights} makes what the paper's conclusion proposes: each resolution directly,
- * with no full-resolution map. The spectrum is cut into octave bands, band k holding {@code 1/(4 d_k) ≤ ω < 1/(2 d_k)}
- * for level k's spacing {@code d_k = 2^k · spacing}; each band ({@link org.openworld.engine.terrain.OctaveBand}) is
- * a 512² periodic tile of samples d_k/2 apart, synthesised as above with its coefficients times {@code E^(β−1)} (E
- * the tile's side: the density ω^−2β continues across tiles of different sizes) and divided by {@code sinc⁴}, so that
- * a cubic B-spline through its samples reproduces the band exactly, its images weakened to at most 1.2 % of the
- * amplitude. Level L is {@code h_L(x, z) = mean + Σ_{k ≥ L} band_k(R_k (x, z) + o_k)}, each band turned (R_k) and
- * shifted (o_k) per seed so that the bands' periods never line up (the whole repeats beyond 10 000 km: the
- * arithmetic is in BandedHeights). Cost: nine 512² FFTs and 9 MiB when the world is made (0.3 s); then 16 samples
- * per band per height, 0.75–1.2 s for the 2000² samples of the 64 km overview on two cores. Limits: each band alone
- * repeats on its lattice (131 km for the 1–2 km band, which carries 80 % of the variance at β = 2.2); the relief is
- * scaled by the standard deviation (±3σ), so a few per mille of the ground lie outside it.
- *
- * <p><b>Drawing the unbounded world ({@code terrain.world=unbounded}).</b> A clipmap ({@link
- * org.openworld.engine.terrain.HeightClipmap}) keeps each level in an S × S window around the camera, world sample i
- * of level L in texel {@code i mod S} of layer L (toroidal: a moving window rewrites only the blocks that enter it),
- * made on worker threads ahead of the camera by its velocity and uploaded a few blocks a frame. The quadtree's roots
- * (8 km) lie on a lattice around the camera as the tile's copies do, each a different piece of the world; a node is
- * split only into children whose levels are resident ({@link org.openworld.engine.terrain.Residency}), so a block
- * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.StreamedWorld}). Cost:
- * {@code 10 · levels · S²} bytes of GPU memory (heights, slopes, snow), 20 MiB by default whatever the distance
- * flown; a 64² block takes 0.57–1.95 ms of a worker. Its snow ({@link org.openworld.engine.terrain.StreamedSnow}) is
- * the tile's rule with a hash for a random stream, so blocks join without seams; coarser levels show its mean.
- * Its sky occlusion ({@link org.openworld.engine.terrain.StreamedSky}) is the tile's V below, made on the GPU for
- * each block by a fragment pass that marches the clipmap's own levels once the heights it reads have arrived (a
- * table of which block each slot holds keeps it off stale texels; beyond a window it falls back on a coarser level):
- * on llvmpipe several milliseconds a block, so the start shades only the blocks its first frame draws. Limits: one
- * geometric error per level (the world is statistically uniform), boxes the world's height bounds where no blocks
- * narrow them; no baked far material: its far program samples the coarse tile alone ({@link
- * org.openworld.engine.terrain.TerrainShading}).
+ * <p><b>The stages, in order.</b> Each is a package that imports only those before it
+ * ({@code TerrainStagesTest} checks it):
+ * <ol>
+ *   <li>{@code terrain.heights}: the heights, generated, imported or made per level for the unbounded world, and
+ *       the pyramid of levels;</li>
+ *   <li>{@code terrain.lod}: which patches to draw, the quadtree's bounds and errors, the level rules, the cut;</li>
+ *   <li>{@code terrain.mesh}: patches to triangles, the shared stitching patterns drawn instanced, nearest first;</li>
+ *   <li>{@code terrain.material}: the surface, the material textures, snow, sky occlusion, the far material;</li>
+ *   <li>{@code terrain.stream}: the unbounded world's levels streamed to the GPU around the camera;</li>
+ *   <li>{@code terrain}, this package: the system that builds the world and runs the stages each pass, the far
+ *       field, the programs.</li>
+ * </ol>
  *
  * <p><b>The far field.</b> Beyond the patches (the tile's copies, the unbounded world's roots: 14 to 35 km) the
  * {@link org.openworld.engine.terrain.FarField} carries the ground to the horizon: a polar ring of 256 × 64 cells
@@ -55,110 +25,6 @@
  * sight (the picture unchanged, the order kept). Cost: 32 768 triangles in one draw call of the main pass, 0.5 MiB
  * of buffers. Limits: not reflected in the water nor casting shadows, coarse relief, none beyond a quarter of the
  * unbounded world's coarsest window (33 km); the eye-centred grid shifts the far outline a little in flight.
- *
- * <p><b>Pyramid (2.5).</b> {@link org.openworld.engine.terrain.HeightPyramid#build} low-passes each level with the
- * binomial kernel (1 4 6 4 1)/16 (a Gaussian of σ ≈ 1 sample, response cos⁴(πf)) and keeps every other sample.
- * Without the filter a ridge finer than the new spacing would alias into a false hill at the coarse level; with it,
- * the coarse level shows the smoothed ridge and the switch between levels pops less.
- *
- * <p><b>Level of detail (2.5).</b> Every patch is the same grid of N × N cells (N = 32 or 64). A quadtree node of
- * level L covers 2^L leaf patches and reads pyramid level L; the cut splits a node while it is not fine enough
- * ({@link org.openworld.engine.terrain.QuadtreeLod}), with D the distance from the camera to the node's box (not its
- * centroid: a big node around the camera would otherwise be drawn coarse). Two rules say when a node is fine enough
- * ({@link org.openworld.engine.terrain.LodRule}, made per pass into a {@link org.openworld.engine.terrain.DetailLimit}):
- * <ul>
- *   <li>the screen error, the default: each node's geometric error e, the largest |surface of its level − finest
- *       height| over its samples ({@link org.openworld.engine.terrain.GeometricError}, computed once from the
- *       pyramid), may cover at most {@code lod.pixel-error} pixels: {@code e · (H/2) / (tan(fov/2) · D) ≤ p} for a
- *       target H pixels high. Triangles go where the relief shows: flat ground stays coarse near the eye, ridges stay
- *       fine far off. The sun's orthographic pass has no distance of its own: it cuts its casters from the viewer's
- *       eye by the viewer's own limit, so that they are the very ground that receives their shadows (a caster finer
- *       than that ground shadows it under every bump it keeps; one coarser stands above it in every hollow and
- *       shadows it there: the specks of the paper rule's {@code lod.shadow-coarsening}, the dark streaks of acne
- *       down a sunlit face).
- *       Cost: one pass over the samples per level when the world is built (about 0.2 s for 2048², with the boxes),
- *       one comparison per visited node per frame;</li>
- *   <li>the paper's {@code L_B(D) = ⌊log2(D/B)⌋} ({@link org.openworld.engine.terrain.LodRule#level}): a node is split
- *       while its level exceeds {@code L_B(D)}, whatever the relief. The drawn ring of each level then has a fixed
- *       number of patches, so the count grows with the logarithm of the world's size (the paper's equation 1):
- *       measured 22, 34, 46, 58 patches for worlds of 256² to 2048².</li>
- * </ul>
- * The paper's own flat grid of patches, each with its own level (by centroid distance under its rule), stays as
- * {@code lod.mode=flat-grid} with {@code lod.rule=paper} for figure 6; its cost grows with the area. Limits of the
- * bound: it holds at the samples, for a patch's own level; a side stitched to a coarser neighbour reads that
- * neighbour's level, whose own bound covers the side, and the strip between blends the two.
- *
- * <p><b>Stitching.</b> Where a patch meets a coarser neighbour, its edge strip uses only every 2^k-th vertex
- * (a fan from each outer vertex, {@link org.openworld.engine.terrain.PatchPatterns}), so no vertex lies in the middle
- * of the neighbour's edge (no T-junction); and the vertices on that edge read the neighbour's pyramid level, the
- * corners the coarsest level meeting there, so both sides compute the same height (no crack). Differences of up to
- * log2 N levels are stitched; a cut that would need more is split until it does not. The patterns are shared: one
- * element buffer holds them all, and {@link org.openworld.engine.terrain.PatchRenderer} draws each pattern in use
- * with one instanced call, so draw calls do not grow with the visible patches.
- *
- * <p><b>Geomorphing (CDLOD-style after Strugar 2009).</b> In the quadtree cut each patch morphs into its
- * parent's surface before it merges: it carries a factor k that rises from 0 to 1, by its box's distance D, over the
- * last 30 % of the way from its own merge distance to its parent's ({@link org.openworld.engine.terrain.DetailLimit#fineFrom}:
- * B · 2^L under the paper's rule, e · f / p under the screen error), and the vertex shader blends each vertex's
- * height towards the coarser level's surface by k. A node splits where its k is 0 and its children appear with
- * k = 1, on the same surface, so the switch moves nothing; shared edge and corner vertices take the largest k of the
- * patches sampling their level, so neighbours agree ({@link org.openworld.engine.terrain.QuadtreeLod} has the
- * argument). Cost: two more height fetches per morphing vertex and 36 bytes per instance. On by default
- * ({@code lod.morph}); the flat grid (figure 6) never morphs.
- *
- * <p><b>Materials (2.2).</b> Grass low, rock between and on steep slopes, snow high, blended smoothly; the snow comes
- * from {@link org.openworld.engine.terrain.SnowMap}: snow with probability {@code p = clamp((n − base)/(full − base))}
- * of the normalised height n, then a morphological opening and closing (figures 1b, 2). Figure 1a's plain altitude
- * bands are {@code materials.snow-mode=altitude-bands}. The slope comes from a gradient map of the finest level, so
- * coarse patches still shade with fine slopes; the tangent frame {@code T = (1, ∂h/∂x, 0)}, {@code B = (0, ∂h/∂z, 1)}
- * carries normal and gloss maps (figure 3) and is shown by {@code terrain-debug.colouring=tangent-space} (figure 4).
- * All textures are synthesised by {@link org.openworld.engine.terrain.TerrainTextures} (periodic noise, a recipe per
- * material, the packing into RGBA8); two scales are blended to hide the tiling the paper complains of in section 6.
- * {@code materials.tiling=quilted} does what the paper proposes, image quilting (Efros and Freeman 2001), made
- * aperiodic as quilted Wang tiles (Cohen et al. 2003, {@link org.openworld.engine.terrain.WangTiles}): at start-up 16
- * tiles are cut from each 512² tile, one per choice of two colours on each edge; each colour is a diamond of the
- * exemplar straddling the edge, so tiles that share an edge colour share its texels; inside a tile the diamonds meet
- * along minimum-error cuts of the diagonals ({@link org.openworld.engine.terrain.ImageQuilting}, dynamic
- * programming), and a centre block of its own is sewn in along cuts of its border strips. The shader hashes each
- * edge's colour from the tile grid and reads the tile from a 4 × 4 atlas that is itself a valid Wang tiling (so its
- * mips agree across tile edges): one lookup per scale, 16 times the texture memory (128 MiB), about a second at
- * start; the repetition measure reads 0.20 / 0.31 / 0.17 from 20 / 100 / 500 m
- * (against the tiles' 0.69 / 0.97 / 0.54). {@code materials.tiling=stochastic} removes the repeat (Heitz and Neyret
- * 2018): a triangle grid in skewed space, each corner shifting the texture by a hash of its lattice point, the three
- * lookups blended by barycentric weights w around the texture's mean m as {@code m + Σ w_i (x_i − m) / sqrt(Σ w_i²)},
- * which keeps the contrast a plain blend would wash out. Three times the lookups of the near material and the bake;
- * the repetition measure reads 0.06 / 0.08 / 0.04 (docs/terrain.md section 4).
- *
- * <p><b>The sky the relief hides.</b> Shadowed ground is lit by the sky's irradiance for its normal,
- * E(n) from nine spherical-harmonic factors (the sky system's); {@link org.openworld.engine.terrain.SkyVisibility}
- * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
- * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
- * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. Once at start
- * (about half a second on two cores, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
- * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
- *
- * <p><b>Cliffs.</b> Projected from above, texture coordinates (x, z) stretch a face of slope a by
- * 1 / cos a down its fall line (2.9 times at 70°). {@code materials.cliffs=triplanar} projects the rock three ways in
- * the near program, onto (x, z), (z, y) and (x, y), blended by the geometric normal with weights
- * {@code w_i = |n_i|^8 / Σ_j |n_j|^8}: each plane shows the surface where it faces it (at most √3 stretch where it
- * weighs most, 1.06 on a 70° face), and the planes mix only between about 35° and 55° of slope. The normal map's
- * slope is read along each plane's texture axes and swizzled into the terrain's frame T, B: on (z, y) it is
- * {@code (±s_v, s_u)}, on (x, y) {@code (s_u, ±s_v)}, the sign that of the frame vector's rise, so bumps stay lit from
- * the sun's side. Cost: 8 more texture reads in the near program (20 instead of 12), about a tenth of the frame on
- * {@code valley.path} on llvmpipe, so the default stays {@code planar}; the setting is read when the world is built
- * and compiles the near programs with or without {@code MAT_TRIPLANAR}. Limits: the far material is baked over
- * (x, z) and keeps a texel every 2 m / cos a down a far cliff; inside the blend band two patches of rock show
- * through each other.
- *
- * <p><b>Near and far materials.</b> Far away the mip maps average most of a material away, so
- * {@link org.openworld.engine.terrain.FarMaterial} bakes it once: steps 1–3 of {@code material.glsl} per texel of two
- * textures over the tile (albedo and gloss, detail slope; 2 m texels by default). Patches are ordered nearest first
- * ({@link org.openworld.engine.terrain.PatchOrder}: early depth rejection); those whose box lies beyond
- * D = {@code materials.far-texels} baked texels run a far program of two lookups, the nearer ones the full material, faded into the
- * baked one between 0.7 D and D so the two meet without a seam
- * ({@link org.openworld.engine.terrain.TerrainShading}). The choice is made on the CPU: on a software rasteriser a
- * branch runs both sides. Cost: the far program is about a quarter of the near one per pixel; the bake is one pass at
- * start. Limit: edges finer than a texel are softer far away.
  *
  * <p><b>Limits.</b> A tile's whole height pyramid lives in memory (an 8192² world needs about 350 MB of floats, on the CPU
  * and again on the GPU); geomorphing makes the ground within a transition band coarser than the level rule asks (up

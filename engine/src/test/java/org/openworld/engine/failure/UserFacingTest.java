@@ -18,7 +18,7 @@ import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.gl.GlUnavailableException;
 import org.openworld.engine.gl.ShaderException;
 import org.openworld.engine.settings.SettingsException;
-import org.openworld.engine.terrain.HeightImportException;
+import org.openworld.engine.terrain.heights.HeightImportException;
 
 /** Each error type's exit code and printed form, the codes the README promises, and no error type left out. */
 class UserFacingTest {

@@ -32,8 +32,9 @@ import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.sky.SkyView;
 import org.openworld.engine.sky.SolarPosition;
 import org.openworld.engine.sky.SunTables;
-import org.openworld.engine.terrain.SkyVisibility;
+import org.openworld.engine.terrain.material.SkyVisibility;
 import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.terrain.TileGround;
 
 /**
  * Light in the shadows (docs/terrain.md), on real GL: {@link WallWorld}'s wall on ground rising westwards at
@@ -80,7 +81,7 @@ class LightInShadowTest {
             engine.world().resource(Camera.class).setPose(ABOVE);
             engine.update();
             engine.render();
-            return new Picture(engine.readImage(), terrain.data().sky());
+            return new Picture(engine.readImage(), ((TileGround) terrain.ground()).data().sky());
         }
     }
 

@@ -30,7 +30,7 @@ import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.Image;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.TerrainSystem;
 
 /**

@@ -37,7 +37,7 @@ import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.GlObjects;
 import org.openworld.engine.gl.Image;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.water.WaterSystem;
 

@@ -11,8 +11,8 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.openworld.engine.terrain.HeightMap;
-import org.openworld.engine.terrain.PowerSpectrum;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.PowerSpectrum;
 
 /** The 3D-DFT cloud field: periodic in space and time, normalised, with the spectrum its β asks for. */
 class CloudFieldTest {

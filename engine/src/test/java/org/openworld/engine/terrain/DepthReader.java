@@ -16,10 +16,10 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.gl.Framebuffer;
 
 /** Reads the scene's depth in the overlay pass and keeps what turns it back into world points (terrain GL tests). */
-final class DepthReader implements EngineSystem {
+public final class DepthReader implements EngineSystem {
     private final Matrix4f toWorld = new Matrix4f();
     /** The eye of the pass read. */
-    final Vector3f eye = new Vector3f();
+    public final Vector3f eye = new Vector3f();
     private float[] depth = new float[0];
     private int width;
     private int height;
@@ -42,7 +42,7 @@ final class DepthReader implements EngineSystem {
     }
 
     /** The world point drawn at image pixel (x, y from the top), or null where nothing was drawn. */
-    Vector3f point(int x, int y) {
+    public Vector3f point(int x, int y) {
         float d = depth[(height - 1 - y) * width + x];
         if (d >= 1) {
             return null;

@@ -22,6 +22,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.terrain.lod.LodSettings;
 
 /**
  * A pose whose eye lies inside a hill: seen from below, the ground's back faces are culled and only the slopes

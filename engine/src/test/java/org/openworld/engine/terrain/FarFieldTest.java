@@ -51,7 +51,7 @@ class FarFieldTest {
         TerrainSystem terrain = new TerrainSystem();
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, List.of("terrain.world=unbounded"),
                 terrain, new CullingSystem())) {
-            double lowest = terrain.unbounded().stream().heights().lowest();
+            double lowest = terrain.ground().heights().lowest();
             check(engine, new CameraPose(0, 2000, 0, 300, -4, FOV), lowest, "unbounded-2000m-down");
             check(engine, new CameraPose(0, 2000, 0, 300, 0, FOV), lowest, "unbounded-2000m-level");
             check(engine, new CameraPose(0, 8000, 0, 300, -4, FOV), lowest, "unbounded-8000m");
@@ -64,7 +64,7 @@ class FarFieldTest {
         TerrainSystem terrain = new TerrainSystem();
         try (Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT,
                 List.of("terrain.world=tile", "terrain.size=512"), terrain, new CullingSystem())) {
-            double lowest = terrain.data().pyramid().base().min();
+            double lowest = terrain.ground().heights().lowest();
             check(engine, new CameraPose(0, 2000, 0, 300, -4, FOV), lowest, "tile-2000m");
         }
     }

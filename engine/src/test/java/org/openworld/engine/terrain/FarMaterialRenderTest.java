@@ -26,6 +26,7 @@ import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 
 /**
  * The far material against the near one it stands in for: the same ground drawn all near

@@ -13,6 +13,22 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.terrain.heights.HeightPyramid;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TestPyramids;
+import org.openworld.engine.terrain.heights.TestTerrain;
+import org.openworld.engine.terrain.lod.CopyLattice;
+import org.openworld.engine.terrain.lod.Corner;
+import org.openworld.engine.terrain.lod.DetailLimit;
+import org.openworld.engine.terrain.lod.LodMode;
+import org.openworld.engine.terrain.lod.LodRule;
+import org.openworld.engine.terrain.lod.LodSettings;
+import org.openworld.engine.terrain.lod.PatchList;
+import org.openworld.engine.terrain.lod.PatchSelection;
+import org.openworld.engine.terrain.lod.QuadtreeLod;
+import org.openworld.engine.terrain.lod.Side;
+import org.openworld.engine.terrain.lod.TerrainQuadtree;
+import org.openworld.engine.terrain.stream.StreamedWorld;
 
 /**
  * Geomorphing (no popping), GL-free: the morph ranges the quadtree cut gives its patches, and the surface
@@ -219,7 +235,7 @@ class GeomorphTest {
                     });
             last.set(eye);
             double extent = world.tree().extent();
-            return TerrainSystem.copies(Math.round(eye.x / extent), Math.round(eye.z / extent), world.rootRadius(),
+            return CopyLattice.copies(Math.round(eye.x / extent), Math.round(eye.z / extent), world.rootRadius(),
                     extent);
         }
 

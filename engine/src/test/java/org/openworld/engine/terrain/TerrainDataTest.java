@@ -13,6 +13,9 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.terrain.heights.HeightImportException;
+import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TestTerrain;
 
 /** Making the whole terrain data, with its stages timed. */
 class TerrainDataTest {

@@ -24,6 +24,9 @@ import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.terrain.heights.HeightMap;
+import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.material.SnowLines;
 
 /**
  * The terrain rendered headless on small worlds: the stitching leaves no crack between levels, and the default
@@ -103,7 +106,7 @@ class TerrainRenderTest {
             // the normalised height's 0 and 1: the tile's lowest and highest sample; the unbounded world, which has
             // neither, puts 0 the sea fraction of the relief below the sea and 1 the relief above that
             TerrainSettings s = TerrainSettings.DEFAULTS;
-            HeightMap base = terrain.data() != null ? terrain.data().pyramid().base() : null;
+            HeightMap base = terrain.ground() instanceof TileGround tile ? tile.data().pyramid().base() : null;
             double lowest = base != null ? base.min() : -s.seaFraction() * s.relief();
             double range = base != null ? base.max() - base.min() : s.relief();
             // at init, before any update: the snow map's 40 % to 70 % of the way up

@@ -1,0 +1,110 @@
+package org.openworld.engine.terrain;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.TreeSet;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The terrain's stages depend one way: each sub-package of {@code terrain} reads only the stages before it in the
+ * map its {@code package-info} prints ({@code <li>{@code terrain.heights}: ...}), and the system's own package comes
+ * last. Read from the main sources, without compiling or loading anything: every {@code import} line and every name
+ * written out in full outside comments ({@code org.openworld.engine.terrain.stage.Type}) is a dependency. A Javadoc
+ * link may point ahead (written in full inside the comment), since reading on is not depending.
+ */
+class TerrainStagesTest {
+
+    static final Path TERRAIN = Path.of("src/main/java/org/openworld/engine/terrain");
+    static final String PACKAGE = "org.openworld.engine.terrain";
+    /** One stage of the map: {@code <li>{@code terrain.heights}: ...} or {@code <li>{@code terrain}, ...}. */
+    static final Pattern STAGE = Pattern.compile("<li>\\{@code terrain(\\.(\\w+))?}");
+    /** A reference to a terrain package: a stage's name after the terrain's, or a type of the terrain's own. */
+    static final Pattern REFERENCE = Pattern.compile(Pattern.quote(PACKAGE) + "\\.(\\w+)(\\.[A-Z]\\w*)?");
+
+    /** The stages in the map's order, by sub-package name; "" for the system's own package. */
+    static List<String> stages() throws IOException {
+        List<String> order = new ArrayList<>();
+        Matcher m = STAGE.matcher(Files.readString(TERRAIN.resolve("package-info.java")));
+        while (m.find()) {
+            order.add(m.group(2) == null ? "" : m.group(2));
+        }
+        return order;
+    }
+
+    /** The file's code without comments and string literals, where a written-out name is a dependency. */
+    static String code(String source) {
+        return source.replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("//[^\\n]*", "")
+                .replaceAll("\"(\\\\.|[^\"\\\\])*\"", "\"\"");
+    }
+
+    /**
+     * The dependencies of a file of stage {@code stage} on later stages, one message each.
+     *
+     * @param stages the map's order ({@link #stages})
+     */
+    static List<String> backward(String file, String stage, String source, List<String> stages) {
+        List<String> found = new ArrayList<>();
+        int own = stages.indexOf(stage);
+        Matcher m = REFERENCE.matcher(code(source));
+        while (m.find()) {
+            String name = m.group(1);
+            String other = Character.isUpperCase(name.charAt(0)) ? "" : name;
+            if (stages.indexOf(other) > own) {
+                found.add(file + " (stage '" + stage + "') reads " + m.group() + " of the later stage '"
+                        + other + "'");
+            }
+        }
+        return found;
+    }
+
+    @Test
+    void everySubPackageIsAStageOfTheMapInOrder() throws IOException {
+        List<String> stages = stages();
+        TreeSet<String> packages = new TreeSet<>();
+        try (Stream<Path> dirs = Files.list(TERRAIN)) {
+            dirs.filter(Files::isDirectory).forEach(d -> packages.add(d.getFileName().toString()));
+        }
+        packages.add("");
+        assertEquals(packages, new TreeSet<>(stages), "the map in terrain's package-info lists " + stages
+                + ", the folders are " + packages);
+        assertEquals("", stages.get(stages.size() - 1), "the system's own package comes last: " + stages);
+        System.out.println("terrain stages, each reading only those before it: " + stages);
+    }
+
+    @Test
+    void noStageReadsALaterOne() throws IOException {
+        List<String> stages = stages();
+        List<String> found = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(TERRAIN)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".java")).sorted().toList()) {
+                Path dir = TERRAIN.relativize(f).getParent();
+                String stage = dir == null ? "" : dir.toString();
+                found.addAll(backward(TERRAIN.relativize(f).toString(), stage, Files.readString(f), stages));
+            }
+        }
+        assertTrue(found.isEmpty(), String.join("\n", found));
+    }
+
+    @Test
+    void aLaterStageImportedByAnEarlierOneIsFound() {
+        List<String> stages = List.of("heights", "lod", "mesh", "");
+        String source = "package " + PACKAGE + ".lod;\n"
+                + "import " + PACKAGE + ".heights.HeightMap;\n"
+                + "/** Read on: {@link " + PACKAGE + ".mesh.PatchPatterns}. */\n"
+                + "class Cut { " + PACKAGE + ".mesh.PatchPatterns patterns; " + PACKAGE + ".TerrainSystem s; }\n";
+        List<String> found = backward("lod/Cut.java", "lod", source, stages);
+        assertEquals(2, found.size(), "the field's mesh and system types, not the earlier import nor the link: "
+                + found);
+        assertTrue(found.get(0).contains(".mesh.PatchPatterns") && found.get(1).contains(".TerrainSystem"), found
+                .toString());
+    }
+}
