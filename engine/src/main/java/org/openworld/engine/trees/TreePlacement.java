@@ -69,7 +69,8 @@ final class TreePlacement {
     }
 
     /**
-     * The trees within {@code radius} of (x, z).
+     * The trees within {@code radius} of (x, z), their feet's x and z in the records from (x, z) itself (the bounds
+     * are the world's): a float then keeps the feet's centimetres however far out they stand.
      *
      * @param seed the world's seed ({@code engine.seed})
      */
@@ -119,9 +120,9 @@ final class TreePlacement {
                             records = Arrays.copyOf(records, 2 * records.length);
                         }
                         int o = trees * FLOATS;
-                        records[o] = (float) px;
+                        records[o] = (float) (px - x);
                         records[o + 1] = (float) ground;
-                        records[o + 2] = (float) pz;
+                        records[o + 2] = (float) (pz - z);
                         records[o + 3] = (float) height;
                         records[o + 4] = (float) (2 * Math.PI * unit(h, 4));
                         records[o + 5] = (float) unit(h, 5);

@@ -31,6 +31,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.water.WaterSettings.Method;
@@ -245,8 +246,10 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     private void drawFresnel(WaterSettings s, boolean underwater, boolean reflected, RenderContext context) {
         WaterOptics optics = WaterOptics.of(s.clarity());
+        RenderOrigin origin = context.world().resource(RenderOrigin.class);
         WaterPrograms.Ripple ripple = new WaterPrograms.Ripple((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
-                (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale);
+                (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale,
+                WaterPrograms.Ripple.originTiles(origin.x(), origin.z(), RIPPLE_TILE));
         behind.color().bind(WaterPrograms.UNIT_REFRACTION);
         behind.depth().bind(WaterPrograms.UNIT_DEPTH);
         fresnelTable.bind(WaterPrograms.UNIT_FRESNEL);
