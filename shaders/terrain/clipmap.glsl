@@ -7,15 +7,18 @@
 // a whole number of samples of every level: the origin's share of a sample index is added in int, exactly, and the
 // float part of a coordinate stays a few kilometres.
 
-// The render origin's world sample index on `level` (level 0's samples: spacing = clipExtent / clipSize apart).
-ivec2 clipmapOrigin(int level, float clipExtent, int clipSize) {
+// Where the render origin lies in level `level`'s window, texels (level-L samples modulo clipSize, with the fraction
+// a coarse level's samples leave): level 0's samples are clipExtent / clipSize apart, a step holds a whole number of
+// them, and the remainder modulo clipSize · 2^level is exact in int and then in float.
+vec2 clipmapOrigin(int level, float clipExtent, int clipSize) {
     int samplesPerStep = int(round(frame.origin.w * float(clipSize) / clipExtent));
-    return (ivec2(frame.origin.xz) * samplesPerStep) >> level;
+    ivec2 sample0 = ivec2(frame.origin.xz) * samplesPerStep;
+    return vec2(sample0 & ((clipSize << level) - 1)) / exp2(float(level));
 }
 
 // The texture coordinates (u, v, layer) of the point wsXZ (metres from the render origin) on level `level`, whose
 // window spans clipExtent · 2^level metres (clipExtent: level 0's, clipSize · spacing).
 vec3 clipmapCoordinates(vec2 wsXZ, int level, float clipExtent, int clipSize) {
-    vec2 originTexel = vec2(clipmapOrigin(level, clipExtent, clipSize) & (clipSize - 1));
+    vec2 originTexel = clipmapOrigin(level, clipExtent, clipSize);
     return vec3(wsXZ / (clipExtent * exp2(float(level))) + (originTexel + 0.5) / float(clipSize), float(level));
 }

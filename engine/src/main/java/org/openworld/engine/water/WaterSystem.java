@@ -7,6 +7,7 @@ import static org.lwjgl.opengl.GL32C.GL_DEPTH_CLAMP;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import org.joml.Matrix4f;
 import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
@@ -201,7 +202,11 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     }
 
     private static PlaneOnScreen onScreen(ViewCamera camera, WaterSettings s) {
-        return PlaneOnScreen.of(camera.viewProjection(), camera.position().y(), (float) s.level());
+        // the plane y = level is the same seen from anywhere on x and z: measured from the eye's own x and z, the
+        // float inverse keeps its precision however far out the eye is
+        Matrix4f fromEye = new Matrix4f(camera.projection())
+                .mul(camera.viewFrom(camera.exactPosition().x(), camera.exactPosition().z()));
+        return PlaneOnScreen.of(fromEye, camera.position().y(), (float) s.level());
     }
 
     @Override
