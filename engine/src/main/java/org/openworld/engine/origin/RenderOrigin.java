@@ -1,5 +1,7 @@
 package org.openworld.engine.origin;
 
+import org.joml.Vector3f;
+
 /**
  * The point the GPU measures positions from: the viewer's eye rounded to a multiple of {@link #step()} on x and z
  * (y stays 0, so heights and the air's altitude are the world's own). The CPU holds it, and every world position
@@ -34,8 +36,8 @@ public final class RenderOrigin {
 
     /** Moves the origin to the multiple of the step nearest the eye (x, z, metres); true when it moved. */
     public boolean follow(double eyeX, double eyeZ) {
-        double nx = step * Math.rint(eyeX / step);
-        double nz = step * Math.rint(eyeZ / step);
+        double nx = step * Math.rint(eyeX / step) + 0.0; // + 0.0 turns −0 into 0
+        double nz = step * Math.rint(eyeZ / step) + 0.0;
         boolean moved = nx != x || nz != z;
         x = nx;
         z = nz;
@@ -65,6 +67,11 @@ public final class RenderOrigin {
     /** A world z (metres, double) as the GPU takes it. */
     public float relativeZ(double worldZ) {
         return (float) (worldZ - z);
+    }
+
+    /** A world point (metres, double) as the GPU takes it. */
+    public Vector3f relative(double worldX, double worldY, double worldZ) {
+        return new Vector3f(relativeX(worldX), (float) worldY, relativeZ(worldZ));
     }
 
     /** World (x, z) pairs, metres, as the GPU takes them: each from the origin, rounded to float once. */
