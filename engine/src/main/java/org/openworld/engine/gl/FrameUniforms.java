@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL31C.GL_UNIFORM_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_DYNAMIC_DRAW;
 
 import java.nio.ByteBuffer;
+import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
@@ -62,7 +63,8 @@ public final class FrameUniforms implements Labelled {
     /** Writes the block for one pass (std140: each mat4 is 64 bytes column-major, each vec4 16 bytes). */
     public void write(Values v) {
         Matrix4f viewProj = new Matrix4f(v.projection()).mul(v.view());
-        Matrix4f invViewProj = new Matrix4f(viewProj).invert();
+        // inverted in double: a deep projection (0.5 m to 40 km) is ill-conditioned, and float loses centimetres
+        Matrix4f invViewProj = new Matrix4f(new Matrix4d(v.projection()).mul(new Matrix4d(v.view())).invert());
         v.view().get(0, data);
         v.projection().get(MAT4, data);
         viewProj.get(2 * MAT4, data);

@@ -56,8 +56,20 @@ final class TreePlacement {
      * @param tileFirst   the first tree of each tile
      * @param tileCount   the trees of each tile (every tile here has at least one)
      * @param bounds      the root box (node 0) and one box per tile (node t + 1)
+     * @param x           where the records' x and z are measured from: the disc's centre, metres
+     * @param z           its z
      */
-    record Layout(float[] records, int[] tileFirst, int[] tileCount, BoundsTree bounds) {
+    record Layout(float[] records, int[] tileFirst, int[] tileCount, BoundsTree bounds, double x, double z) {
+
+        /** The records with the feet in world coordinates (tests and tools near the origin: floats). */
+        float[] worldRecords() {
+            float[] world = records.clone();
+            for (int o = 0; o < world.length; o += FLOATS) {
+                world[o] = (float) (records[o] + x);
+                world[o + 2] = (float) (records[o + 2] + z);
+            }
+            return world;
+        }
 
         int count() {
             return records.length / FLOATS;
@@ -139,7 +151,7 @@ final class TreePlacement {
             }
         }
         return new Layout(Arrays.copyOf(records, trees * FLOATS), Arrays.copyOf(first, tiles),
-                Arrays.copyOf(count, tiles), bounds(boxes, tiles));
+                Arrays.copyOf(count, tiles), bounds(boxes, tiles), x, z);
     }
 
     /** The ground's gradient (rise over run) at (x, z), by central differences. */

@@ -200,9 +200,9 @@ public final class TreeSystem implements EngineSystem {
         counters.add("trees." + pass.label() + ".drawn", drawn);
     }
 
-    /** The trees placed now (tests and tools): {@link TreePlacement#FLOATS} floats per tree. */
+    /** The trees placed now (tests and tools): {@link TreePlacement#FLOATS} floats per tree, feet in world x, z. */
     float[] placed() {
-        return layout == null ? new float[0] : layout.records();
+        return layout == null ? new float[0] : layout.worldRecords();
     }
 
     /** How often the trees were placed. */
