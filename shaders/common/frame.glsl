@@ -25,6 +25,9 @@ layout(std140) uniform FrameBlock {
     vec4 timeInfo;        // x: simulation time (s); y: time of day (h); z: frame index; w: 0
     vec4 viewport;        // xy: size (px); zw: 1 / size
     vec4 viewerPos;       // xyz: the viewer's eye, world space (m), the same in every pass; w: 0
+    vec4 origin;          // xz: the render origin in steps, whole numbers; y: 0; w: the step (m) (engine:
+                          // origin.RenderOrigin). "World space" on the GPU is measured from it: every position
+                          // above and in the vertex data is p - origin, so a float keeps its millimetres.
     vec4 sky[10];         // rgb: [0..8] the sky's and the ground's irradiance as factors of order-2 spherical
                           // harmonics, [9] the light of the terrain where it hides the sky (engine:
                           // environment.SkyIrradiance), read by skyIrradiance

@@ -81,6 +81,9 @@ void main() {
     vec2 xz = cameraPos().xz + r * vec2(sin(azimuth), -cos(azimuth));
     // 1. the far level, bilinear
     vec2 p = (xz - uOrigin) / uSampleSpacing;
+#ifdef TERRAIN_CLIPMAP
+    p += clipmapOrigin(uFarLevel, clipExtent, clipSize); // xz is from the render origin (the tile needs no shift: it
+#endif                                                    // repeats every step)
     ivec2 i = ivec2(floor(p));
     vec2 f = p - floor(p);
     float level = mix(mix(sampleAt(i), sampleAt(i + ivec2(1, 0)), f.x),

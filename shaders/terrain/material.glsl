@@ -33,6 +33,12 @@
 uniform sampler2DArray uMatAlbedo; // layers MAT_GRASS, MAT_ROCK, MAT_SNOW; sRGB-stored colour, sampled linear
 uniform sampler2DArray uMatDetail; // rg: tangent-space normal xy * 0.5 + 0.5; b: relief 0..1; a: gloss 0..1
 uniform float uMatDetailScale;     // metres per fine tile
+// The render origin's share of the lattices and tiles below (engine: origin.MaterialOrigin), computed in double and
+// split into a whole part (xy, reduced modulo the hash's period) and a fraction (zw), so that a point's place
+// on a lattice is a small float (its offset from the origin) plus these: its cell is floor(small + fraction) +
+// whole, exact, and its place in the cell fract(small + fraction). All zero at the world's origin.
+uniform vec4 uMatMacroOrigin[8];   // the macro noise's 8 octave lattices: matMacro's brightness [0..3], tint [4..7]
+uniform vec4 uMatTileOrigin[6];    // the tiles' coordinates: [2 plane] fine, [2 plane + 1] coarse, planes xz, zy, xy
 uniform int uMatSnowMode;          // MAT_SNOW_MAP or MAT_ALTITUDE_BANDS
 uniform vec2 uMatSnowBand;         // ALTITUDE_BANDS: normalised heights where snow starts and is full (SnowLines)
 uniform int uMatNormalMap;         // 1: perturb the normal with the normal maps
@@ -114,16 +120,17 @@ float matFresnel(float cosine) {
     return MAT_F0 + (1.0 - MAT_F0) * m2 * m2 * m;
 }
 
-// Hash of a lattice point to 0..1, without sin (stable across GPUs): Dave Hoskins, "Hash without Sine".
+// Hash of a lattice point to 0..1, without sin (stable across GPUs): Dave Hoskins, "Hash without Sine". Periodic
+// in 10000 cells (origin.MaterialOrigin.HASH_PERIOD): 0.1031 times it is the whole number 1031, which fract drops.
 float matHash(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
     p3 += dot(p3, p3.yzx + 33.33);
     return fract((p3.x + p3.y) * p3.z);
 }
 
-// Value noise with quintic fade, 0..1.
-float matValueNoise(vec2 p) {
-    vec2 i = floor(p);
+// Value noise with quintic fade, 0..1, at the point p + whole of its lattice (whole: whole cells).
+float matValueNoise(vec2 p, vec2 whole) {
+    vec2 i = floor(p) + whole;
     vec2 f = fract(p);
     vec2 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
     float a = matHash(i);
@@ -133,14 +140,16 @@ float matValueNoise(vec2 p) {
     return mix(mix(a, b, u.x), mix(c, d, u.x), u.y);
 }
 
-// Four octaves of value noise from MAT_MACRO_SCALE down to 15 m, 0..1 (mean 0.5); not periodic, so it never repeats.
-float matMacro(vec2 wsXZ) {
+// Four octaves of value noise from MAT_MACRO_SCALE down to 15 m, 0..1 (mean 0.5); not periodic, so it never repeats
+// (but for the hash's period, 1200 km). The lattices' first four origins (uMatMacroOrigin) from `first`.
+float matMacro(vec2 wsXZ, int first) {
     const mat2 turn = mat2(0.80, 0.60, -0.60, 0.80); // each octave turned by 37 deg so the lattices do not align
     vec2 p = wsXZ / MAT_MACRO_SCALE;
     float sum = 0.0;
     float amplitude = 0.5;
     for (int i = 0; i < 4; i++) {
-        sum += amplitude * matValueNoise(p);
+        vec4 origin = uMatMacroOrigin[first + i];
+        sum += amplitude * matValueNoise(p + origin.zw, origin.xy);
         p = turn * p * 2.0 + 13.7;
         amplitude *= 0.5;
     }
@@ -149,7 +158,7 @@ float matMacro(vec2 wsXZ) {
 
 // The macro variation at wsXZ: x brightens and darkens and bends the blend edges, y tints; both 0..1.
 vec2 matMacroTint(vec2 wsXZ) {
-    return vec2(matMacro(wsXZ), matMacro(wsXZ.yx * 1.7 + 311.0));
+    return vec2(matMacro(wsXZ, 0), matMacro(wsXZ.yx * 1.7 + 311.0, 4));
 }
 
 // One material's texels at both scales, mixed; slope is the tangent-space normal's xy in the world's X/Z frame.
@@ -235,8 +244,9 @@ struct MatCell {
     vec2 dy; // coarsest mip (a seam of blur)
 };
 
-MatCell matCell(vec2 uv) {
-    vec2 cell = floor(uv);
+MatCell matCell(vec2 uv, vec2 whole) {
+    vec2 local = floor(uv);
+    vec2 cell = local + whole;
     // a horizontal edge's colour from one hash, a vertical edge's from another (offset lattice)
     float north = step(0.5, matHash(cell));
     float south = step(0.5, matHash(cell + vec2(0.0, 1.0)));
@@ -244,7 +254,7 @@ MatCell matCell(vec2 uv) {
     float east = step(0.5, matHash(cell + vec2(518.0, 211.0)));
     vec2 tile = vec2(2.0 * west + abs(west - east), 2.0 * north + abs(north - south));
     MatCell c;
-    c.uv = (tile + (uv - cell)) / MAT_WANG_ATLAS;
+    c.uv = (tile + (uv - local)) / MAT_WANG_ATLAS;
     c.dx = dFdx(uv) / MAT_WANG_ATLAS;
     c.dy = dFdy(uv) / MAT_WANG_ATLAS;
     return c;
@@ -273,22 +283,27 @@ vec4 matLookup(sampler2DArray tex, float layer, vec2 uv) {
 }
 #endif
 
-// The texture coordinates at both scales of a point p (metres) in a projection's plane: the fine tile, and the
-// coarse one 6.3 times larger and turned.
-MatCoords matCoords(vec2 p, float coarseWeight) {
+// The texture coordinates at both scales of a point p (metres from the render origin) in a projection's plane (0: xz,
+// 1: zy, 2: xy): the fine tile, and the coarse one 6.3 times larger and turned. The tiles repeat every unit, so the
+// origin's whole tiles matter only to the tilings that hash their cells.
+MatCoords matCoords(vec2 p, float coarseWeight, int plane) {
     const mat2 turn = mat2(0.8253, 0.5646, -0.5646, 0.8253); // rotation by MAT_COARSE_TURN
+    vec4 fineOrigin = uMatTileOrigin[2 * plane];
+    vec4 coarseOrigin = uMatTileOrigin[2 * plane + 1];
     vec2 fine = p / uMatDetailScale;
-    vec2 coarse = turn * fine / MAT_COARSE_FACTOR;
+    vec2 coarse = turn * fine / MAT_COARSE_FACTOR + coarseOrigin.zw;
+    fine += fineOrigin.zw;
     MatCoords c;
 #ifdef MAT_STOCHASTIC
-    c.coarse = matTiles(coarse);
+    // (its triangles' lattice is skewed: the origin's whole tiles, reduced, shift it by a float, not a whole cell)
+    c.coarse = matTiles(coarse + coarseOrigin.xy);
   #ifndef MAT_COARSE_ONLY
-    c.fine = matTiles(fine);
+    c.fine = matTiles(fine + fineOrigin.xy);
   #endif
 #elif defined(MAT_WANG)
-    c.coarse = matCell(coarse);
+    c.coarse = matCell(coarse, coarseOrigin.xy);
   #ifndef MAT_COARSE_ONLY
-    c.fine = matCell(fine);
+    c.fine = matCell(fine, fineOrigin.xy);
   #endif
 #else
     c.fine = fine;
@@ -339,8 +354,8 @@ MatTexel matRockTriplanar(TerrainSurface s, MatCoords top) {
     vec3 w = n4 * n4; // |n|^8 by multiplications: a pow is a log and an exponential per pixel on a rasteriser
     w /= w.x + w.y + w.z;
     MatTexel fromTop = matSample(MAT_ROCK, top);
-    MatTexel alongX = matSample(MAT_ROCK, matCoords(s.wsPos.zy, top.coarseWeight));
-    MatTexel alongZ = matSample(MAT_ROCK, matCoords(s.wsPos.xy, top.coarseWeight));
+    MatTexel alongX = matSample(MAT_ROCK, matCoords(s.wsPos.zy, top.coarseWeight, 1));
+    MatTexel alongZ = matSample(MAT_ROCK, matCoords(s.wsPos.xy, top.coarseWeight, 2));
     // The detail slope is the normal map's tangent-space xy along a projection's texture axes u, v; lightTerrain
     // reads it along the terrain's frame T (the slope along +X) and B (along +Z). The (z, y) plane's u runs along +Z,
     // which is B's direction on a face that faces X, and its v runs up, which is T or -T (T rises with the ground
@@ -376,7 +391,7 @@ MatTexel terrainMaterial(TerrainSurface s, float coarseWeight, vec2 macroTint) {
     float n0y = s.wsNormal.y;
 
     // 1. texture coordinates at two scales, projected from above, and the macro variation
-    MatCoords c = matCoords(s.wsPos.xz, coarseWeight);
+    MatCoords c = matCoords(s.wsPos.xz, coarseWeight, 0);
     float macro = macroTint.x;
     float tint = macroTint.y;
     float edge = (macro - 0.5) * 2.0 * MAT_EDGE_NOISE;

@@ -17,7 +17,7 @@ layout(location = 0) in vec2 gridPos;         // column, row in 0..N
 layout(location = 1) in ivec4 patchInfo;      // origin sample x, origin sample z, samples per grid step, level
 layout(location = 2) in ivec4 sideLevels;     // north, east, south, west
 layout(location = 3) in ivec4 cornerLevels;   // north-west, north-east, south-east, south-west
-layout(location = 4) in vec2 copyOffset;      // metres
+layout(location = 4) in vec2 copyOffset;      // metres from the render origin (frame.glsl)
 layout(location = 5) in float patchMorph;     // k: how far the patch has morphed towards its parent's surface
 layout(location = 6) in vec4 sideMorph;       // north, east, south, west neighbour's k when it samples the side's level
 layout(location = 7) in vec4 cornerMorph;     // north-west, north-east, south-east, south-west diagonal's k, likewise
@@ -114,8 +114,9 @@ float coarserHeight(ivec2 sampleIndex, int level) {
 
 void main() {
 #ifdef TERRAIN_CLIPMAP
-    // roots lie on a lattice of their own side, so their offset in samples is an integer exactly
-    worldOrigin = ivec2(round(copyOffset / spacing)) - ivec2(mapSize / 2);
+    // roots lie on a lattice of their own side, so their offset in samples is an integer exactly; the copy's offset
+    // is from the render origin, whose own whole steps (a root's side each) come in int
+    worldOrigin = ivec2(round(copyOffset / spacing)) + ivec2(frame.origin.xz) * mapSize - ivec2(mapSize / 2);
 #endif
     ivec2 g = ivec2(gridPos);
     ivec2 sampleIndex = patchInfo.xy + g * patchInfo.z;

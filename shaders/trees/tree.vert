@@ -11,9 +11,10 @@
 layout(location = 0) in vec3 msPos;      // the shape, units of the tree's height: per vertex
 layout(location = 1) in vec3 msNormal;
 layout(location = 2) in float part;      // 0 trunk, 1 needles
-layout(location = 3) in vec4 footHeight; // xyz: the foot, world space (m); w: height (m): per instance
+layout(location = 3) in vec4 footHeight; // xyz: the foot, from uPlaced (m); w: height (m): per instance
 layout(location = 4) in vec2 turnTint;   // x: turn about the vertical (radians); y: tint 0..1
 
+uniform vec2 uPlaced; // where the feet's x and z are measured from: the placement's centre from the render origin (m)
 uniform vec2 uFade; // x: distance from the viewer where trees start to shrink (m); y: where they are gone (m)
 
 out vec3 wsPos;
@@ -25,7 +26,8 @@ const float WIDTH_LOW = 0.85;   // the narrowest tree's width, times the shape's
 const float WIDTH_SPREAD = 0.3; // ... to the widest, 1.15 times: 0.58 heights across
 
 void main() {
-    float shrink = 1.0 - smoothstep(uFade.x, uFade.y, distance(footHeight.xyz, viewerPos()));
+    vec3 foot = footHeight.xyz + vec3(uPlaced.x, 0.0, uPlaced.y);
+    float shrink = 1.0 - smoothstep(uFade.x, uFade.y, distance(foot, viewerPos()));
     float c = cos(turnTint.x);
     float s = sin(turnTint.x);
     mat2 turn = mat2(c, s, -s, c);
@@ -33,7 +35,7 @@ void main() {
     vec3 p = vec3(turn * msPos.xz * width, msPos.y).xzy;
     // widening by w across squeezes the normal's horizontal part by 1 / w (the inverse transpose)
     vec3 n = vec3(turn * msNormal.xz / width, msNormal.y).xzy;
-    wsPos = footHeight.xyz + p * footHeight.w * shrink;
+    wsPos = foot + p * footHeight.w * shrink;
     wsNormal = normalize(n);
     vPart = part;
     vTint = turnTint.y;

@@ -15,6 +15,7 @@ uniform sampler2DArray ripples;  // slopes (RippleField): layer i holds frame i 
                                  // each 128 + 127 * slope / scale
 uniform vec3 uExtinction;        // per metre, rgb
 uniform vec4 uRipple;            // x: 1 / tile (1/m); y: frames; z: time / period; w: slope scale
+uniform vec4 uRippleOrigin;      // the render origin in tiles, 0..1: xy of the first layer, zw of the second
 
 // Where the second, smaller layer of ripples is drawn from: a scale unrelated to the first, so the two tiles never
 // repeat together, and its weight (the two are summed, then rescaled to the first's slope).
@@ -23,10 +24,10 @@ const float SMALL_WEIGHT = 0.6;
 const float WATER_INDEX = 1.333;
 
 // The slopes at xz, `cycles` loops into the animation: one texture read gives two successive frames, blended.
-vec2 slopes(vec2 xz, float scale, float cycles) {
+vec2 slopes(vec2 xz, float scale, float cycles, vec2 origin) {
     float f = fract(cycles) * uRipple.y;
     float layer = floor(f);
-    vec4 pair = texture(ripples, vec3(xz * uRipple.x / scale, layer));
+    vec4 pair = texture(ripples, vec3(xz * uRipple.x / scale + origin, layer));
     return (mix(pair.rg, pair.ba, f - layer) * 255.0 - 128.0) / 127.0 * uRipple.w;
 }
 
@@ -34,8 +35,8 @@ vec2 slopes(vec2 xz, float scale, float cycles) {
 // runs slower by 1/sqrt(scale): deep-water waves' frequency goes as the square root of their wavenumber
 // (omega^2 = g k), so geometrically smaller waves are also quicker.
 vec3 rippleNormal(vec2 xz, float amplitude) {
-    vec2 s = slopes(xz, 1.0, uRipple.z)
-           + SMALL_WEIGHT * slopes(xz + vec2(17.3, -5.1), SMALL_SCALE, uRipple.z / sqrt(SMALL_SCALE));
+    vec2 s = slopes(xz, 1.0, uRipple.z, uRippleOrigin.xy)
+           + SMALL_WEIGHT * slopes(xz + vec2(17.3, -5.1), SMALL_SCALE, uRipple.z / sqrt(SMALL_SCALE), uRippleOrigin.zw);
     s *= amplitude / sqrt(1.0 + SMALL_WEIGHT * SMALL_WEIGHT);
     return normalize(vec3(-s.x, 1.0, -s.y));
 }

@@ -56,8 +56,8 @@ final class PoseOptions {
             for (int i = 0; i < 3; i++) {
                 if (!CameraPose.drawable(v[i])) {
                     throw new picocli.CommandLine.TypeConversionException("'" + text + "': " + FIELDS[i] + " is "
-                            + parts[i].trim() + " m, beyond the renderer's reach: expected -1000000 .. 1000000 m "
-                            + "(1000 km from the origin; float32 positions on the GPU)");
+                            + parts[i].trim() + " m, beyond the renderer's reach: expected -16777216 .. 16777216 m "
+                            + "(2^24 m from the origin, where the CPU's float positions are 1 m apart)");
                 }
             }
             if (v[4] < -89 || v[4] > 89) {

@@ -46,8 +46,8 @@ class ErrorMessagesTest {
 
     @Test
     void aCameraBeyondTheRenderersReachIsRefusedWithTheLimit() {
-        userMistake("'1e9,400,1e9,45,-10': x is 1e9 m, beyond the renderer's reach: expected -1000000 .. 1000000 m "
-                + "(1000 km from the origin; float32 positions on the GPU)", "shot", "--out",
+        userMistake("'1e9,400,1e9,45,-10': x is 1e9 m, beyond the renderer's reach: expected -16777216 .. 16777216 m "
+                + "(2^24 m from the origin, where the CPU's float positions are 1 m apart)", "shot", "--out",
                 dir.resolve("x.png").toString(), "--camera", "1e9,400,1e9,45,-10");
     }
 

@@ -8,6 +8,7 @@ import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.Sun;
@@ -24,7 +25,8 @@ import org.openworld.engine.gl.Texture3D;
 
 /**
  * What every shader of a pass can read without its system binding it (docs/design.md, "Passes"): the frame uniform
- * block ({@code shaders/common/frame.glsl}: the pass camera, the sun, the exposure, the clock, the target's size),
+ * block ({@code shaders/common/frame.glsl}: the pass camera and the viewer, from the {@link RenderOrigin}, the sun,
+ * the exposure, the clock, the target's size),
  * the sky's aerial-perspective volume and environment map, and the sun's shadow maps with their block. A world
  * without a sky gets neutral stand-ins (clear air, a uniform sky as bright as the noon sun's ambient light), and a
  * frame whose shadow maps are not drawn gets a map that shadows nothing, so a shader never branches on what the
@@ -66,12 +68,14 @@ final class SharedBindings {
     private static FrameUniforms.Values frameValues(World world, PassView view, PassView viewer, double simTime,
                                                     long frame) {
         ViewCamera camera = view.camera();
+        RenderOrigin origin = world.resource(RenderOrigin.class);
         Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
-        return new FrameUniforms.Values(new Matrix4f(camera.view()), new Matrix4f(camera.projection()),
-                camera.position(), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
+        return new FrameUniforms.Values(camera.viewFrom(origin.x(), origin.z()), new Matrix4f(camera.projection()),
+                camera.positionFrom(origin.x(), origin.z()), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
                 exposure.scale(), exposure.scotopic(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
-                view.target().height(), viewer.camera().position(), sun.sky().shaderFactors());
+                view.target().height(), viewer.camera().positionFrom(origin.x(), origin.z()),
+                origin.x() / origin.step(), origin.z() / origin.step(), origin.step(), sun.sky().shaderFactors());
     }
 
     /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */

@@ -29,7 +29,7 @@ void main() {
     s.wsTangent = normalize(vec3(n.y, -n.x, 0.0));    // (1, dh/dx, 0) with dh/dx = -n.x / n.y
     s.wsBitangent = normalize(vec3(0.0, -n.z, n.y));  // (0, dh/dz, 1)
     s.height01 = clamp(wsPos.y / uTop, 0.0, 1.0);
-    float patchy = matValueNoise(wsPos.xz / 180.0) + 0.5 * matValueNoise(wsPos.xz / 60.0);
+    float patchy = matValueNoise(wsPos.xz / 180.0, vec2(0.0)) + 0.5 * matValueNoise(wsPos.xz / 60.0, vec2(0.0));
     s.snow = smoothstep(0.5, 0.62, s.height01 + 0.2 * (patchy - 0.75));
     s.skyVisibility = uSkyVisibility;
     fragColor = vec4(displayColor(applyFog(shadeTerrain(s), wsPos)), 1.0);

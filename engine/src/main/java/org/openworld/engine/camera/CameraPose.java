@@ -13,12 +13,15 @@ package org.openworld.engine.camera;
 public record CameraPose(double x, double y, double z, double yaw, double pitch, double fov) {
 
     /**
-     * The farthest a camera may be from the origin along each axis, metres: 1000 km. The world's heights are doubles,
-     * but the GPU takes positions as float32, whose 24 bits resolve 6 cm at 1000 km and 25 cm at 4000 km: measured
-     * ({@code openworld shot --camera D,400,D,45,-10}), the picture at 1000 km is whole and at 4000 km the ground
-     * shows holes and the snow specks of sky. {@code --camera} and camera path files refuse a coordinate beyond it.
+     * The farthest a camera may be from the origin along each axis, metres: 2^24 m, 16 777 km. The GPU sees only
+     * positions from the render origin (org.openworld.engine.origin), so its floats break nowhere; what ends the
+     * world is the CPU's float copies of world positions (the level of detail's eye, the culling's boxes, the light
+     * boxes' fit), whose 24 bits are 1 m apart from 2^24 m on: beyond it a patch's level or a shadow's box could be
+     * metres off. Every other limit lies farther: the render origin counted in float steps (2^24 tiles), the
+     * unbounded world's int sample indices (2^31 samples). {@code --camera} and camera path files refuse a coordinate
+     * beyond it.
      */
-    public static final double MAX_COORDINATE_M = 1_000_000;
+    public static final double MAX_COORDINATE_M = 1 << 24;
 
     /** Whether a coordinate lies within {@link #MAX_COORDINATE_M} of the origin. */
     public static boolean drawable(double metres) {

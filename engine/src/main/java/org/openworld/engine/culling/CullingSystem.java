@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.BiConsumer;
 import java.util.function.Predicate;
+import org.joml.Matrix4f;
 import org.openworld.engine.core.BoundsTree;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
@@ -17,6 +18,7 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility.Containment;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -109,7 +111,8 @@ public final class CullingSystem implements EngineSystem {
         if (pass == Pass.OVERLAY) {
             // the debug view: the frozen main frustum's edges, over the finished picture
             if (freeze && frozen[Pass.MAIN.ordinal()]) {
-                outline.draw(context.stats());
+                RenderOrigin origin = context.world().resource(RenderOrigin.class);
+                outline.draw(context.stats(), origin.x(), origin.z());
             }
             // the frame's answers are used up: no drawer may find them next frame if culling is switched off
             world = context.world();
@@ -122,7 +125,9 @@ public final class CullingSystem implements EngineSystem {
             frustums[p].set(context.camera());
             frozen[p] = freeze;
             if (freeze && pass == Pass.MAIN) {
-                outline.setFrustum(context.camera().viewProjection());
+                RenderOrigin origin = context.world().resource(RenderOrigin.class);
+                outline.setFrustum(new Matrix4f(context.camera().projection())
+                        .mul(context.camera().viewFrom(origin.x(), origin.z())), origin.x(), origin.z());
             }
         }
         // 2. every cullable, every copy, top-down

@@ -31,6 +31,8 @@ final class FrustumOutline {
     private final Uniform.Float halfWidthPx;
     private final Matrix4d inverse = new Matrix4d();
     private final Vector3d corner = new Vector3d();
+    /** The corners, world space in double (x, y, z each), kept while the outline is frozen. */
+    private final double[] corners = new double[3 * CORNERS];
 
     FrustumOutline(EngineContext context) {
         program = context.own("outline", context.shaders().program("culling/outline.vert", "culling/outline.frag"));
@@ -73,23 +75,32 @@ final class FrustumOutline {
 
     /**
      * Sets the frustum to outline: the corners are the clip cube's, taken back to world space through the inverse
-     * of its view-projection, in double precision so the far corners of a deep perspective frustum stay exact.
+     * of its view-projection, in double precision so the far corners of a deep perspective frustum stay exact. The
+     * view-projection takes positions from (originX, 0, originZ), as the GPU's do; the corners are kept in the world's.
      */
-    void setFrustum(Matrix4fc viewProjection) {
+    void setFrustum(Matrix4fc viewProjection, double originX, double originZ) {
         inverse.set(viewProjection).invert();
-        program.use();
         for (int i = 0; i < CORNERS; i++) {
             inverse.transformProject((i & 1) == 0 ? -1 : 1, (i & 2) == 0 ? -1 : 1, (i & 4) == 0 ? -1 : 1, corner);
-            wsCorners[i].set((float) corner.x, (float) corner.y, (float) corner.z);
+            corners[3 * i] = corner.x + originX;
+            corners[3 * i + 1] = corner.y;
+            corners[3 * i + 2] = corner.z + originZ;
         }
     }
 
-    /** Draws the edges, depth-tested against the scene, with the camera in the frame block. */
-    void draw(DrawStats stats) {
+    /**
+     * Draws the edges, depth-tested against the scene, with the camera in the frame block, the corners from the
+     * frame's render origin (originX, 0, originZ).
+     */
+    void draw(DrawStats stats, double originX, double originZ) {
         glEnable(GL_DEPTH_TEST);
         glDepthMask(false);
         glDisable(GL_CULL_FACE);
         program.use();
+        for (int i = 0; i < CORNERS; i++) {
+            wsCorners[i].set((float) (corners[3 * i] - originX), (float) corners[3 * i + 1],
+                    (float) (corners[3 * i + 2] - originZ));
+        }
         halfWidthPx.set(WIDTH_PX / 2);
         ribbons.draw(stats);
         glDepthMask(true);

@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL31C.GL_UNIFORM_BUFFER;
 import static org.lwjgl.opengl.GL15C.GL_DYNAMIC_DRAW;
 
 import java.nio.ByteBuffer;
+import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
@@ -18,6 +19,9 @@ import org.lwjgl.system.MemoryUtil;
  * mirrored eye), {@code viewerPos} the viewer's (the MAIN camera's) in every pass. Whatever must agree between the
  * passes (a fade or a level of detail by distance) follows the viewer; what belongs to the picture being drawn (the
  * view ray, the air in front of a surface) follows the pass camera.
+ *
+ * <p>Every position here is measured from the render origin ({@code org.openworld.engine.origin.RenderOrigin}), whose
+ * place the block holds as a whole number of steps (exact in a float up to 2^24 steps) and the step in metres.
  */
 public final class FrameUniforms implements Labelled {
 
@@ -28,14 +32,15 @@ public final class FrameUniforms implements Labelled {
      * it, one RGB vector each.
      */
     public static final int SKY_FACTORS = 10;
-    /** 4 matrices, 8 vectors and the sky's factors, bytes. */
-    static final int SIZE = 4 * MAT4 + 8 * VEC4 + SKY_FACTORS * VEC4;
+    /** 4 matrices, 9 vectors and the sky's factors, bytes. */
+    static final int SIZE = 4 * MAT4 + 9 * VEC4 + SKY_FACTORS * VEC4;
 
     /**
      * Everything the block holds, gathered by the engine for one pass.
      *
      * @param cameraPos the pass camera's eye (the sun's camera in SHADOW, the mirrored eye in REFLECTION)
      * @param viewerPos the viewer's eye, the MAIN camera's, whatever the pass
+     * @param originSteps the render origin's x and z in steps (whole numbers); {@code step} its step, metres
      * @param sky       the nine factors of the sky's irradiance for any normal and the hidden sky's light
      *                  (frame.glsl's skyIrradiance; environment.SkyIrradiance#shaderFactors)
      */
@@ -43,7 +48,7 @@ public final class FrameUniforms implements Labelled {
                          Vector3fc sunDir, Vector3fc sunColor, Vector3fc ambient, float exposure, float scotopic,
                          double simTime, double timeOfDayHours, long frame,
                          int width, int height, Vector3fc viewerPos,
-                         Vector3fc[] sky) {
+                         double originStepsX, double originStepsZ, double step, Vector3fc[] sky) {
     }
 
     private final GpuBuffer buffer;
@@ -58,7 +63,8 @@ public final class FrameUniforms implements Labelled {
     /** Writes the block for one pass (std140: each mat4 is 64 bytes column-major, each vec4 16 bytes). */
     public void write(Values v) {
         Matrix4f viewProj = new Matrix4f(v.projection()).mul(v.view());
-        Matrix4f invViewProj = new Matrix4f(viewProj).invert();
+        // inverted in double: a deep projection (0.5 m to 40 km) is ill-conditioned, and float loses centimetres
+        Matrix4f invViewProj = new Matrix4f(new Matrix4d(v.projection()).mul(new Matrix4d(v.view())).invert());
         v.view().get(0, data);
         v.projection().get(MAT4, data);
         viewProj.get(2 * MAT4, data);
@@ -72,6 +78,7 @@ public final class FrameUniforms implements Labelled {
         o = vec4(o, (float) v.simTime(), (float) v.timeOfDayHours(), v.frame(), 0);
         o = vec4(o, v.width(), v.height(), 1f / v.width(), 1f / v.height());
         o = vec4(o, v.viewerPos().x(), v.viewerPos().y(), v.viewerPos().z(), 0);
+        o = vec4(o, (float) v.originStepsX(), 0, (float) v.originStepsZ(), (float) v.step());
         for (Vector3fc c : v.sky()) {
             o = vec4(o, c.x(), c.y(), c.z(), 0);
         }

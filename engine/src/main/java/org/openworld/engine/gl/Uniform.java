@@ -85,6 +85,11 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         public void set(Vector4fc v) {
             glUniform4f(location, v.x(), v.y(), v.z(), v.w());
         }
+
+        /** A vec4 array from its first element on, four floats an element (elements the program lacks are ignored). */
+        public void setArray(float[] values) {
+            glUniform4fv(location, values);
+        }
     }
 
     public static final class Float extends Uniform {

@@ -35,6 +35,7 @@ import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.gl.VertexArray;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -85,6 +86,11 @@ public final class ParticleSystem implements EngineSystem {
     private int builds;
     private long steps;
     private GroundPatch ground;
+    /** The world's heights, and the same from the render origin the flakes are simulated from (see prepare). */
+    private HeightField worldGround;
+    private HeightField groundFromOrigin;
+    private double originX = Double.NaN;
+    private double originZ = Double.NaN;
     /** The eye at the last step or frame, to tell a jump from a flight. */
     private final Vector3f lastEye = new Vector3f(Float.NaN);
     /** The side of the cube the flakes were last spread through, metres. */
@@ -178,9 +184,21 @@ public final class ParticleSystem implements EngineSystem {
      * shape.
      */
     private void prepare(World world, ParticleSettings s) {
+        // the flakes live in the GPU's coordinates, from the render origin: when it moves a step, the eye seems to
+        // jump by it, and the flakes are spread afresh around it (alike, as falling snow is)
         CameraPose pose = world.resource(Camera.class).pose();
-        Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
-        HeightField field = world.findResource(HeightField.class).orElse(HeightField.FLAT);
+        RenderOrigin origin = world.resource(RenderOrigin.class);
+        HeightField worldHeights = world.findResource(HeightField.class).orElse(HeightField.FLAT);
+        if (worldHeights != worldGround || origin.x() != originX || origin.z() != originZ) {
+            double ox = origin.x();
+            double oz = origin.z();
+            worldGround = worldHeights;
+            groundFromOrigin = (x, z) -> worldHeights.heightAt(x + ox, z + oz);
+            originX = ox;
+            originZ = oz;
+        }
+        HeightField field = groundFromOrigin;
+        Vector3f eye = origin.relative(pose.x(), pose.y(), pose.z());
         if (ground == null || !ground.covers(field, eye.x, eye.z, 0.5 * s.volume())) {
             ground = GroundPatch.sample(field, eye.x, eye.z, 2 * s.volume(), GROUND_SAMPLES);
             FloatBuffer heights = MemoryUtil.memAllocFloat(ground.heights().length).put(ground.heights()).flip();

@@ -18,6 +18,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.origin.RenderOrigin;
 
 /**
  * Measures the sun's shadows in the finished picture ({@code shadow.measure}): per pixel, the visibility every lit
@@ -110,9 +111,12 @@ final class ShadowProbe {
     private void count(RenderContext context, float[] lastPointsNow) {
         World world = context.world();
         Counters counters = world.resource(Counters.class);
-        Vector3fc eye = context.camera().position();
+        // the probe's points are from the render origin, as everything the GPU holds: so are the eye and the ground
+        RenderOrigin origin = world.resource(RenderOrigin.class);
+        Vector3fc eye = context.camera().positionFrom(origin.x(), origin.z());
         Vector3fc toSun = world.findResource(Sun.class).orElse(Sun.NOON).direction();
-        HeightField ground = world.findResource(HeightField.class).orElse(HeightField.FLAT);
+        HeightField field = world.findResource(HeightField.class).orElse(HeightField.FLAT);
+        HeightField ground = (x, z) -> field.heightAt(x + origin.x(), z + origin.z());
         ShadowStatistics.Measures measures = statistics.measure(pixels, lastPointsNow, probed.width(), eye, toSun,
                 ground, highestCaster(CasterHeights.of(world)));
         measures.flicker().ifPresent(flicker -> {

@@ -6,6 +6,7 @@ import static org.lwjgl.opengl.GL31C.GL_UNIFORM_BUFFER;
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
+import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Vector3d;
 import org.joml.Vector3fc;
@@ -23,6 +24,7 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.DepthTextureArray;
@@ -135,7 +137,7 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         if (toSun.y() <= 0) {
             refresh.forget(s.maps());
             boxes = List.of();
-            writeBlock(s, eye.position());                  // no cascades: everything lit
+            writeBlock(s, eye, world.resource(RenderOrigin.class)); // no cascades: everything lit
             return List.of();
         }
         double reach = CasterHeights.of(world).span() / Math.max(toSun.y(), MIN_SUN_SINE);
@@ -158,21 +160,26 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
             held.add(refresh.box(i));
         }
         boxes = List.copyOf(held);
-        writeBlock(s, eye.position());
+        writeBlock(s, eye, world.resource(RenderOrigin.class));
         world.resource(Counters.class).put("shadow.redrawn", views.size());
         return views;
     }
 
     /**
      * The std140 {@code ShadowBlock} of {@code shaders/common/shadow.glsl}, member by member. The paper's method has
-     * the margin alone (no slope or normal bias) and no fade: its map simply ends at the shadow distance.
+     * the margin alone (no slope or normal bias) and no fade: its map simply ends at the shadow distance. The
+     * matrices and the viewer take positions from the render origin, as the frame block does: {@code L · T(origin)},
+     * multiplied in double.
      */
-    private void writeBlock(ShadowSettings s, Vector3fc viewer) {
+    private void writeBlock(ShadowSettings s, ViewCamera eye, RenderOrigin origin) {
         int n = boxes.size();
         boolean paper = s.method() == Method.PAPER;
         for (int i = 0; i < MAX_CASCADES; i++) {                    // lightViewProjection[4]
-            (i < n ? boxes.get(i).viewProjection() : new Matrix4f()).get(i * 64, blockData);
+            Matrix4f fromOrigin = i < n ? new Matrix4f(new Matrix4d(boxes.get(i).viewProjection())
+                    .translate(origin.x(), 0, origin.z())) : new Matrix4f();
+            fromOrigin.get(i * 64, blockData);
         }
+        Vector3fc viewer = eye.positionFrom(origin.x(), origin.z());
         int o = MAX_CASCADES * 64;
         for (int i = 0; i < MAX_CASCADES; i++) {
             blockData.putFloat(o + 4 * i, i < n ? boxes.get(i).texelSize() : 0);          // cascadeTexel

@@ -90,6 +90,8 @@ final class TerrainShading {
     private final int unitFar;
     /** The far field's material uniforms, once {@link #farField} made its program. */
     private TerrainMaterials.Uniforms farFieldUniforms;
+    private double originX;   // the render origin of the pass, metres (origin.RenderOrigin)
+    private double originZ;
 
     /**
      * The shading of a tile, its far ground baked over {@code base} ({@link #bake} bakes it).
@@ -189,9 +191,15 @@ final class TerrainShading {
         return p;
     }
 
+    /** The render origin the next draws measure positions from, metres. */
+    void origin(double x, double z) {
+        originX = x;
+        originZ = z;
+    }
+
     /** Uses the far field's program with the materials of the moment ({@link #draw} refreshed them). */
     void bindFarField(MaterialSettings settings) {
-        materials.bind(farFieldUniforms, settings, unitMaterials);
+        materials.bind(farFieldUniforms, settings, unitMaterials, originX, originZ);
     }
 
     /** A near program's maps: the slopes, or the gradients, the snow map and the far material it fades into. */
@@ -242,17 +250,17 @@ final class TerrainShading {
             case SHADED -> {
                 Lit lit = sunShadowed ? shadowed : unshadowed;
                 Near near = lit.near().get(settings.tiling());
-                materials.bind(near.uniforms(), settings, unitMaterials);
+                materials.bind(near.uniforms(), settings, unitMaterials, originX, originZ);
                 double farDistance = settings.farTexels() * far.texelMetres();
                 int nearCount = order.nearerThan(farDistance);
                 near.farBand().set((float) (farDistance * (1 - FarMaterial.BLEND_FRACTION)), (float) farDistance);
                 renderer.draw(patches, order.order(), 0, nearCount, copyOffsets, stats);
-                materials.bind(lit.far().get(settings.tiling()), settings, unitMaterials);
+                materials.bind(lit.far().get(settings.tiling()), settings, unitMaterials, originX, originZ);
                 renderer.draw(patches, order.order(), nearCount, all, copyOffsets, stats);
                 yield nearCount;
             }
             case LEVELS -> {
-                materials.bind(levelsUniforms, settings, unitMaterials);
+                materials.bind(levelsUniforms, settings, unitMaterials, originX, originZ);
                 renderer.draw(patches, order.order(), 0, all, copyOffsets, stats);
                 yield all;
             }

@@ -21,6 +21,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.environment.SnowLine;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
@@ -139,6 +140,8 @@ public final class TerrainSystem implements EngineSystem {
         layout = ground.layout();
         shading = ground.shading();
         entity = context.world().spawn();
+        // the render origin steps by a tile (a root's side): a whole number of samples of every level
+        context.world().setResource(new RenderOrigin(tree.extent()));
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets, ground.cullHeights()));
         depthProgram = context.own("depth", context.shaders().program(layout.defines(), "terrain/terrain.vert",
@@ -231,7 +234,10 @@ public final class TerrainSystem implements EngineSystem {
         // 2. nearest first, so near ground hides far ground before it is shaded
         order.sort(patches, tree.bounds(), ground.residency(), copyOffsets, eye);
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
-        // materials near and far and the view options
+        // materials near and far and the view options; the copies placed from the render origin
+        RenderOrigin origin = world.resource(RenderOrigin.class);
+        float[] drawnOffsets = origin.relativePairs(copyOffsets);
+        shading.origin(origin.x(), origin.z());
         ground.bind(UNIT_HEIGHTS, UNIT_GRADIENTS, UNIT_SNOW);
         long triangles = context.stats().triangles();
         glEnable(GL_DEPTH_TEST);
@@ -239,12 +245,12 @@ public final class TerrainSystem implements EngineSystem {
         glEnable(GL_CULL_FACE);
         if (pass == Pass.SHADOW) {
             depthProgram.use();
-            renderer.draw(patches, order.order(), 0, order.size(), copyOffsets, context.stats());
+            renderer.draw(patches, order.order(), 0, order.size(), drawnOffsets, context.stats());
         } else {
             if (debug.wireframe()) {
                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             }
-            int near = shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class),
+            int near = shading.draw(patches, order, drawnOffsets, settings.get(MaterialSettings.class),
                     debug.colouring(), context.sunShadowed(), renderer, context.stats());
             counters.add(prefix + "near", near);
             if (farField != null && pass == Pass.MAIN
@@ -252,7 +258,8 @@ public final class TerrainSystem implements EngineSystem {
                 // 4. beyond the patches, the far field to the horizon
                 shading.bindFarField(settings.get(MaterialSettings.class));
                 double extent = tree.extent();
-                farField.draw(context.camera().position(), copyCentreX * extent, copyCentreZ * extent,
+                farField.draw(context.camera().positionFrom(origin.x(), origin.z()),
+                        copyCentreX * extent - origin.x(), copyCentreZ * extent - origin.z(),
                         (copyRadius + 0.5) * extent, ground.heights().lowest(), ground.heights().highest(),
                         context.stats());
             }

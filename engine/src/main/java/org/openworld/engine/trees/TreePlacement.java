@@ -56,8 +56,20 @@ final class TreePlacement {
      * @param tileFirst   the first tree of each tile
      * @param tileCount   the trees of each tile (every tile here has at least one)
      * @param bounds      the root box (node 0) and one box per tile (node t + 1)
+     * @param x           where the records' x and z are measured from: the disc's centre, metres
+     * @param z           its z
      */
-    record Layout(float[] records, int[] tileFirst, int[] tileCount, BoundsTree bounds) {
+    record Layout(float[] records, int[] tileFirst, int[] tileCount, BoundsTree bounds, double x, double z) {
+
+        /** The records with the feet in world coordinates (tests and tools near the origin: floats). */
+        float[] worldRecords() {
+            float[] world = records.clone();
+            for (int o = 0; o < world.length; o += FLOATS) {
+                world[o] = (float) (records[o] + x);
+                world[o + 2] = (float) (records[o + 2] + z);
+            }
+            return world;
+        }
 
         int count() {
             return records.length / FLOATS;
@@ -69,7 +81,8 @@ final class TreePlacement {
     }
 
     /**
-     * The trees within {@code radius} of (x, z).
+     * The trees within {@code radius} of (x, z), their feet's x and z in the records from (x, z) itself (the bounds
+     * are the world's): a float then keeps the feet's centimetres however far out they stand.
      *
      * @param seed the world's seed ({@code engine.seed})
      */
@@ -119,9 +132,9 @@ final class TreePlacement {
                             records = Arrays.copyOf(records, 2 * records.length);
                         }
                         int o = trees * FLOATS;
-                        records[o] = (float) px;
+                        records[o] = (float) (px - x);
                         records[o + 1] = (float) ground;
-                        records[o + 2] = (float) pz;
+                        records[o + 2] = (float) (pz - z);
                         records[o + 3] = (float) height;
                         records[o + 4] = (float) (2 * Math.PI * unit(h, 4));
                         records[o + 5] = (float) unit(h, 5);
@@ -138,7 +151,7 @@ final class TreePlacement {
             }
         }
         return new Layout(Arrays.copyOf(records, trees * FLOATS), Arrays.copyOf(first, tiles),
-                Arrays.copyOf(count, tiles), bounds(boxes, tiles));
+                Arrays.copyOf(count, tiles), bounds(boxes, tiles), x, z);
     }
 
     /** The ground's gradient (rise over run) at (x, z), by central differences. */

@@ -27,6 +27,7 @@ import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -59,6 +60,8 @@ public final class TreeSystem implements EngineSystem {
     private ShaderProgram depthProgram;
     private Uniform.Vec2 fade;
     private Uniform.Vec2 depthFade;
+    private Uniform.Vec2 placed;
+    private Uniform.Vec2 depthPlaced;
     private Mesh tree;
     private GpuBuffer records;
     private int entity;
@@ -95,8 +98,10 @@ public final class TreeSystem implements EngineSystem {
     public void init(EngineContext context) {
         program = context.own("program", context.shaders().program("trees/tree.vert", "trees/tree.frag"));
         fade = program.vec2("uFade");
+        placed = program.vec2("uPlaced");
         depthProgram = context.own("depth", context.shaders().program("trees/tree.vert", "trees/depth.frag"));
         depthFade = depthProgram.vec2("uFade");
+        depthPlaced = depthProgram.vec2("uPlaced");
         TreeShape.Geometry shape = TreeShape.coneStack();
         tree = context.own("tree", new Mesh(context.gl(), shape.vertices(), shape.triangles(),
                 new Mesh.Attribute(POSITION, 3), new Mesh.Attribute(NORMAL, 3), new Mesh.Attribute(PART, 1)));
@@ -153,12 +158,18 @@ public final class TreeSystem implements EngineSystem {
         // 1. the program: depth alone for the sun's maps, lit otherwise; both shrink the trees by the VIEWER's
         //    distance (viewerPos), so a tree leaves the shadow maps and the reflection where it leaves the picture
         float end = (float) s.viewDistance();
+        //    (the feet from the placement's centre, placed from the render origin in double)
+        RenderOrigin origin = world.resource(RenderOrigin.class);
+        float placedX = origin.relativeX(placedFrom.x());
+        float placedZ = origin.relativeZ(placedFrom.z());
         if (pass == Pass.SHADOW) {
             depthProgram.use();
             depthFade.set(FADE_START * end, end);
+            depthPlaced.set(placedX, placedZ);
         } else {
             program.use();
             fade.set(FADE_START * end, end);
+            placed.set(placedX, placedZ);
         }
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
@@ -189,9 +200,9 @@ public final class TreeSystem implements EngineSystem {
         counters.add("trees." + pass.label() + ".drawn", drawn);
     }
 
-    /** The trees placed now (tests and tools): {@link TreePlacement#FLOATS} floats per tree. */
+    /** The trees placed now (tests and tools): {@link TreePlacement#FLOATS} floats per tree, feet in world x, z. */
     float[] placed() {
-        return layout == null ? new float[0] : layout.records();
+        return layout == null ? new float[0] : layout.worldRecords();
     }
 
     /** How often the trees were placed. */

@@ -1,8 +1,10 @@
 package org.openworld.engine.water;
 
+import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Matrix4fc;
-import org.joml.Vector3f;
+import org.joml.Vector3d;
+import org.joml.Vector4d;
 import org.joml.Vector4f;
 import org.joml.Vector4fc;
 import org.openworld.engine.core.ViewCamera;
@@ -64,14 +66,18 @@ public final class MirrorCamera {
      */
     static ViewCamera of(ViewCamera viewer, float level, boolean clip) {
         Matrix4f mirror = reflection(level);
-        Matrix4f view = new Matrix4f(viewer.view()).mul(mirror);
-        Vector3f eye = mirror.transformPosition(new Vector3f(viewer.position()));
+        Matrix4d exactView = new Matrix4d(viewer.exactView()).mul(new Matrix4d(mirror));
+        Matrix4f view = new Matrix4f(exactView);
+        Vector3d eye = new Matrix4d(mirror).transformPosition(new Vector3d(viewer.exactPosition()));
         Matrix4f projection = new Matrix4f(viewer.projection());
         if (clip) {
             // The plane y = level, kept side up, in the mirrored camera's view space: planes map by V^-T.
-            Vector4f plane = new Matrix4f(view).invert().transpose().transform(new Vector4f(0, 1, 0, -level));
+            // (in double: the view's translation is the eye's distance from the world's origin, thousands of km)
+            Vector4d exactPlane = new Matrix4d(exactView).invert().transpose().transform(new Vector4d(0, 1, 0, -level));
+            Vector4f plane = new Vector4f((float) exactPlane.x, (float) exactPlane.y, (float) exactPlane.z,
+                    (float) exactPlane.w);
             projection = obliqueNearPlane(projection, plane);
         }
-        return new ViewCamera(view, projection, eye, viewer.near(), viewer.far());
+        return new ViewCamera(exactView, projection, eye, viewer.near(), viewer.far());
     }
 }

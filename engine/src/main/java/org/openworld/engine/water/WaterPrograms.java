@@ -4,6 +4,7 @@ import java.util.List;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.origin.RenderOrigin;
 
 /**
  * The water's three programs over one vertex shader (water.vert) and their uniforms: the Fresnel method above the
@@ -21,8 +22,25 @@ final class WaterPrograms {
     static final int UNIT_FRESNEL = 3;
     static final int UNIT_RIPPLES = 4;
 
-    /** What the Fresnel programs are told of the ripples, see water/optics.glsl's uRipple. */
-    record Ripple(float inverseTile, int frames, float cycles, float slopeScale) {
+    /**
+     * What the Fresnel programs are told of the ripples, see water/optics.glsl's uRipple and uRippleOrigin (the render
+     * origin's place on the two layers' tiles, {@link #originTiles}).
+     */
+    record Ripple(float inverseTile, int frames, float cycles, float slopeScale, float[] origin) {
+
+        /** optics.glsl's SMALL_SCALE: the second layer's tile, a share of the first's. */
+        static final double SMALL_SCALE = 0.37;
+
+        /**
+         * The render origin (x, 0, z) in tiles of the two layers, reduced to [0, 1) in double: the tiles repeat, so
+         * this is all of it that the shader needs.
+         */
+        static float[] originTiles(double x, double z, double tile) {
+            double small = tile * SMALL_SCALE;
+            return new float[] {(float) (RenderOrigin.reduce(x, tile) / tile),
+                (float) (RenderOrigin.reduce(z, tile) / tile), (float) (RenderOrigin.reduce(x, small) / small),
+                (float) (RenderOrigin.reduce(z, small) / small)};
+        }
     }
 
     private final Above above;
@@ -54,7 +72,8 @@ final class WaterPrograms {
     }
 
     /** The uniforms of water/optics.glsl, which both Fresnel programs include. */
-    private record Optics(Plane plane, Uniform.Float level, Uniform.Vec3 extinction, Uniform.Vec4 ripple) {
+    private record Optics(Plane plane, Uniform.Float level, Uniform.Vec3 extinction, Uniform.Vec4 ripple,
+                          Uniform.Vec4 rippleOrigin) {
 
         static Optics of(ShaderProgram program) {
             program.sampler("refraction", UNIT_REFRACTION);
@@ -62,7 +81,7 @@ final class WaterPrograms {
             program.sampler("fresnelTable", UNIT_FRESNEL);
             program.sampler("ripples", UNIT_RIPPLES);
             return new Optics(Plane.of(program), program.float1("uLevel"), program.vec3("uExtinction"),
-                    program.vec4("uRipple"));
+                    program.vec4("uRipple"), program.vec4("uRippleOrigin"));
         }
 
         void set(PlaneOnScreen plane, float waterLevel, WaterOptics optics, Ripple r) {
@@ -70,6 +89,7 @@ final class WaterPrograms {
             level.set(waterLevel);
             extinction.set(optics.extinction());
             ripple.set(r.inverseTile(), r.frames(), r.cycles(), r.slopeScale());
+            rippleOrigin.set(r.origin()[0], r.origin()[1], r.origin()[2], r.origin()[3]);
         }
     }
 

@@ -7,6 +7,7 @@ import static org.lwjgl.opengl.GL32C.GL_DEPTH_CLAMP;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import org.joml.Matrix4f;
 import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
@@ -31,6 +32,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureArray;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.water.WaterSettings.Method;
@@ -200,7 +202,11 @@ public final class WaterSystem implements EngineSystem, PassOwner {
     }
 
     private static PlaneOnScreen onScreen(ViewCamera camera, WaterSettings s) {
-        return PlaneOnScreen.of(camera.viewProjection(), camera.position().y(), (float) s.level());
+        // the plane y = level is the same seen from anywhere on x and z: measured from the eye's own x and z, the
+        // float inverse keeps its precision however far out the eye is
+        Matrix4f fromEye = new Matrix4f(camera.projection())
+                .mul(camera.viewFrom(camera.exactPosition().x(), camera.exactPosition().z()));
+        return PlaneOnScreen.of(fromEye, camera.position().y(), (float) s.level());
     }
 
     @Override
@@ -245,8 +251,10 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     private void drawFresnel(WaterSettings s, boolean underwater, boolean reflected, RenderContext context) {
         WaterOptics optics = WaterOptics.of(s.clarity());
+        RenderOrigin origin = context.world().resource(RenderOrigin.class);
         WaterPrograms.Ripple ripple = new WaterPrograms.Ripple((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
-                (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale);
+                (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale,
+                WaterPrograms.Ripple.originTiles(origin.x(), origin.z(), RIPPLE_TILE));
         behind.color().bind(WaterPrograms.UNIT_REFRACTION);
         behind.depth().bind(WaterPrograms.UNIT_DEPTH);
         fresnelTable.bind(WaterPrograms.UNIT_FRESNEL);

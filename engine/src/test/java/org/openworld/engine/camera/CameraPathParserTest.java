@@ -35,9 +35,9 @@ class CameraPathParserTest {
 
     @Test
     void refusesAPositionBeyondTheRenderersReach() throws CameraPathFormatException {
-        assertError("0 0 0 0 0 0\n1 0 100 -2e6 0 0\n", "2:9: expected z within -1000000 .. 1000000 m (1000 km, the "
-                + "renderer's reach), found '-2e6'");
-        assertError("0 1e9 400 1e9 45 -10\n1 0 0 0 0 0\n", "1:3: expected x within -1000000 .. 1000000 m (1000 km, "
+        assertError("0 0 0 0 0 0\n1 0 100 -2e7 0 0\n", "2:9: expected z within -16777216 .. 16777216 m (2^24 m, the "
+                + "renderer's reach), found '-2e7'");
+        assertError("0 1e9 400 1e9 45 -10\n1 0 0 0 0 0\n", "1:3: expected x within -16777216 .. 16777216 m (2^24 m, "
                 + "the renderer's reach), found '1e9'");
         double edge = CameraPose.MAX_COORDINATE_M;
         assertEquals(edge, CameraPathParser.parse(SOURCE, "0 " + edge + " 0 0 0 0\n1 0 0 0 0 0\n").keys().get(0).x(),

@@ -8,6 +8,7 @@ import org.openworld.engine.gl.Labelled;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.TextureArray;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.origin.MaterialOrigin;
 import org.openworld.engine.terrain.material.TerrainTextures.Material;
 
 /**
@@ -68,6 +69,11 @@ public final class TerrainMaterials implements Labelled {
      * settings' uniforms. Cheap: nothing is allocated, so settings may change every frame.
      */
     public void bind(Uniforms u, MaterialSettings settings, int firstUnit) {
+        bind(u, settings, firstUnit, 0, 0);
+    }
+
+    /** The same with the render origin at (originX, 0, originZ), metres: its place on the lattices and tiles. */
+    public void bind(Uniforms u, MaterialSettings settings, int firstUnit, double originX, double originZ) {
         u.program.use();
         if (u.layers) {
             albedo.bind(firstUnit);
@@ -75,6 +81,8 @@ public final class TerrainMaterials implements Labelled {
             u.albedo.set(firstUnit);
             u.detail.set(firstUnit + 1);
             u.detailScale.set((float) (settings.detailScale()));
+            u.macroOrigin.setArray(MaterialOrigin.macro(originX, originZ));
+            u.tileOrigin.setArray(MaterialOrigin.tiles(originX, originZ, settings.detailScale()));
             u.snowMode.set(switch (settings.snowMode()) { // material.glsl's MAT_SNOW_MAP and MAT_ALTITUDE_BANDS
                 case SNOW_MAP -> 0;
                 case ALTITUDE_BANDS -> 1;
@@ -113,6 +121,8 @@ public final class TerrainMaterials implements Labelled {
         private final Uniform.Int albedo;
         private final Uniform.Int detail;
         private final Uniform.Float detailScale;
+        private final Uniform.Vec4 macroOrigin;
+        private final Uniform.Vec4 tileOrigin;
         private final Uniform.Int snowMode;
         private final Uniform.Vec2 snowBand;
         private final Uniform.Int normalMap;
@@ -127,6 +137,8 @@ public final class TerrainMaterials implements Labelled {
             albedo = layers ? program.int1("uMatAlbedo") : null;
             detail = layers ? program.int1("uMatDetail") : null;
             detailScale = layers ? program.float1("uMatDetailScale") : null;
+            macroOrigin = layers ? program.vec4("uMatMacroOrigin") : null;
+            tileOrigin = layers ? program.vec4("uMatTileOrigin") : null;
             snowMode = layers ? program.int1("uMatSnowMode") : null;
             snowBand = layers ? program.vec2("uMatSnowBand") : null;
             normalMap = light ? program.int1("uMatNormalMap") : null;

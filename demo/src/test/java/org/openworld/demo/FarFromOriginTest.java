@@ -1,0 +1,143 @@
+package org.openworld.demo;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.colour.ImageComparison;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.terrain.TerrainSettings;
+
+/**
+ * The world far from its origin is the world near it: positions reach the GPU from the render origin
+ * (org.openworld.engine.origin), so neither the relief nor its materials turn to blocks, specks or holes thousands of
+ * kilometres out. The whole demo scene (sky, terrain, trees, shadows) through {@code openworld shot}, small.
+ */
+@Tag("gl")
+class FarFromOriginTest {
+
+    /** Small pictures: a shot is a few seconds on llvmpipe. */
+    static final String SIZE = "240x135";
+    /** The default tile's period, metres: it repeats every size × spacing (4096 m). */
+    static final double PERIOD = TerrainSettings.DEFAULTS.size() * TerrainSettings.DEFAULTS.spacing();
+    /** Periods out: 10 000 km, where a float's neighbours are 1 m apart. */
+    static final long PERIODS = 2442;
+    /**
+     * Mean ΔE00 between the tile at home and the tile 2442 periods out. The relief, its maps and its detail textures
+     * repeat with the tile, but the materials' macro tint (120 m value noise) and their coarse tiles (17 m, turned)
+     * do not, so even exact arithmetic leaves the two pictures a little apart: one period out they measure 0.025
+     * (480 × 270, 1 % of the pixels above ΔE00 1, on the tints' edges), 2442 periods out 0.036 here. A float's
+     * error adds to it: the code before the render origin measured 1.55 in this very test (35 % of the pixels
+     * above 1, the ground's detail in blocks). 0.1 is three times the tint's share, fifteen times below the failure.
+     */
+    static final double MOST_MEAN_DELTA_E = 0.1;
+    /**
+     * The share of the far unbounded world's pixels whose colour the picture at the origin lacks (no pixel of it
+     * within one 16-level bin on each channel). The unbounded world never repeats, so the far picture is another
+     * relief, but one of the same ground, rock, snow, water and sky; the float garbage it showed before was a colour
+     * of none of them (cyan, green and yellow specks in the valleys): 0.42 % of the pixels at 1000 km in this very
+     * test on the code before the render origin, none with it, at 1000 km and at 10 000 km. 0.1 % (32 pixels)
+     * leaves room for a rare shade of a relief the origin's picture lacks.
+     */
+    static final double MOST_FOREIGN = 0.001;
+    /** Channel levels per colour bin. */
+    static final int BIN = 16;
+
+    @TempDir
+    Path dir;
+
+    @RegisterExtension
+    final ConsoleCapture console = new ConsoleCapture();
+
+    @Test
+    void theTileTwoThousandFourHundredFortyTwoPeriodsOutIsTheTileAtHome() throws IOException {
+        Image home = tile(1000);
+        Image far = tile(1000 + PERIODS * PERIOD);
+        ImageComparison comparison = ImageComparison.of(home, far);
+        System.out.println("tile " + PERIODS + " periods out: mean dE00 " + comparison.meanDeltaE() + ", "
+                + comparison.pixelsAbove(1) + " of " + comparison.pixels() + " pixels above 1");
+        assertTrue(comparison.meanDeltaE() < MOST_MEAN_DELTA_E, "the tile " + PERIODS + " periods ("
+                + PERIODS * PERIOD / 1000 + " km) out against home: mean dE00 " + comparison.meanDeltaE() + ", "
+                + comparison.pixelsAbove(1) + " pixels above 1");
+    }
+
+    @Test
+    void theUnboundedWorldFarOutShowsNoColourTheOriginLacks() throws IOException {
+        Image home = unbounded(0);
+        boolean[][][] palette = palette(home);
+        for (double out : new double[] {1e6, 1e7}) {
+            Image far = unbounded(out);
+            double foreign = foreignShare(far, palette);
+            System.out.println("unbounded world at " + out / 1000 + " km: " + foreign + " of the pixels foreign");
+            assertTrue(foreign < MOST_FOREIGN, "the unbounded world at " + out / 1000 + " km has " + foreign
+                    + " of its pixels in colours the picture at the origin lacks (garbage)");
+        }
+    }
+
+    private Image tile(double x) throws IOException {
+        return shot("tile-" + (long) x, "--time", "12:00", "--camera", x + ",600,1000,45,-60",
+                "--set", "terrain.world=tile", "--set", "system.water=off");
+    }
+
+    private Image unbounded(double at) throws IOException {
+        return shot("unbounded-" + (long) at, "--time", "15:00", "--camera", at + ",1500," + at + ",300,-6");
+    }
+
+    private Image shot(String name, String... options) throws IOException {
+        Path out = dir.resolve(name + ".png");
+        String[] args = new String[options.length + 5];
+        args[0] = "shot";
+        args[1] = "--out";
+        args[2] = out.toString();
+        args[3] = "--size";
+        args[4] = SIZE;
+        System.arraycopy(options, 0, args, 5, options.length);
+        assertEquals(0, Main.execute(args), console.stderr());
+        Path kept = Path.of("target/test-images/far-" + name + ".png");
+        Files.createDirectories(kept.getParent());
+        Files.copy(out, kept, StandardCopyOption.REPLACE_EXISTING);
+        return Image.read(out);
+    }
+
+    /** The colour bins the picture fills. */
+    private static boolean[][][] palette(Image image) {
+        int n = 256 / BIN;
+        boolean[][][] filled = new boolean[n][n][n];
+        for (int y = 0; y < image.height(); y++) {
+            for (int x = 0; x < image.width(); x++) {
+                filled[image.channel(x, y, 0) / BIN][image.channel(x, y, 1) / BIN][image.channel(x, y, 2) / BIN] = true;
+            }
+        }
+        return filled;
+    }
+
+    /** The share of the pixels whose bin and its neighbours (one bin each way on each channel) are all empty. */
+    private static double foreignShare(Image image, boolean[][][] palette) {
+        int n = palette.length;
+        int foreign = 0;
+        for (int y = 0; y < image.height(); y++) {
+            for (int x = 0; x < image.width(); x++) {
+                int r = image.channel(x, y, 0) / BIN;
+                int g = image.channel(x, y, 1) / BIN;
+                int b = image.channel(x, y, 2) / BIN;
+                boolean known = false;
+                for (int i = Math.max(r - 1, 0); i <= Math.min(r + 1, n - 1) && !known; i++) {
+                    for (int j = Math.max(g - 1, 0); j <= Math.min(g + 1, n - 1) && !known; j++) {
+                        for (int k = Math.max(b - 1, 0); k <= Math.min(b + 1, n - 1) && !known; k++) {
+                            known = palette[i][j][k];
+                        }
+                    }
+                }
+                foreign += known ? 0 : 1;
+            }
+        }
+        return (double) foreign / (image.width() * image.height());
+    }
+}
