@@ -13,7 +13,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.gl.Image;
-import org.openworld.engine.terrain.TerrainSettings;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 
 /**
  * The world far from its origin is the world near it: positions reach the GPU from the render origin
