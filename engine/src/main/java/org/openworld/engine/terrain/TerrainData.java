@@ -1,6 +1,7 @@
 package org.openworld.engine.terrain;
 
 import java.nio.file.Path;
+import org.openworld.engine.elevation.ElevationImport;
 
 /**
  * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow
@@ -26,11 +27,14 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
      * @throws HeightImportException if the import file cannot be used
      */
     public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
+        Path file = Path.of(s.importFile());
+        boolean real = s.imports() && ElevationImport.handles(file);
         HeightMap base = s.imports()
-                ? times.time(IMPORT, () -> HeightImport.read(Path.of(s.importFile()), s))
+                ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed).map() : HeightImport.read(file, s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
-        SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
+        TerrainSettings snowScale = real && s.importScale() ? ElevationImport.rangeOf(s, base) : s;
+        SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, snowScale, seed));
         SkyVisibility sky = times.time(SKY_VISIBILITY, () -> SkyVisibility.of(pyramid));
         return new TerrainData(pyramid, snow, sky);
     }
