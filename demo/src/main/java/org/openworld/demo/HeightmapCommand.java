@@ -126,7 +126,7 @@ final class HeightmapCommand implements Callable<Integer> {
 
         Path importFile = Path.of(terrain.importFile());
         System.out.println(terrain.imports() && ElevationImport.handles(importFile)
-                ? "heightmap: importing " + importFile + ": " + ElevationImport.grid(importFile, terrain).summary()
+                ? "heightmap: importing " + importFile + ": " + ElevationImport.describe(importFile, terrain, worldSeed)
                 : terrain.imports()
                 ? String.format(Locale.ROOT, "heightmap: importing %s, %s m between samples", terrain.importFile(),
                         terrain.spacing())

@@ -41,6 +41,12 @@ public final class ElevationImport {
         return TileEmbedding.embed(file, grid(file, s), s, seed, availableHeap());
     }
 
+    /** One line saying what {@code file} holds and the tile it becomes, without making the tile. */
+    public static String describe(Path file, TerrainSettings s, int seed) {
+        ElevationGrid grid = grid(file, s);
+        return TileEmbedding.describe(grid, TileEmbedding.plan(file, grid, s, seed, availableHeap()), s);
+    }
+
     /** The model as its file holds it, no-data filled, before it becomes the tile. */
     public static ElevationGrid grid(Path file, TerrainSettings s) {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);

@@ -38,8 +38,15 @@ final class TileEmbedding {
     private TileEmbedding() {
     }
 
-    /** The tile of {@code grid} (no-data already filled) and one line describing it. */
-    static ElevationImport.Result embed(Path file, ElevationGrid grid, TerrainSettings s, int seed, long heapBytes) {
+    /**
+     * What the tile of a model will be: its side n, the octaves added, the model's spacing D (coarse) and the tile's
+     * d (fine), and the detail's bands (null without them).
+     */
+    record Plan(int n, int octaves, double coarse, double fine, boolean trueScale, DetailBands detail) {
+    }
+
+    /** Sizes the tile of {@code grid} and measures its detail; refuses a model too large for the tile or the heap. */
+    static Plan plan(Path file, ElevationGrid grid, TerrainSettings s, int seed, long heapBytes) {
         boolean trueScale = grid.scaled() && s.importScale();
         double coarse = Math.min(grid.spacingX(), grid.spacingZ());
         int w = (int) Math.floor(grid.extentX() / coarse + 1e-9) + 1;
@@ -61,6 +68,26 @@ final class TileEmbedding {
         int square = Integer.highestOneBit(Math.min(w, h));
         DetailBands detail = octaves > 0 && square >= 32
                 ? DetailBands.measure(window(grid, square, coarse), square, coarse, fine, seed) : null;
+        return new Plan(n, octaves, coarse, fine, trueScale, detail);
+    }
+
+    /** One line: the model, then the tile it becomes. */
+    static String describe(ElevationGrid grid, Plan p, TerrainSettings s) {
+        return String.format(Locale.ROOT, "%s; tile %d² samples %s m apart (%.2f km)%s%s", grid.summary(), p.n(),
+                fmt(p.fine()), p.n() * p.fine() / 1000, p.trueScale() ? ", true scale, sea level at "
+                        + fmt(s.seaLevel()) + " m" : ", normalised to terrain.relief",
+                p.detail() == null ? ", no synthesised detail" : String.format(Locale.ROOT, ", detail: %d octaves "
+                        + "below %s m continuing the measured beta %.2f (%.2f m rms)", p.octaves(),
+                        fmt(2 * p.coarse()), p.detail().beta(), p.detail().sigma()));
+    }
+
+    /** The tile of {@code grid} (no-data already filled) and one line describing it. */
+    static ElevationImport.Result embed(Path file, ElevationGrid grid, TerrainSettings s, int seed, long heapBytes) {
+        Plan p = plan(file, grid, s, seed, heapBytes);
+        int n = p.n();
+        double fine = p.fine();
+        boolean trueScale = p.trueScale();
+        DetailBands detail = p.detail();
         double spacing = grid.scaled() ? fine : s.spacing();
         float[] heights = new float[n * n];
         double sea = trueScale ? s.seaLevel() : 0;
@@ -81,14 +108,7 @@ final class TileEmbedding {
         if (!trueScale) {
             SpectralSynthesis.normalise(heights, n, s.relief(), s.seaFraction());
         }
-        HeightMap map = new HeightMap(n, spacing, heights, false);
-        String line = String.format(Locale.ROOT, "%s; tile %d² samples %s m apart (%.2f km)%s%s", grid.summary(), n,
-                fmt(spacing), map.extent() / 1000, trueScale ? ", true scale, sea level at " + fmt(sea) + " m"
-                        : ", normalised to terrain.relief",
-                detail == null ? ", no synthesised detail" : String.format(Locale.ROOT, ", detail: %d octaves "
-                        + "below %s m continuing the measured beta %.2f (%.2f m rms)", octaves, fmt(2 * coarse),
-                        detail.beta(), detail.sigma()));
-        return new ElevationImport.Result(map, line);
+        return new ElevationImport.Result(new HeightMap(n, spacing, heights, false), describe(grid, p, s));
     }
 
     /** The mean height of the model's outermost samples, metres. */

@@ -2,6 +2,7 @@ package org.openworld.engine.terrain;
 
 import static org.lwjgl.opengl.GL11C.*;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Consumer;
 import org.joml.Vector3f;
@@ -21,6 +22,7 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.settings.Settings;
@@ -169,7 +171,9 @@ public final class TerrainSystem implements EngineSystem {
 
     /** The tile: its data off the GPU, its quadtree, its maps, then the programs and materials (which bake on them). */
     private void initTile(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
+        Path file = Path.of(terrain.importFile());
         progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
+                + (ElevationImport.handles(file) ? ": " + ElevationImport.describe(file, terrain, seed) : "")
                 : "generating " + terrain.size() + "² samples, seed " + seed));
         data = TerrainData.create(terrain, seed, times);
         HeightMap base = data.pyramid().base();
