@@ -110,8 +110,9 @@ public record ElevationGrid(int width, int height, double spacingX, double spaci
     /** One line: samples, spacing, extent, range, and where on the globe for a geographic model. */
     public String summary() {
         double[] r = range();
-        return String.format(Locale.ROOT, "%d×%d samples, %.2f × %.2f m apart, %.2f × %.2f km, heights %.1f .. %.1f m%s",
-                width, height, spacingX, spacingZ, extentX() / 1000, extentZ() / 1000, r[0], r[1],
+        return String.format(Locale.ROOT,
+                "%d×%d samples, %.2f × %.2f m apart, %.2f × %.2f km, heights %.1f .. %.1f m%s", width, height, spacingX,
+                spacingZ, extentX() / 1000, extentZ() / 1000, r[0], r[1],
                 Double.isNaN(latitude) ? "" : String.format(Locale.ROOT, " (geographic, spacing at %.3f° N)",
                         latitude));
     }

@@ -19,10 +19,6 @@ public final class ElevationImport {
     /** Bytes a model's sample takes while read: the decoded raster and the float grid made of it. */
     static final int BYTES_PER_MODEL_SAMPLE = 8;
 
-    /** The tile and a line saying what the model is and what became of it. */
-    public record Result(HeightMap map, String summary) {
-    }
-
     private ElevationImport() {
     }
 
@@ -33,11 +29,11 @@ public final class ElevationImport {
     }
 
     /**
-     * Reads, fills and embeds the model {@code file}.
+     * Reads, fills and embeds the model {@code file}: the tile the terrain draws.
      *
      * @throws HeightImportException naming the file and what is wrong with it
      */
-    public static Result read(Path file, TerrainSettings s, int seed) {
+    public static HeightMap read(Path file, TerrainSettings s, int seed) {
         return TileEmbedding.embed(file, grid(file, s), s, seed, availableHeap());
     }
 

@@ -26,7 +26,7 @@ import org.openworld.engine.terrain.HeightImportException;
  * </ul>
  * A geographic model's degrees become metres at the centre's latitude φ on the WGS 84 ellipsoid: a degree of
  * latitude is {@code π/180 · a(1 − e²)/(1 − e² sin²φ)^1.5}, a degree of longitude {@code π/180 · a cos φ /
- * (1 − e² sin²φ)^0.5} (111.0 km and 89.4 km at 36.6° N). The map is drawn flat with that one spacing: a map 1° tall
+ * (1 − e² sin²φ)^0.5} (111.0 km and 89.5 km at 36.6° N). The map is drawn flat with that one spacing: a map 1° tall
  * is off by the change of cos φ across it, 1.3 % at 36° N between its centre and its edge.
  */
 final class GeoTiff {

@@ -81,8 +81,8 @@ final class TileEmbedding {
                         fmt(2 * p.coarse()), p.detail().beta(), p.detail().sigma()));
     }
 
-    /** The tile of {@code grid} (no-data already filled) and one line describing it. */
-    static ElevationImport.Result embed(Path file, ElevationGrid grid, TerrainSettings s, int seed, long heapBytes) {
+    /** The tile of {@code grid} (no-data already filled). */
+    static HeightMap embed(Path file, ElevationGrid grid, TerrainSettings s, int seed, long heapBytes) {
         Plan p = plan(file, grid, s, seed, heapBytes);
         int n = p.n();
         double fine = p.fine();
@@ -108,7 +108,7 @@ final class TileEmbedding {
         if (!trueScale) {
             SpectralSynthesis.normalise(heights, n, s.relief(), s.seaFraction());
         }
-        return new ElevationImport.Result(new HeightMap(n, spacing, heights, false), describe(grid, p, s));
+        return new HeightMap(n, spacing, heights, false);
     }
 
     /** The mean height of the model's outermost samples, metres. */

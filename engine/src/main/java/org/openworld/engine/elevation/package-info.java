@@ -21,10 +21,10 @@
  * σ² = 2π E²/n⁴ · 10^c (f₂^(s+2) − f₁^(s+2))/(s+2) between the model's Nyquist frequency f₁ = 1/(2D) and
  * f₂ = 1/(2d). The large shapes stay the data's: the bands hold only wavelengths shorter than 2D.
  *
- * <p><b>Why TwelveMonkeys for TIFF.</b> Its TIFF reader (Maven Central, com.twelvemonkeys.imageio:imageio-tiff,
- * released several times a year) reads float32, float64, int16, uint16 and int32 samples, strips or tiles, the
- * compressions GDAL writes (Deflate, LZW, PackBits) and BigTIFF, and hands every tag, GeoTIFF's included, through
- * {@code TIFFImageMetadata.getTIFFField}; it is an ImageIO plugin, so nothing else in the engine changes. Apache
+ * <p><b>Why TwelveMonkeys for TIFF.</b> Its TIFF reader (Maven Central, com.twelvemonkeys.imageio:imageio-tiff
+ * 3.14.0, a maintained release line since 2009) reads float32, float64, int16, uint16 and int32 samples, strips or
+ * tiles, the compressions GDAL writes (Deflate, LZW, PackBits) and BigTIFF, and hands every tag, GeoTIFF's included,
+ * through {@code TIFFImageMetadata.getTIFFField}; it is an ImageIO plugin, so nothing else in the engine changes. Apache
  * Commons Imaging reads the same samples and tags, but has only had 1.0 alpha releases, with API changes between
  * them. The JDK's own TIFF plugin reads no BigTIFF. TwelveMonkeys' writer has no float32 samples; the tests write
  * those with the JDK's writer.

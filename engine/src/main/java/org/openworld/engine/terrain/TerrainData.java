@@ -30,7 +30,7 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
         Path file = Path.of(s.importFile());
         boolean real = s.imports() && ElevationImport.handles(file);
         HeightMap base = s.imports()
-                ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed).map() : HeightImport.read(file, s))
+                ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed) : HeightImport.read(file, s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         TerrainSettings snowScale = real && s.importScale() ? ElevationImport.rangeOf(s, base) : s;

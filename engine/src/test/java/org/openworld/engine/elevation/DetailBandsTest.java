@@ -36,7 +36,7 @@ class DetailBandsTest {
         }
         ElevationGrid model = new ElevationGrid(side, side, FINE * STEP, FINE * STEP, coarse, Double.NaN, true);
         HeightMap detailed = TileEmbedding.embed(Path.of("model"), model, ElevationImportTest.settings(
-                "terrain.size=" + FINE_SIDE, "terrain.spacing=" + FINE), 1, Long.MAX_VALUE).map();
+                "terrain.size=" + FINE_SIDE, "terrain.spacing=" + FINE), 1, Long.MAX_VALUE);
         assertEquals(FINE, detailed.spacing(), "16 m made 4 times finer, down to terrain.spacing");
 
         DetailBands bands = DetailBands.measure(centre(coarse, side, WINDOW), WINDOW, FINE * STEP, FINE, 1);

@@ -18,8 +18,8 @@ import org.openworld.engine.terrain.HeightMap;
 import org.openworld.engine.terrain.TerrainSettings;
 
 /**
- * Real elevation models of a non-square, non-power-of-two size (301 × 217) from GeoTIFF (float32, int16, uint16), 16-bit
- * PNG and raw float32 with sidecars: heights within 1 m of the file's, spacing from the tags, and one line for each
+ * Real elevation models of a non-square, non-power-of-two size (301 × 217) from GeoTIFF (float32, int16, uint16),
+ * 16-bit PNG and raw float32 with sidecars: heights within 1 m of the file's, spacing from the tags, and one line for each
  * kind of bad file.
  */
 class ElevationImportTest {
@@ -51,8 +51,8 @@ class ElevationImportTest {
         assertEquals(30, grid.spacingX(), 1e-12);
         assertEquals(30, grid.spacingZ(), 1e-12);
         assertMatches(grid, 0, 1);
-        // The tile: the model's samples fall on the tile's (same spacing, odd sides centred), so heightAt gives them back.
-        assertTileMatches(ElevationImport.read(file, plain, 1).map(), grid, 0);
+        // The tile: the model's samples fall on the tile's (same spacing, odd sides centred): heightAt gives them back
+        assertTileMatches(ElevationImport.read(file, plain, 1), grid, 0);
     }
 
     @Test
@@ -110,7 +110,7 @@ class ElevationImportTest {
         ElevationGrid grid = ElevationImport.grid(file, s);
         assertEquals(3.048, grid.spacingX(), 1e-12, "10 international feet");
         // heights are relief + 600 rounded, then 600 m of sea level taken off
-        assertTileMatches(ElevationImport.read(file, s, 1).map(), grid, 600);
+        assertTileMatches(ElevationImport.read(file, s, 1), grid, 600);
     }
 
     @Test
@@ -126,7 +126,7 @@ class ElevationImportTest {
         ElevationGrid grid = ElevationImport.grid(file, plain);
         assertEquals(25, grid.spacingX(), 1e-12);
         assertMatches(grid, 0, 0.05 + 1e-3); // a 0.1 m step rounds by at most half of it (float32's error below)
-        assertTileMatches(ElevationImport.read(file, plain, 1).map(), grid, 0);
+        assertTileMatches(ElevationImport.read(file, plain, 1), grid, 0);
     }
 
     @Test
@@ -138,7 +138,7 @@ class ElevationImportTest {
         assertEquals(40, grid.spacingZ(), 1e-12);
         assertMatches(grid, 0, 1e-3);
         // resampled at 20 m both ways: every model sample is on the tile's grid, rows at every second tile row
-        assertTileMatches(ElevationImport.read(file, plain, 1).map(), grid, 0);
+        assertTileMatches(ElevationImport.read(file, plain, 1), grid, 0);
     }
 
     @Test
@@ -148,7 +148,7 @@ class ElevationImportTest {
         assertOneLine(file, plain, "has no georeference");
         TerrainSettings normalised = settings("terrain.import-scale=false", "terrain.relief=1000",
                 "terrain.sea-fraction=0.2", "terrain.spacing=5");
-        HeightMap map = ElevationImport.read(file, normalised, 1).map();
+        HeightMap map = ElevationImport.read(file, normalised, 1);
         assertEquals(5, map.spacing());
         assertEquals(-200, map.min(), 1e-3);
         assertEquals(800, map.max(), 1e-3);
