@@ -17,8 +17,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param maxWavelength  low-frequency cut-off: longer wavelengths get amplitude 0, so one frequency ring does not
  *                       dominate and the tile holds several mountains instead of one
  * @param importFile     16-bit grayscale PNG or little-endian float32 {@code .raw/.r32/.f32} height map used instead
- *                       of synthesis (see {@link HeightImport}); empty generates one. The spectral settings are then
- *                       ignored
+ *                       of synthesis (see {@link HeightImport}), or a real elevation model (a GeoTIFF, or a PNG or
+ *                       raw file with a sidecar: {@link org.openworld.engine.elevation.ElevationImport}); empty
+ *                       generates one. The spectral settings are then ignored
  * @param snowBase       normalised height (0 lowest, 1 highest sample) where the snow probability starts to rise
  *                       from 0
  * @param snowFull       normalised height at which snow is certain; p(h) = clamp((h − base)/(full − base), 0, 1)
@@ -56,8 +57,7 @@ public record TerrainSettings(
                 unit = "m", min = 0.1, max = 1e6, atStart = true)
         double maxWavelength,
         @Setting(doc = "height map to load instead of generating one: GeoTIFF, or 16-bit PNG or float32 .raw",
-                atStart = true,
-                file = true)
+                atStart = true, file = true)
         String importFile,
         @Setting(doc = "normalised height where snow starts (probability 0)", min = 0, max = 1, atStart = true)
         double snowBase,
