@@ -63,20 +63,24 @@ final class GeoTiff {
             TIFFImageMetadata tags = (TIFFImageMetadata) reader.getImageMetadata(0);
             double[] scale = doubles(tags.getTIFFField(MODEL_PIXEL_SCALE));
             double[] tie = doubles(tags.getTIFFField(MODEL_TIEPOINT));
-            if ((scale == null || tie == null) && requireScale) {
+            if (scale == null && requireScale) {
                 throw new HeightImportException(file + ": has no georeference (no ModelPixelScale and ModelTiepoint "
                         + "tags), so its spacing is unknown: add them (gdal_translate -a_srs/-a_ullr), or set "
                         + "terrain.import-scale=false to normalise it at terrain.spacing");
             }
             Raster raster = reader.readRaster(0, null);
             float[] heights = samples(file, raster);
-            if (scale == null || tie == null) {
+            if (scale == null) {
                 return new ElevationGrid(w, h, fallbackSpacing, fallbackSpacing, heights, Double.NaN, false);
             }
             int[] keys = ints(tags.getTIFFField(GEO_KEY_DIRECTORY));
             double vertical = unit(file, key(keys, KEY_VERTICAL_UNITS), "VerticalUnits");
             noData(tags.getTIFFField(GDAL_NODATA), heights, vertical);
             if (key(keys, KEY_MODEL_TYPE) == MODEL_GEOGRAPHIC) {
+                if (tie == null) {
+                    throw new HeightImportException(file + ": is in degrees but has no ModelTiepoint tag, so its "
+                            + "latitude, and with it the metres of a degree of longitude, is unknown");
+                }
                 double latitude = tie[4] - scale[1] * (h / 2.0 - tie[1]);
                 double sin = Math.sin(Math.toRadians(latitude));
                 double w2 = 1 - E2 * sin * sin;
