@@ -26,6 +26,7 @@ import org.knowm.xchart.XYSeries.XYSeriesRenderStyle;
 import org.knowm.xchart.style.Styler.LegendPosition;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 import org.openworld.engine.Engine;
+import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.files.AtomicFiles;
 import org.openworld.engine.gl.Image;
@@ -123,7 +124,10 @@ final class HeightmapCommand implements Callable<Integer> {
             Outputs.png(out.resolve(name), false);
         }
 
-        System.out.println(terrain.imports()
+        Path importFile = Path.of(terrain.importFile());
+        System.out.println(terrain.imports() && ElevationImport.handles(importFile)
+                ? "heightmap: importing " + importFile + ": " + ElevationImport.describe(importFile, terrain, worldSeed)
+                : terrain.imports()
                 ? String.format(Locale.ROOT, "heightmap: importing %s, %s m between samples", terrain.importFile(),
                         terrain.spacing())
                 : String.format(Locale.ROOT, "heightmap: %d² samples %s m apart (%s m across), beta %s, seed %d",
@@ -154,6 +158,10 @@ final class HeightmapCommand implements Callable<Integer> {
         }
         System.out.printf(Locale.ROOT, "peak heap: %.0f MiB (sum of the heap pools' peaks%s)%n",
                 peakHeap / BYTES_PER_MIB, repeat > 1 ? ", largest run" : "");
+
+        HeightMap tile = data.pyramid().base();
+        System.out.printf(Locale.ROOT, "tile: %d² samples %.2f m apart, %.2f km across, heights %.1f .. %.1f m%n",
+                tile.size(), tile.spacing(), tile.extent() / 1000, tile.min(), tile.max());
 
         // 2. the spectrum and its slope: none for a map whose power lies in fewer than two rings (a regular
         // pattern such as a checkerboard of two heights, whose power is all at one frequency)

@@ -170,4 +170,24 @@ class HeightmapCommandTest {
         assertTrue(console.stderr().contains("not terrain.world=tile"), console.stderr());
         assertFalse(console.stderr().contains("Exception"), console.stderr());
     }
+
+    /** The shipped real place: the model's own size and heights (344 rows of 403 int16 samples, 236 .. 1076 m). */
+    @Test
+    void aRealPlacePrintsItsExtentSpacingAndRange() {
+        assertEquals(0, Main.execute("heightmap", "--out", dir.toString(), "--set",
+                "terrain.import-file=../assets/elevation/jacksboro-fault.tif", "--set", "terrain.import-detail=false"));
+        for (String line : new String[] {"403×344 samples", " m apart", " km, heights 236.0 .. 1076.0 m",
+            "(geographic, spacing at 36.5", "tile: 512² samples"}) {
+            assertTrue(console.stdout().contains(line), "missing '" + line + "' in\n" + console.stdout());
+        }
+    }
+
+    @Test
+    void aCorruptTiffIsOneLineAndExit2() throws java.io.IOException {
+        Path broken = Files.write(dir.resolve("broken.tif"), new byte[] {'I', 'I', 42, 0, 8, 0, 0, 0, 1, 2, 3});
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--out", dir.resolve("out").toString(),
+                "--set", "terrain.import-file=" + broken));
+        assertTrue(console.stderr().strip().lines().count() == 1 && console.stderr().contains("not a readable TIFF"),
+                console.stderr());
+    }
 }

@@ -1,6 +1,7 @@
 package org.openworld.engine.terrain;
 
 import java.nio.file.Path;
+import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.terrain.heights.HeightImport;
 import org.openworld.engine.terrain.heights.HeightImportException;
 import org.openworld.engine.terrain.heights.HeightMap;
@@ -43,10 +44,13 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
      * @throws HeightImportException if the import file cannot be used
      */
     public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
+        Path file = Path.of(s.importFile());
+        boolean real = s.imports() && ElevationImport.handles(file);
         HeightMap base = s.imports()
-                ? times.time(IMPORT, () -> HeightImport.read(Path.of(s.importFile()), s))
+                ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed) : HeightImport.read(file, s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
-        return of(base, s, seed, times);
+        // a map at true scale lays its snow over its own height range in metres
+        return of(base, real && s.importScale() ? ElevationImport.rangeOf(s, base) : s, seed, times);
     }
 
     /**

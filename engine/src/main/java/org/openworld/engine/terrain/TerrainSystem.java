@@ -2,6 +2,7 @@ package org.openworld.engine.terrain;
 
 import static org.lwjgl.opengl.GL11C.*;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Consumer;
 import org.joml.Vector3f;
@@ -20,6 +21,7 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.gl.ShaderProgram;
@@ -153,7 +155,9 @@ public final class TerrainSystem implements EngineSystem {
 
     /** A generated or imported tile. */
     private Ground tile(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
+        Path file = Path.of(terrain.importFile());
         progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
+                + (ElevationImport.handles(file) ? ": " + ElevationImport.describe(file, terrain, seed) : "")
                 : "generating " + terrain.size() + "² samples, seed " + seed));
         return new TileGround(context, tiles.make(terrain, seed, times), seed, cells, UNIT_HEIGHTS,
                 UNIT_GRADIENTS, UNIT_SNOW, times);

@@ -128,7 +128,7 @@ public final class SpectralSynthesis {
     }
 
     /** h = relief · (f' − seaFraction), where f' is f scaled to [0, 1] by the field's own minimum and maximum. */
-    static void normalise(float[] a, int n, double relief, double seaFraction) {
+    public static void normalise(float[] a, int n, double relief, double seaFraction) {
         float[] rowMin = new float[n];
         float[] rowMax = new float[n];
         rows(n).forEach(r -> {

@@ -17,8 +17,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param maxWavelength  low-frequency cut-off: longer wavelengths get amplitude 0, so one frequency ring does not
  *                       dominate and the tile holds several mountains instead of one
  * @param importFile     16-bit grayscale PNG or little-endian float32 {@code .raw/.r32/.f32} height map used instead
- *                       of synthesis (see {@link HeightImport}); empty generates one. The spectral settings are then
- *                       ignored
+ *                       of synthesis (see {@link HeightImport}), or a real elevation model (a GeoTIFF, or a PNG or
+ *                       raw file with a sidecar: {@link org.openworld.engine.elevation.ElevationImport}); empty
+ *                       generates one. The spectral settings are then ignored
  * @param snowBase       normalised height (0 lowest, 1 highest sample) where the snow probability starts to rise
  *                       from 0
  * @param snowFull       normalised height at which snow is certain; p(h) = clamp((h − base)/(full − base), 0, 1)
@@ -30,6 +31,13 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       refuses an import (the demo's command line refuses the two named together)
  * @param memoryBudget   the unbounded world's GPU memory for streamed heights, slopes and snow, MiB: it sets how many
  *                       samples each level keeps around the camera ({@link org.openworld.engine.terrain.stream.HeightClipmap})
+ * @param importScale    keep an imported map's heights and spacing in metres, as its file gives them (a GeoTIFF's
+ *                       tags, or a sidecar beside a PNG or raw file; {@link org.openworld.engine.elevation}); false,
+ *                       or a file that gives no scale, normalises it to {@code relief} and {@code seaFraction}
+ * @param seaLevel       the file's height that becomes sea level (height 0, where the water lies) in a map imported
+ *                       at true scale
+ * @param importDetail   synthesise the octaves a true-scale map is too coarse to hold, down to {@code spacing} or to
+ *                       a tile of {@code size} samples, whichever is coarser
  */
 public record TerrainSettings(
         @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192, atStart = true)
@@ -48,8 +56,8 @@ public record TerrainSettings(
         @Setting(doc = "longest wavelength kept (low-frequency cut-off)",
                 unit = "m", min = 0.1, max = 1e6, atStart = true)
         double maxWavelength,
-        @Setting(doc = "16-bit PNG or float32 .raw height map to load instead of generating one", atStart = true,
-                file = true)
+        @Setting(doc = "height map to load instead of generating one: GeoTIFF, or 16-bit PNG or float32 .raw",
+                atStart = true, file = true)
         String importFile,
         @Setting(doc = "normalised height where snow starts (probability 0)", min = 0, max = 1, atStart = true)
         double snowBase,
@@ -60,7 +68,13 @@ public record TerrainSettings(
         @Setting(doc = "UNBOUNDED: made per level around the camera, never repeating; TILE: one map, repeated if "
                 + "generated; an imported map is always the tile", atStart = true) World world,
         @Setting(doc = "unbounded world: GPU memory for the streamed heights, slopes and snow", unit = "MiB", min = 2,
-                max = 4096, atStart = true) int memoryBudget) {
+                max = 4096, atStart = true) int memoryBudget,
+        @Setting(doc = "keep an imported map's metres and spacing as its file gives them (GeoTIFF tags or a sidecar)",
+                atStart = true) boolean importScale,
+        @Setting(doc = "true-scale import: the file's height that becomes sea level", unit = "m", min = -12000,
+                max = 9000, atStart = true) double seaLevel,
+        @Setting(doc = "true-scale import: synthesise the detail below the data's resolution", atStart = true)
+        boolean importDetail) {
 
     /** Where the heights come from and how far they reach. */
     public enum World {
@@ -83,7 +97,10 @@ public record TerrainSettings(
             0.60,   // ...and is certain on the top 40 %: snow on the upper slopes, as in the paper's figure 1b
             1,      // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
             World.UNBOUNDED, // the open world the engine is named for; the paper's figures ask for the tile
-            20);    // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
+            20,     // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
+            true,   // a real place's metres are the point of importing it
+            0,      // m: elevation models count from mean sea level
+            true);  // a 30-90 m model is soft mush at walking height without the octaves it cannot hold
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);
