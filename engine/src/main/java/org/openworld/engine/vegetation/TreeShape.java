@@ -10,11 +10,11 @@ import java.util.List;
  * {@link #FLOATS} floats in all, triangles counter-clockwise seen from outside.
  *
  * <ul>
- *   <li>Conifer: a six-sided trunk under five stacked cones of eight sides with ragged rims (108 triangles); far, one
+ *   <li>Conifer: a six-sided trunk under five stacked cones of eight sides with ragged rims (92 triangles); far, one
  *       five-sided cone over a three-sided trunk (16).</li>
- *   <li>Broadleaf: a trunk under four overlapping lumpy spheres of leaves (232); far, one sphere of 6 × 4 facets and
+ *   <li>Broadleaf: a trunk under four overlapping lumpy spheres of leaves (268); far, one sphere of 6 × 4 facets and
  *       the trunk (42).</li>
- *   <li>Bush: two lumpy spheres on the ground (116); far, one of 5 × 3 facets (20).</li>
+ *   <li>Bush: two lumpy spheres on the ground (128); far, one of 5 × 3 facets (20).</li>
  * </ul>
  * A cone's sides and a sphere are lit as round (smooth normals) and their silhouettes stay low-poly; the lumps (a
  * hashed ±{@link #LUMP} of the radius per vertex) break the spheres' regular outline.

@@ -44,7 +44,7 @@ public record VegetationSettings(
             8,     // m: a young spruce
             24,    // m: a grown one; mountain spruce rarely exceed 30 m
             1500,  // m: a 16 m tree is then 6 px tall at 1080p, small enough to go unnoticed as it shrinks away
-            150,   // m: a 16 m tree is 110 px tall at 1080p here; beyond, 20 px of a crown hide the simpler outline
+            150,   // m: a 16 m tree is 110 px tall at 1080p there, and the two shapes differ little (TreeRenderTest)
             2);    // m: above the lakes' wet rim
 
     public static final SettingsGroup<VegetationSettings> SETTINGS =

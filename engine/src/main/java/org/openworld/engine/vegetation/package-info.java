@@ -19,7 +19,7 @@
  * viewer has moved a quarter of the view distance; only the tiles the move brings in are new work.
  *
  * <p><b>Drawing</b> ({@link org.openworld.engine.vegetation.TreeDraw}): per kind a full shape within
- * {@code vegetation.lod-distance} (108 to 232 triangles) and a simplified one beyond (16 to 42), cross-faded by a
+ * {@code vegetation.lod-distance} (92 to 268 triangles) and a simplified one beyond (16 to 42), cross-faded by a
  * 4 × 4 ordered dither over ±10 % of the distance; the shadow cascades switch hard at the same distance and leave
  * the far bushes out; the reflection draws the simplified shapes only. One instanced call per kind, shape and run of
  * neighbouring visible tiles ({@code Mesh.drawInstances}); the tiles' boxes go to the culling system as a
@@ -30,7 +30,9 @@
  * {@code vegetation.view-distance}; the fade and the switch are measured from the viewer's eye ({@code viewerPos()}) in
  * every pass, so the picture, the reflection and the shadows agree.
  *
- * <p><b>Cost</b>: see {@code docs/vegetation.md}, "Cost", for the frame on {@code valley.path} with and without.
+ * <p><b>Cost</b> ({@code docs/vegetation.md}, "Cost"): on {@code valley.path} at 1280 × 720 on llvmpipe, 3 461 plants
+ * within reach, 786 drawn in the picture; the vegetation's spans 18 to 40 ms of a 2.3 to 3 s frame on a heavily
+ * loaded machine (1 to 1.5 %), frames with and without it within that machine's noise.
  *
  * <p><b>Limits</b>: no impostors: past the view distance the forests end (they shrink away over its last fifth); the
  * foot follows the finest height field, while the terrain draws coarser levels far away, where a plant may stand a
