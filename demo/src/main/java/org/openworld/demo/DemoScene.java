@@ -12,7 +12,7 @@ import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.shadow.ShadowSystem;
 import org.openworld.engine.terrain.TerrainSystem;
-import org.openworld.engine.trees.TreeSystem;
+import org.openworld.engine.vegetation.VegetationSystem;
 import org.openworld.engine.water.WaterSystem;
 
 /**
@@ -49,7 +49,7 @@ final class DemoScene {
                 new CullingSystem(),
                 new TerrainSystem(line -> System.err.println(line)),
                 new ShadowSystem(),
-                new TreeSystem(),
+                new VegetationSystem(),
                 new WaterSystem(),
                 new MinimapSystem(),
                 new ParticleSystem());

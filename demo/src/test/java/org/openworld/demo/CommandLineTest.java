@@ -197,18 +197,18 @@ class CommandLineTest {
         Path out = dir.resolve("unbounded");
         assertEquals(0, Main.execute("bench", "--path", "../assets/paths/crossing.path", "--out", out.toString(),
                 "--size", "96x54", "--frames", "6", "--warmup", "2", "--set", "terrain.world=unbounded",
-                "--set", "system.trees=on", "--set", "system.minimap=on", "--set", "system.particles=on"),
+                "--set", "system.minimap=on", "--set", "system.particles=on"),
                 console.stderr());
         var spans = SummaryJson.read(out.resolve("summary.json")).passGpuMsMedian().keySet();
-        for (String span : List.of("main.terrain", "shadow0.terrain", "reflection.terrain", "main.water", "main.trees",
+        for (String span : List.of("main.terrain", "shadow0.terrain", "reflection.terrain", "main.water", "main.vegetation",
                 "main.particles", "overlay.minimap")) {
             assertTrue(spans.contains(span), span + " in " + spans);
         }
         List<String> lines = Files.readAllLines(out.resolve("frames.csv"));
-        int trees = List.of(lines.get(0).split(",")).indexOf("trees.count");
+        int trees = List.of(lines.get(0).split(",")).indexOf("vegetation.count");
         assertTrue(trees >= 0, lines.get(0));
         double placed = Double.parseDouble(lines.get(lines.size() - 1).split(",")[trees]);
-        assertTrue(placed > 100, "trees placed on the unbounded world: " + placed);
+        assertTrue(placed > 100, "plants placed on the unbounded world: " + placed);
     }
 
     /** A budget too small for the unbounded world, or an imported map asked to be unbounded: a clear message. */

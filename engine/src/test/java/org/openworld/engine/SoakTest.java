@@ -19,7 +19,7 @@ import org.openworld.engine.camera.HeightReference;
 import org.openworld.engine.camera.Keyframe;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.terrain.heights.TerrainSettings;
-import org.openworld.engine.trees.TreeSystem;
+import org.openworld.engine.vegetation.VegetationSystem;
 
 /**
  * A long run with every system on, to catch what short tests cannot: a GL object made every frame and never freed,
@@ -54,7 +54,7 @@ class SoakTest {
 
     static final List<String> SMALL_WORLD = List.of("terrain.size=256", "lod.patch-vertices=33",
             "system.minimap=on", "system.particles=on", "particles.count=1000", "shadow.resolution=256",
-            "system.trees=on", "shadow.cascades=2", "shadow.distance=400", "trees.view-distance=200");
+            "shadow.cascades=2", "shadow.distance=400", "vegetation.view-distance=200");
 
     private static final MemoryMXBean MEMORY = ManagementFactory.getMemoryMXBean();
 
@@ -63,7 +63,7 @@ class SoakTest {
     void glObjectsAndHeapDoNotGrowOverALongFlight(TerrainSettings.World world) {
         List<EngineSystem> systems = new ArrayList<>(List.of(new CameraSystem()));
         systems.addAll(SystemsOwnershipTest.systems());
-        systems.add(new TreeSystem());
+        systems.add(new VegetationSystem());
         int[] frames = {0};
         int liveAfterFirstQuarter = 0;
         List<Integer> lastLive = new ArrayList<>();

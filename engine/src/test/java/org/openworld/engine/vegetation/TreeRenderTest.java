@@ -1,4 +1,4 @@
-package org.openworld.engine.trees;
+package org.openworld.engine.vegetation;
 
 import org.openworld.engine.GlTest;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -20,6 +20,7 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.culling.CullingSystem;
@@ -33,7 +34,8 @@ import org.openworld.engine.water.WaterSystem;
 
 /**
  * The trees on real GL, over an imported world built for the purpose: flat land 10 m above the water west of x = 0,
- * a lake bed 10 m under it to the east. Trees 12 m tall, 10 a hectare, drawn within 200 m of the viewer.
+ * a lake bed 10 m under it to the east. Trees 12 m tall (bushes and broadleaf trees their shares of it), 10 a
+ * hectare in the forest, drawn within 200 m of the viewer.
  */
 @GlTest
 class TreeRenderTest {
@@ -63,8 +65,8 @@ class TreeRenderTest {
 
     static List<String> settings(List<String> more) {
         List<String> s = new ArrayList<>(List.of("terrain.import-file=" + shore, "terrain.spacing=2",
-                "terrain.relief=100", "terrain.sea-fraction=0.2", "trees.density=10", "trees.min-height=" + TREE,
-                "trees.max-height=" + TREE, "trees.view-distance=200"));
+                "terrain.relief=100", "terrain.sea-fraction=0.2", "vegetation.density=40", "vegetation.min-height=" + TREE,
+                "vegetation.max-height=" + TREE, "vegetation.view-distance=200"));
         s.addAll(more);
         return s;
     }
@@ -73,11 +75,11 @@ class TreeRenderTest {
     static final Sun EAST_SUN = new Sun(new Vector3f((float) Math.cos(Math.toRadians(20)),
             (float) Math.sin(Math.toRadians(20)), 0), new Vector3f(1), new Vector3f(0.25f));
 
-    static Engine engine(TreeSystem trees, CameraPose pose, EngineSystem... others) {
+    static Engine engine(VegetationSystem trees, CameraPose pose, EngineSystem... others) {
         return engine(trees, pose, List.of(), others);
     }
 
-    static Engine engine(TreeSystem trees, CameraPose pose, List<String> more, EngineSystem... others) {
+    static Engine engine(VegetationSystem trees, CameraPose pose, List<String> more, EngineSystem... others) {
         List<EngineSystem> systems = new ArrayList<>(List.of(others));
         systems.add(new CullingSystem());
         systems.add(new TerrainSystem());
@@ -123,11 +125,11 @@ class TreeRenderTest {
 
     @Test
     void treesStandInThePictureWhereTheyWerePlacedAndOnlyOnTheLand() {
-        TreeSystem trees = new TreeSystem();
+        VegetationSystem trees = new VegetationSystem();
         // 40 m up over the land, looking west and a little down
         try (Engine engine = engine(trees, new CameraPose(-60, 40, 0, 270, -12, 60))) {
-            Image off = frame(engine, "trees", false);
-            Image on = frame(engine, "trees", true);
+            Image off = frame(engine, "vegetation", false);
+            Image on = frame(engine, "vegetation", true);
             float[] placed = trees.placed();
             int seen = 0;
             int changed = 0;
@@ -135,7 +137,7 @@ class TreeRenderTest {
                 assertTrue(placed[i] < 0 && Math.abs(placed[i + 1] - 10) < 0.01, "a tree off the land, at x = "
                         + placed[i] + ", y = " + placed[i + 1]);
                 // the crown's middle, for trees well inside the view distance
-                int[] p = pixel(engine, placed[i], placed[i + 1] + 0.5 * TREE, placed[i + 2]);
+                int[] p = pixel(engine, placed[i], placed[i + 1] + 0.5 * placed[i + 3], placed[i + 2]);
                 if (p != null && Math.hypot(placed[i] + 60, placed[i + 2]) < 140) {
                     seen++;
                     changed += differs(off, on, p[0], p[1]) ? 1 : 0;
@@ -157,27 +159,31 @@ class TreeRenderTest {
 
     @Test
     void treesCastShadowsOnTheGround() {
-        TreeSystem trees = new TreeSystem();
+        VegetationSystem trees = new VegetationSystem();
         // straight down from 60 m above the land; the sun in the east throws the shadows west
         CameraPose above = new CameraPose(-100, 70, 0, 0, -89.9, 60);
         try (Engine engine = engine(trees, above, new ShadowSystem())) {
             engine.world().setResource(EAST_SUN);
-            Image off = frame(engine, "trees", false);
-            Image on = frame(engine, "trees", true);
+            Image off = frame(engine, "vegetation", false);
+            Image on = frame(engine, "vegetation", true);
             engine.setEnabled("shadow", false);
-            Image offUnshadowed = frame(engine, "trees", false);
-            Image onUnshadowed = frame(engine, "trees", true);
+            Image offUnshadowed = frame(engine, "vegetation", false);
+            Image onUnshadowed = frame(engine, "vegetation", true);
             float[] placed = trees.placed();
             double darker = 0;
             double covered = 0;
             int points = 0;
             for (int i = 0; i < placed.length; i += TreePlacement.FLOATS) {
-                // the ground 0.8 heights west of a tree east of the centre: in its shadow (the crown there is 0.16
-                // heights wide), and clear of the tree itself, which the perspective leans eastwards
-                if (placed[i] < above.x() + 5) {
+                // the ground west of a tree east of the centre, in its shadow and clear of the tree itself, which the
+                // perspective leans eastwards: 0.8 heights for a conifer (the sun's ray there passes 0.29 heights
+                // up, through the lowest cones, and the crown reaches 0.35 heights), 1.2 for a broadleaf tree (0.44
+                // up, through its crown, which reaches 0.52); bushes are too low to leave their own outline
+                TreeKind kind = TreePlacementTest.kindOf(trees.layout(), i / TreePlacement.FLOATS);
+                if (placed[i] < above.x() + 5 || kind == TreeKind.BUSH) {
                     continue;
                 }
-                int[] p = pixel(engine, placed[i] - 0.8 * TREE, placed[i + 1], placed[i + 2]);
+                double west = (kind == TreeKind.CONIFER ? 0.8 : 1.2) * placed[i + 3];
+                int[] p = pixel(engine, placed[i] - west, placed[i + 1], placed[i + 2]);
                 if (p != null) {
                     darker += luma(off, p) - luma(on, p);
                     covered += Math.abs(luma(offUnshadowed, p) - luma(onUnshadowed, p));
@@ -193,14 +199,14 @@ class TreeRenderTest {
 
     @Test
     void treesAppearInTheWatersReflection() {
-        TreeSystem trees = new TreeSystem();
+        VegetationSystem trees = new VegetationSystem();
         WaterSystem water = new WaterSystem();
         // 15 m over the lake, 80 m east of the shore, looking west at it
-        List<String> calm = List.of("clouds.cover=0", "water.reflection=FULL", "water.wind=0.5", "trees.density=40");
+        List<String> calm = List.of("clouds.cover=0", "water.reflection=FULL", "water.wind=0.5", "vegetation.density=100");
         try (Engine engine = engine(trees, new CameraPose(80, 15, 0, 270, -4, 60), calm, new SkySystem(), water)) {
-            frame(engine, "trees", false);
+            frame(engine, "vegetation", false);
             Image off = water.reflectionTarget().read();
-            frame(engine, "trees", true);
+            frame(engine, "vegetation", true);
             Image on = water.reflectionTarget().read();
             float[] placed = trees.placed();
             int seen = 0;
@@ -209,10 +215,11 @@ class TreeRenderTest {
                 // The mirror camera is the viewer's with y flipped (its oblique near plane changes depth alone), so
                 // a point shows in the reflection where the viewer would see its mirror image below the water. The
                 // crown at 0.7 heights of a tree within 20 m of the shore clears the bank in the mirror's view.
-                if (placed[i] < -20) {
-                    continue;
+                if (placed[i] < -20 || TreePlacementTest.kindOf(trees.layout(), i / TreePlacement.FLOATS)
+                        == TreeKind.BUSH) {
+                    continue; // a bush's crown, 2 m up, stays behind the bank
                 }
-                int[] p = pixel(engine, placed[i], -(placed[i + 1] + 0.7 * TREE), placed[i + 2]);
+                int[] p = pixel(engine, placed[i], -(placed[i + 1] + 0.7 * placed[i + 3]), placed[i + 2]);
                 if (p != null) {
                     seen++;
                     changed += differs(off, on, p[0], p[1]) ? 1 : 0;
@@ -221,5 +228,64 @@ class TreeRenderTest {
             assertTrue(seen >= 5, "trees by the shore in the reflection's view: " + seen);
             assertTrue(changed >= 0.9 * seen, "trees seen in the reflection: " + changed + " of " + seen);
         }
+    }
+
+    /** The default switch distance, metres: the camera stands this far from the nearest plant. */
+    static final double SWITCH = VegetationSettings.DEFAULTS.lodDistance();
+    /**
+     * The largest mean ΔE00 allowed between the two shapes over the pixels of the plants. A difference of 2.3 is
+     * just noticeable side by side; the dithered cross-fade spreads the change over 30 m of walking, so a plant is
+     * never seen in both shapes at once: a mean of twice that (plants a few pixels wide, whose edge pixels turn from
+     * plant to ground, count for most of it) passes unseen.
+     */
+    static final double MEAN_BOUND = 4.6;
+
+    static Image draw(Engine engine, boolean on, double lodDistance) {
+        engine.settings().set("vegetation.lod-distance", String.valueOf(lodDistance));
+        return frame(engine, "vegetation", on);
+    }
+
+    /**
+     * The two shapes of every kind, full and simplified, seen at the distance where one gives way to the other: from a
+     * camera above the lake 150 m east of the shore (the default switch distance), so every plant in view stands
+     * 150 m or more away. The same frame is drawn with every plant in its full shape ({@code vegetation.lod-distance}
+     * far beyond the view) and with every plant simplified (the switch at the smallest distance allowed), and the
+     * two pictures are compared where either has a plant.
+     */
+    @Test
+    void theFullAndTheSimplifiedShapesLookAlikeAtTheSwitchDistance() {
+        VegetationSystem plants = new VegetationSystem();
+        // 12 m over the lake, looking west at the shore and the land behind it, a little down
+        List<String> more = List.of("vegetation.density=150", "vegetation.view-distance=1000");
+        // with the sky behind them, as the switch is seen (against black, every edge pixel would count double)
+        try (Engine engine = engine(plants, new CameraPose(SWITCH, 12, 0, 270, -2, 60), more, new SkySystem())) {
+            Image bare = draw(engine, false, SWITCH);
+            Image full = draw(engine, true, 5000);
+            Image simple = draw(engine, true, 10);
+            double sum = 0;
+            int pixels = 0;
+            ImageComparison between = ImageComparison.of(full, simple);
+            ImageComparison fullOnBare = ImageComparison.of(full, bare);
+            ImageComparison simpleOnBare = ImageComparison.of(simple, bare);
+            double plantOnGround = 0;
+            for (int y = 0; y < full.height(); y++) {
+                for (int x = 0; x < full.width(); x++) {
+                    // a pixel of a plant in either picture: noticeably (ΔE00 over 2.3) unlike the bare ground
+                    if (fullOnBare.deltaE(x, y) > 2.3 || simpleOnBare.deltaE(x, y) > 2.3) {
+                        sum += between.deltaE(x, y);
+                        plantOnGround += Math.max(fullOnBare.deltaE(x, y), simpleOnBare.deltaE(x, y));
+                        pixels++;
+                    }
+                }
+            }
+            assertTrue(pixels > 200, "plant pixels: " + pixels);
+            double mean = sum / pixels;
+            // the plants themselves stand out from the ground far more than the shapes differ: the test sees them
+            assertTrue(plantOnGround / pixels > 3 * mean, "plants against the ground " + plantOnGround / pixels
+                    + ", the shapes against each other " + mean);
+            assertTrue(mean < MEAN_BOUND, "mean ΔE00 between the full and the simplified shapes at " + SWITCH
+                    + " m, over " + pixels + " plant pixels: " + mean);
+        }
+        assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
     }
 }

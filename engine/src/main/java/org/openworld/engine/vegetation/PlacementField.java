@@ -1,0 +1,138 @@
+package org.openworld.engine.vegetation;
+
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.environment.Moisture;
+
+/**
+ * How thickly plants grow anywhere, and which kind, from the land alone: no GL, no state but the seed, so any point
+ * gives the same answer whichever block of the world is placed first and on whichever thread.
+ *
+ * <p><b>The density</b>, 0 to 1 (a share of {@code vegetation.density}), is a product of four factors:
+ * <pre>
+ *   density = patches(x, z) · min(1, 0.5 + moisture) · treeline(h)
+ *   patches = FLOOR + (1 − FLOOR) · smoothstep(EDGE_LOW, EDGE_HIGH, 0.65 · n(x / 600 m) + 0.35 · n(x / 150 m))
+ *   treeline = 1 − smoothstep(snow − band, snow, h),  band = TREELINE_SHARE · (snow − shore), or TREELINE_BAND
+ * </pre>
+ * {@code n} is value noise from the seed (a smooth cubic between hashed lattice values): the sum wanders over a few
+ * hundred metres, and the narrow smoothstep turns it into forests with edges, clearings and groves rather than a
+ * uniform scatter; {@link #FLOOR} keeps a few lone plants in the open.
+ *
+ * Neutral ground (moisture 0.5) grows the full forest; a dry ridge half of it.
+ *
+ * <p><b>Moisture</b> is the world's {@link Moisture} where one is published (the seam a flow field feeds). Without
+ * one, the stand-in is the land's shape: wet near the water (falling off over {@link #SHORE_RANGE} of height), wet in
+ * hollows (the ground {@link #PROBE} m around is higher: the Laplacian, water's way of gathering), dry on slopes that
+ * face the sun (south, +z, here in the northern hemisphere) by their steepness.
+ *
+ * <p><b>The kind</b>: bushes where the forest thins (its edges and the open), broadleaf trees low and wet, conifers
+ * high and dry, each chosen with those odds from a uniform number the caller draws.
+ */
+final class PlacementField {
+
+    /** Wavelengths of the two noise octaves, metres: forests a few hundred metres across, groves inside them. */
+    static final double PATCH = 600;
+    static final double GROVE = 150;
+    /** The noise values over which the density goes from the open to the forest: a narrow band, sharp edges. */
+    static final double EDGE_LOW = 0.42;
+    static final double EDGE_HIGH = 0.55;
+    /** The open's share of the forest's density: a lone tree or bush here and there. */
+    static final double FLOOR = 0.06;
+    /**
+     * The tree line: forests thin to nothing over the top quarter of the heights between the shore and the snow
+     * line's start (a world's relief sets where its trees stop, as the climate does on Earth), or over 250 m below
+     * the snow where there is no water to measure from.
+     */
+    static final double TREELINE_SHARE = 0.25;
+    static final double TREELINE_BAND = 250;
+    /** Metres of height above the water over which the shore's wetness fades. */
+    static final double SHORE_RANGE = 40;
+    /** Metres to the four points around a foot whose mean height tells a hollow from a ridge. */
+    static final double PROBE = 24;
+
+    private final HeightField heights;
+    private final Moisture moisture;
+    private final TreePlacement.Limits limits;
+    private final long seed;
+
+    /** {@code moisture} null: the stand-in from the land's shape. */
+    PlacementField(HeightField heights, Moisture moisture, TreePlacement.Limits limits, int seed) {
+        this.heights = heights;
+        this.moisture = moisture;
+        this.limits = limits;
+        this.seed = TreePlacement.mix(seed ^ 0x5EED_F0E5L);
+    }
+
+    /** The density at (x, z) on ground of height {@code h}, 0 to 1. */
+    double density(double x, double z, double h) {
+        return patches(x, z) * Math.min(1, 0.5 + moisture(x, z, h)) * treeline(h);
+    }
+
+    /** Forest or open: {@link #FLOOR} to 1. */
+    double patches(double x, double z) {
+        double n = 0.65 * noise(x / PATCH, z / PATCH, 0) + 0.35 * noise(x / GROVE, z / GROVE, 1);
+        return FLOOR + (1 - FLOOR) * smoothstep(EDGE_LOW, EDGE_HIGH, n);
+    }
+
+    double treeline(double h) {
+        if (Double.isInfinite(limits.highest())) {
+            return 1;
+        }
+        double band = Double.isInfinite(limits.lowest()) ? TREELINE_BAND
+                : TREELINE_SHARE * Math.max(0, limits.highest() - limits.lowest());
+        return 1 - smoothstep(limits.highest() - band, limits.highest(), h);
+    }
+
+    /** The world's moisture, or the stand-in: shore, hollows, sunward slopes. */
+    double moisture(double x, double z, double h) {
+        if (moisture != null) {
+            return Math.min(1, Math.max(0, moisture.at(x, z)));
+        }
+        double shore = Double.isInfinite(limits.lowest()) ? 0 : Math.exp(-Math.max(0, h - limits.lowest()) / SHORE_RANGE);
+        double n = heights.heightAt(x, z - PROBE);
+        double s = heights.heightAt(x, z + PROBE);
+        double hollow = (n + s + heights.heightAt(x - PROBE, z) + heights.heightAt(x + PROBE, z)) / 4 - h;
+        // the slope's fall towards the south (+z) over the run: positive on a sun-facing slope
+        double sunward = Math.max(0, (n - s) / (2 * PROBE));
+        return Math.min(1, Math.max(0, 0.5 + 0.5 * shore + 4 * hollow / PROBE - 1.5 * sunward));
+    }
+
+    /** The kind of plant at a place of this density and height, from a uniform number {@code u} in [0, 1). */
+    TreeKind kind(double x, double z, double h, double u) {
+        double open = 1 - (patches(x, z) - FLOOR) / (1 - FLOOR);
+        double bush = 0.15 + 0.7 * open;
+        if (u < bush) {
+            return TreeKind.BUSH;
+        }
+        double range = Double.isInfinite(limits.highest()) || Double.isInfinite(limits.lowest()) ? 0.5
+                : (h - limits.lowest()) / Math.max(1, limits.highest() - limits.lowest());
+        double broadleaf = moisture(x, z, h) * (1 - Math.min(1, Math.max(0, range)));
+        return (u - bush) / (1 - bush) < broadleaf ? TreeKind.BROADLEAF : TreeKind.CONIFER;
+    }
+
+    /** Value noise, 0 to 1: hashed values on the integer lattice, blended by a smooth cubic. */
+    private double noise(double x, double z, int octave) {
+        long ix = (long) Math.floor(x);
+        long iz = (long) Math.floor(z);
+        double fx = x - ix;
+        double fz = z - iz;
+        double sx = fx * fx * (3 - 2 * fx);
+        double sz = fz * fz * (3 - 2 * fz);
+        double a = lattice(ix, iz, octave);
+        double b = lattice(ix + 1, iz, octave);
+        double c = lattice(ix, iz + 1, octave);
+        double d = lattice(ix + 1, iz + 1, octave);
+        return (a + (b - a) * sx) * (1 - sz) + (c + (d - c) * sx) * sz;
+    }
+
+    private double lattice(long ix, long iz, int octave) {
+        return (TreePlacement.mix(TreePlacement.mix(TreePlacement.mix(seed + octave) ^ ix) ^ iz) >>> 11) * 0x1.0p-53;
+    }
+
+    static double smoothstep(double e0, double e1, double v) {
+        if (e1 <= e0) {
+            return v < e0 ? 0 : 1;
+        }
+        double t = Math.min(1, Math.max(0, (v - e0) / (e1 - e0)));
+        return t * t * (3 - 2 * t);
+    }
+}

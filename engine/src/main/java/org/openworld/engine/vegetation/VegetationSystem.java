@@ -1,0 +1,197 @@
+package org.openworld.engine.vegetation;
+
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.function.Supplier;
+import org.joml.Vector3f;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.Cullable;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.environment.Moisture;
+import org.openworld.engine.environment.SnowLine;
+import org.openworld.engine.environment.WaterLevel;
+import org.openworld.engine.environment.Wind;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+
+/**
+ * Trees and bushes on the ground around the viewer, drawn instanced in the picture, the sun's shadow maps and the
+ * water's reflection. See the package documentation for the technique.
+ *
+ * <p>Frame by frame: {@link #update} has the plants within reach of the viewer placed again when the viewer has moved
+ * {@link #REBUILD_SHARE} of the view distance, on a worker thread ({@link TreePlacer}, which places only the tiles
+ * the move brings in), and takes the result when it is ready: it uploads the records and hands the tiles' boxes to
+ * the culling system as a {@link Cullable}. Only the first placement, and one after the world or the settings
+ * changed, is made at once on the render thread: there is nothing to show until then. {@link #render} reads the
+ * culling's {@link Visibility} for the pass camera and has {@link TreeDraw} draw the visible tiles' plants.
+ */
+public final class VegetationSystem implements EngineSystem {
+
+    /** The share of the view distance the viewer may move before the plants are placed again. */
+    static final double REBUILD_SHARE = 0.25;
+    /**
+     * The wind among the plants as a share of the cloud layer's: near the ground the air is slowed by it (a
+     * logarithmic profile gives 30-50 % at 10 m of what blows a kilometre up).
+     */
+    static final float GROUND_WIND = 0.4f;
+
+    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "vegetation-placement");
+        t.setDaemon(true);
+        return t;
+    });
+    private TreeDraw draw;
+    private int entity;
+    private TreePlacement.Layout layout;
+    private TreePlacer placer;
+    /** Where the viewer was for the layout drawn now, and for the one being placed. */
+    private double placedX;
+    private double placedZ;
+    private CompletableFuture<Placed> placing;
+    private int placements;
+
+    @Override
+    public SystemSpec spec() {
+        return SystemSpec.named("vegetation")
+                .reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class, SnowLine.class,
+                        Moisture.class, Wind.class, Visibility.class)
+                .draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of(VegetationSettings.SETTINGS);
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        draw = new TreeDraw(context);
+        entity = context.world().spawn();
+    }
+
+    @Override
+    public void update(World world, double step) {
+        VegetationSettings s = world.resource(Settings.class).get(VegetationSettings.class);
+        CameraPose pose = world.resource(Camera.class).pose();
+        TreePlacer.World now = new TreePlacer.World(world.findResource(HeightField.class).orElse(HeightField.FLAT),
+                world.findResource(Moisture.class).orElse(null), s, limits(world, s),
+                world.resource(Settings.class).get(EngineSettings.class).seed());
+        double radius = (1 + REBUILD_SHARE) * s.viewDistance();
+        if (placer == null || !placer.world().equals(now)) {
+            // a new world or new settings: placed at once, whatever was under way is dropped
+            if (placing != null) {
+                placing.cancel(false);
+                placing = null;
+            }
+            placer = new TreePlacer(now);
+            place(world, () -> placer.around(pose.x(), pose.z(), radius), pose, true);
+        } else if (placing != null && placing.isDone()) {
+            take(world, placing.join());
+            placing = null;
+        } else if (placing == null && Math.hypot(pose.x() - placedX, pose.z() - placedZ) > REBUILD_SHARE
+                * s.viewDistance()) {
+            TreePlacer p = placer;
+            place(world, () -> p.around(pose.x(), pose.z(), radius), pose, false);
+        }
+    }
+
+    /** A placement and the milliseconds of CPU it took (on whichever thread made it). */
+    private record Placed(TreePlacement.Layout layout, double ms) {
+    }
+
+    /** Places the plants around the pose, at once or on the worker. */
+    private void place(World world, Supplier<TreePlacement.Layout> job, CameraPose pose, boolean atOnce) {
+        placedX = pose.x();
+        placedZ = pose.z();
+        placements++;
+        Supplier<Placed> timed = () -> {
+            long t0 = System.nanoTime();
+            TreePlacement.Layout l = job.get();
+            return new Placed(l, (System.nanoTime() - t0) / 1e6);
+        };
+        if (atOnce) {
+            take(world, timed.get());
+        } else {
+            placing = CompletableFuture.supplyAsync(timed, worker);
+        }
+    }
+
+    /** The new layout on the GPU and its boxes with the culling. */
+    private void take(World world, Placed placed) {
+        world.resource(Counters.class).put("vegetation.place-ms", placed.ms());
+        layout = placed.layout();
+        draw.upload(layout);
+        if (layout.bounds() != null) {
+            world.add(entity, new Cullable(layout.bounds(), new float[] {0, 0}));
+        } else {
+            world.remove(entity, Cullable.class);
+        }
+    }
+
+    /** The rules from the world: above the water (if any) by the shore margin, below the snow (if any). */
+    static TreePlacement.Limits limits(World world, VegetationSettings s) {
+        double lowest = world.findResource(WaterLevel.class).map(w -> w.height() + s.shoreMargin())
+                .orElse(Double.NEGATIVE_INFINITY);
+        double highest = world.findResource(SnowLine.class).map(SnowLine::start).orElse(Double.POSITIVE_INFINITY);
+        return new TreePlacement.Limits(lowest, highest, s.maxGradient());
+    }
+
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        if (layout == null || layout.count() == 0) {
+            return;
+        }
+        World world = context.world();
+        VegetationSettings s = world.resource(Settings.class).get(VegetationSettings.class);
+        // the tiles the culling left visible to this pass's camera (all of them without culling)
+        Visibility visibility = world.get(entity, Visibility.class)
+                .filter(v -> v.nodeCount() == layout.tiles() + 1 && v.copies() == 1).orElse(null);
+        CameraPose pose = world.resource(Camera.class).pose();
+        Vector3f wind = new Vector3f(world.findResource(Wind.class).orElse(Wind.CALM).velocity()).mul(GROUND_WIND);
+        int drawn = draw.draw(pass, context, layout, visibility, s,
+                new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z()), new float[] {wind.x, wind.z});
+        Counters counters = world.resource(Counters.class);
+        counters.put("vegetation.count", layout.count());
+        counters.add("vegetation." + pass.label() + ".drawn", drawn);
+    }
+
+    @Override
+    public void close() {
+        worker.shutdownNow();
+    }
+
+    /** The plants placed now (tests and tools): {@link TreePlacement#FLOATS} floats per plant, kind by kind. */
+    float[] placed() {
+        return layout == null ? new float[0] : layout.records();
+    }
+
+    /** The layout drawn now (tests). */
+    TreePlacement.Layout layout() {
+        return layout;
+    }
+
+    /** How often a placement began. */
+    int placements() {
+        return placements;
+    }
+
+    /** Waits for a placement under way and takes it (tests: the next frame shows it). */
+    void settle(World world) {
+        if (placing != null) {
+            take(world, placing.join());
+            placing = null;
+        }
+    }
+}

@@ -1,0 +1,284 @@
+package org.openworld.engine.vegetation;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Random;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.openworld.engine.core.HeightField;
+
+/**
+ * Where the plants stand, without GL: the seed, the order tiles are placed in, the water, the snow, the slope, the
+ * density field and the culling boxes.
+ */
+class TreePlacementTest {
+
+    static final TreePlacement.Limits ANYWHERE = new TreePlacement.Limits(Double.NEGATIVE_INFINITY,
+            Double.POSITIVE_INFINITY, VegetationSettings.DEFAULTS.maxGradient());
+    /** A gentle slope rising 2 m per 100 m eastwards, 1.1°: from −20 m to 20 m across a 2 km disc. */
+    static final HeightField RAMP = (x, z) -> 0.02 * x;
+
+    static TreePlacement.Layout place(HeightField field, double x, double z, double radius, TreePlacement.Limits limits,
+                                      int seed) {
+        return TreePlacement.around(field, null, x, z, radius, VegetationSettings.DEFAULTS, limits, seed);
+    }
+
+    static float at(TreePlacement.Layout layout, int plant, int component) {
+        return layout.records()[plant * TreePlacement.FLOATS + component];
+    }
+
+    /** The kind of the i-th plant: the layout holds every tile's plants of one kind before the next kind's. */
+    static TreeKind kindOf(TreePlacement.Layout layout, int plant) {
+        int end = 0;
+        for (TreeKind kind : TreeKind.values()) {
+            for (int c : layout.tileCount()[kind.ordinal()]) {
+                end += c;
+            }
+            if (plant < end) {
+                return kind;
+            }
+        }
+        throw new IllegalArgumentException("plant " + plant + " of " + layout.count());
+    }
+
+    static Set<String> feet(TreePlacement.Layout layout, double minX) {
+        Set<String> feet = new HashSet<>();
+        for (int i = 0; i < layout.count(); i++) {
+            if (at(layout, i, 0) > minX) {
+                feet.add(at(layout, i, 0) + "," + at(layout, i, 2));
+            }
+        }
+        return feet;
+    }
+
+    @Test
+    void theSameSeedGrowsTheSamePlantsAndAnotherSeedOthers() {
+        TreePlacement.Layout a = place(RAMP, 0, 0, 800, ANYWHERE, 7);
+        TreePlacement.Layout b = place(RAMP, 0, 0, 800, ANYWHERE, 7);
+        TreePlacement.Layout c = place(RAMP, 0, 0, 800, ANYWHERE, 8);
+        assertTrue(a.count() > 100, "plants: " + a.count());
+        assertArrayEquals(a.records(), b.records());
+        Set<String> shared = feet(a, Double.NEGATIVE_INFINITY);
+        shared.retainAll(feet(c, Double.NEGATIVE_INFINITY));
+        assertTrue(shared.size() < a.count() / 20, "plants shared by two seeds: " + shared.size() + " of " + a.count());
+    }
+
+    @Test
+    void aTilesPlantsDoNotDependOnTheOrderOrTheThreadTilesArePlacedOn() throws InterruptedException {
+        PlacementField field = new PlacementField(RAMP, null, ANYWHERE, 3);
+        List<long[]> tiles = TreePlacement.tilesAround(0, 0, 900);
+        List<TreePlacement.Tile> inOrder = new ArrayList<>();
+        for (long[] t : tiles) {
+            inOrder.add(TreePlacement.tile(field, RAMP, t[0], t[1], VegetationSettings.DEFAULTS, ANYWHERE, 3));
+        }
+        // the same tiles, shuffled, on two threads at once, with a field made afresh (as a new placer would)
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < tiles.size(); i++) {
+            order.add(i);
+        }
+        Collections.shuffle(order, new Random(1));
+        TreePlacement.Tile[] shuffled = new TreePlacement.Tile[tiles.size()];
+        PlacementField fresh = new PlacementField(RAMP, null, ANYWHERE, 3);
+        Thread[] threads = new Thread[2];
+        for (int n = 0; n < threads.length; n++) {
+            int start = n;
+            threads[n] = new Thread(() -> {
+                for (int k = start; k < order.size(); k += 2) {
+                    long[] t = tiles.get(order.get(k));
+                    shuffled[order.get(k)] = TreePlacement.tile(fresh, RAMP, t[0], t[1], VegetationSettings.DEFAULTS,
+                            ANYWHERE, 3);
+                }
+            });
+            threads[n].start();
+        }
+        for (Thread t : threads) {
+            t.join();
+        }
+        int plants = 0;
+        for (int i = 0; i < tiles.size(); i++) {
+            for (int k = 0; k < TreePlacement.KINDS; k++) {
+                assertArrayEquals(inOrder.get(i).records()[k], shuffled[i].records()[k], "tile " + i + ", kind " + k);
+                plants += inOrder.get(i).records()[k].length / TreePlacement.FLOATS;
+            }
+        }
+        assertTrue(plants > 1000, "plants compared: " + plants);
+    }
+
+    @Test
+    void aPlacerThatMovedGrowsTheSamePlantsWhereTheTwoDiscsOverlap() {
+        TreePlacer placer = new TreePlacer(new TreePlacer.World(RAMP, null, VegetationSettings.DEFAULTS, ANYWHERE, 3));
+        Set<String> here = feet(placer.around(0, 0, 600), Double.NEGATIVE_INFINITY);
+        Set<String> moved = feet(placer.around(300, -170, 600), Double.NEGATIVE_INFINITY);
+        Set<String> fresh = feet(place(RAMP, 300, -170, 600, ANYWHERE, 3), Double.NEGATIVE_INFINITY);
+        assertEquals(fresh, moved, "tiles kept from before and tiles placed afresh make the same plants");
+        Set<String> both = new HashSet<>(here);
+        both.retainAll(moved);
+        assertTrue(both.size() > 100, "plants in the overlap: " + both.size());
+    }
+
+    @Test
+    void noPlantStandsBelowTheWaterPlusTheShoreMarginOrAboveTheSnowLine() {
+        // a 22° slope, from −400 m to 400 m across the disc; water at −5 m, the margin 2 m, the snow from 300 m
+        HeightField hill = (x, z) -> 0.4 * x;
+        TreePlacement.Limits limits = new TreePlacement.Limits(-5 + 2, 300, VegetationSettings.DEFAULTS.maxGradient());
+        TreePlacement.Layout kept = place(hill, 0, 0, 1000, limits, 1);
+        assertTrue(kept.count() > 100, "plants between the water and the snow: " + kept.count());
+        for (int i = 0; i < kept.count(); i++) {
+            double y = at(kept, i, 1);
+            assertEquals(hill.heightAt(at(kept, i, 0), at(kept, i, 2)), y, 1e-3, "the foot is on the ground");
+            assertTrue(y >= -3 && y <= 300, "a foot at " + y + " m, outside −3 .. 300 m");
+        }
+    }
+
+    @Test
+    void noPlantStandsOnGroundSteeperThanTheLimit() {
+        // flat west of x = 0; east of it a 40° slope (gradient 0.84), steeper than the default 30° (0.58)
+        HeightField cliff = (x, z) -> Math.max(0, x) * Math.tan(Math.toRadians(40));
+        TreePlacement.Layout layout = place(cliff, 0, 0, 500, ANYWHERE, 5);
+        assertTrue(layout.count() > 100, "plants on the flat half: " + layout.count());
+        for (int i = 0; i < layout.count(); i++) {
+            assertTrue(at(layout, i, 0) < TreePlacement.PROBE, "a plant on the slope at x = " + at(layout, i, 0));
+        }
+        // with a 45° limit the slope grows what flat ground there would: the field does not see the tilt (no water,
+        // no snow, a plane has no hollows), except within its probe of the fold at x = 0
+        TreePlacement.Limits steep = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Math.tan(Math.toRadians(45)));
+        double clear = PlacementField.PROBE + TreePlacement.PROBE;
+        Set<String> climbing = feet(place(cliff, 0, 0, 500, steep, 5), clear);
+        assertTrue(climbing.size() > 30, "plants on the slope: " + climbing.size());
+        assertEquals(feet(place(HeightField.FLAT, 0, 0, 500, ANYWHERE, 5), clear), climbing);
+    }
+
+    @Test
+    void theDensityFollowsTheField() {
+        // on flat ground with no water and no snow the field is the forest patches times the moisture stand-in's
+        // base; the disc's ground is sorted into four classes by the field's value, from a 10 m grid
+        double radius = 1500;
+        int seed = 11;
+        VegetationSettings s = VegetationSettings.DEFAULTS;
+        PlacementField field = new PlacementField(HeightField.FLAT, null, ANYWHERE, seed);
+        double cellArea = 100;
+        double[] area = new double[4];
+        double[] expected = new double[4];
+        for (double x = -radius; x < radius; x += 10) {
+            for (double z = -radius; z < radius; z += 10) {
+                if (Math.hypot(x + 5, z + 5) < radius) {
+                    double f = field.density(x + 5, z + 5, 0);
+                    int c = Math.min(3, (int) (f * 4));
+                    area[c] += cellArea;
+                    expected[c] += s.density() / 10_000 * cellArea * f;
+                }
+            }
+        }
+        int[] counted = new int[4];
+        TreePlacement.Layout layout = TreePlacement.around(HeightField.FLAT, null, 0, 0, radius, s, ANYWHERE, seed);
+        for (int i = 0; i < layout.count(); i++) {
+            if (Math.hypot(at(layout, i, 0), at(layout, i, 2)) < radius) {
+                counted[Math.min(3, (int) (field.density(at(layout, i, 0), at(layout, i, 2), 0) * 4))]++;
+            }
+        }
+        double disc = Math.PI * radius * radius;
+        // forests and clearings: both the sparsest and the densest class cover a good share of the ground
+        assertTrue(area[0] > 0.15 * disc && area[3] > 0.05 * disc, "field classes' areas: " + List.of(area[0],
+                area[1], area[2], area[3]));
+        for (int c = 0; c < 4; c++) {
+            // a sum of independent cells' draws: a binomial spread of at most √expected, allowed four of them; the
+            // 10 m grid's estimate of each class's integral adds its edge cells' error, a few per cent of it
+            double allowed = 4 * Math.sqrt(expected[c]) + 0.05 * expected[c];
+            assertEquals(expected[c], counted[c], allowed, "plants where the field is " + c / 4.0 + " to "
+                    + (c + 1) / 4.0);
+        }
+        assertTrue(counted[3] / area[3] > 5 * counted[0] / area[0], "forest against open: " + counted[3] / area[3]
+                + " and " + counted[0] / area[0] + " a square metre");
+    }
+
+    @Test
+    void thinsOutTowardsTheSnowLine() {
+        // the field's tree line without water: nothing at the snow line's start, the full density 250 m below it
+        TreePlacement.Limits limits = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, 12, 1);
+        PlacementField field = new PlacementField(RAMP, null, limits, 1);
+        assertEquals(0, field.treeline(12), 1e-9);
+        assertEquals(1, field.treeline(12 - PlacementField.TREELINE_BAND), 1e-9);
+        assertTrue(field.treeline(12 - PlacementField.TREELINE_BAND / 2) < 0.6);
+        // with water, over the top quarter of the heights from the shore (2 m) to the snow (402 m): 302 to 402 m
+        PlacementField shore = new PlacementField(RAMP, null, new TreePlacement.Limits(2, 402, 1), 1);
+        assertEquals(0, shore.treeline(402), 1e-9);
+        assertEquals(1, shore.treeline(302), 1e-9);
+        assertEquals(0.5, shore.treeline(352), 1e-9);
+    }
+
+    @Test
+    void heightsTurnsAndTintsLieInTheirRanges() {
+        TreePlacement.Layout layout = place(RAMP, 0, 0, 500, ANYWHERE, 2);
+        VegetationSettings s = VegetationSettings.DEFAULTS;
+        Set<TreeKind> kinds = new HashSet<>();
+        for (int i = 0; i < layout.count(); i++) {
+            TreeKind kind = kindOf(layout, i);
+            kinds.add(kind);
+            double h = at(layout, i, 3) / kind.scale;
+            assertTrue(h >= s.minHeight() - 1e-3 && h <= s.maxHeight() + 1e-3, "height " + h);
+            assertTrue(at(layout, i, 4) >= 0 && at(layout, i, 4) < 2 * Math.PI, "turn");
+            assertTrue(at(layout, i, 5) >= 0 && at(layout, i, 5) < 1, "tint");
+        }
+        assertEquals(Set.of(TreeKind.values()), kinds, "every kind grows on the ramp");
+    }
+
+    @Test
+    void everyTileBoxHoldsItsPlantsWholeAndTheRootHoldsEveryTile() {
+        TreePlacement.Layout layout = place(RAMP, 100, 100, 700, ANYWHERE, 4);
+        float[] boxes = layout.bounds().boxes();
+        assertEquals(layout.tiles(), layout.bounds().childCount(0));
+        int plants = 0;
+        for (TreeKind kind : TreeKind.values()) {
+            for (int t = 0; t < layout.tiles(); t++) {
+                int node = layout.bounds().firstChild(0) + t;
+                assertEquals(plants, layout.tileFirst()[kind.ordinal()][t], "tiles follow one another");
+                for (int i = plants; i < plants + layout.tileCount()[kind.ordinal()][t]; i++) {
+                    double h = at(layout, i, 3);
+                    double reach = kind.reach * h - 1e-3; // less a float's rounding at a few hundred metres
+                    assertTrue(at(layout, i, 0) - reach >= boxes[6 * node]
+                            && at(layout, i, 0) + reach <= boxes[6 * node + 3]);
+                    assertTrue(at(layout, i, 2) - reach >= boxes[6 * node + 2]
+                            && at(layout, i, 2) + reach <= boxes[6 * node + 5]);
+                    assertTrue(at(layout, i, 1) - TreeShape.SINK * h >= boxes[6 * node + 1] - 1e-3);
+                    assertTrue(at(layout, i, 1) + h <= boxes[6 * node + 4] + 1e-3);
+                }
+                for (int c = 0; c < 3; c++) {
+                    assertTrue(boxes[c] <= boxes[6 * node + c] && boxes[3 + c] >= boxes[6 * node + 3 + c], "root");
+                }
+                plants += layout.tileCount()[kind.ordinal()][t];
+            }
+        }
+        assertEquals(layout.count(), plants);
+        assertTrue(layout.tiles() > 0);
+    }
+
+    @Test
+    void everyShapeIsWithinItsKindsReachAndTheSimplifiedOnesAreCheaper() {
+        for (TreeKind kind : TreeKind.values()) {
+            TreeShape.Geometry near = TreeShape.of(kind, false);
+            TreeShape.Geometry far = TreeShape.of(kind, true);
+            for (TreeShape.Geometry shape : List.of(near, far)) {
+                float[] v = shape.vertices();
+                double widest = 0;
+                double top = 0;
+                for (int i = 0; i < v.length; i += TreeShape.FLOATS) {
+                    widest = Math.max(widest, Math.hypot(v[i], v[i + 2]));
+                    top = Math.max(top, v[i + 1]);
+                }
+                // the shader widens a plant by up to 1.15 (tree.vert, WIDTH_LOW + WIDTH_SPREAD) and leans it
+                // downwind by at most 0.06 x 1.33 of its height at the top (MAX_LEAN times the swing)
+                assertTrue(widest * 1.15 + 0.08 <= kind.reach, kind + ": widest " + (widest * 1.15 + 0.08));
+                assertTrue(top <= 1.0 + 1e-6, kind + ": top " + top);
+            }
+            assertTrue(far.triangleCount() * 4 <= near.triangleCount(), kind + ": " + far.triangleCount()
+                    + " triangles far, " + near.triangleCount() + " near");
+        }
+    }
+}

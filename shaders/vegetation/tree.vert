@@ -1,0 +1,64 @@
+#version 330 core
+// A plant, one instance per record (engine: org.openworld.engine.vegetation.TreeDraw). The shape is 1 unit tall on
+// the origin; each plant's record scales it to its height, turns it about the vertical, widens or narrows it a
+// little, sways it in the wind and stands it on its foot. Shared by the lit program (MAIN, REFLECTION) and the
+// depth-only one (SHADOW).
+//
+// Plants shrink into the ground over the last fifth of the view distance, and switch from the full shape to the
+// simplified one at the LOD distance, both measured from the VIEWER (viewerPos(), the same in every pass): measured
+// from cameraPos(), which in the shadow pass is the sun's camera hundreds of metres away, most plants would be gone
+// from the shadow maps while still standing in the picture.
+#include "common/frame.glsl"
+
+layout(location = 0) in vec3 msPos;      // the shape, units of the plant's height: per vertex
+layout(location = 1) in vec3 msNormal;
+layout(location = 2) in float part;      // 0 trunk, 1 foliage
+layout(location = 3) in vec4 footHeight; // xyz: the foot, world space (m); w: height (m): per instance
+layout(location = 4) in vec2 turnTint;   // x: turn about the vertical (radians); y: tint 0..1
+
+uniform vec2 uFade; // x: distance from the viewer where plants start to shrink (m); y: where they are gone (m)
+uniform vec3 uLod;  // x, y: the cross-fade from the full shape to the simplified one (m); z: 0 full shape, 1 simplified
+uniform vec2 uWind; // the wind among the plants, m/s, x east and z south
+
+out vec3 wsPos;
+out vec3 wsNormal;
+out vec3 msShape;         // the shape's point, for the leaves' and the bark's patterns
+flat out float vPart;
+flat out float vTint;
+flat out float vFar;      // the simplified shape's share at this plant, 0..1 (the cross-fade)
+
+const float WIDTH_LOW = 0.85;   // the narrowest plant's width, times the shape's
+const float WIDTH_SPREAD = 0.3; // ... to the widest, 1.15 times
+// Sway: a crown bends downwind by this share of its height per m/s, as the square of the height up the stem (a
+// cantilever's bend), capped at MAX_LEAN; it swings by a third of that about the mean at 0.3 Hz (a grown tree's
+// first mode) with a phase from its place, so neighbours do not swing in step.
+const float LEAN_PER_MS = 0.004;
+const float MAX_LEAN = 0.06;
+const float SWING_HZ = 0.3;
+
+void main() {
+    float d = distance(footHeight.xyz, viewerPos());
+    float shrink = 1.0 - smoothstep(uFade.x, uFade.y, d);
+    // the simplified shape's share: 0 before the band, 1 after it; a zero-width band is a hard switch
+    vFar = clamp((d - uLod.x) / max(uLod.y - uLod.x, 1e-3), 0.0, 1.0);
+    bool other = uLod.z < 0.5 ? vFar >= 1.0 : vFar <= 0.0;
+    float c = cos(turnTint.x);
+    float s = sin(turnTint.x);
+    mat2 turn = mat2(c, s, -s, c);
+    float width = WIDTH_LOW + WIDTH_SPREAD * turnTint.y;
+    vec3 p = vec3(turn * msPos.xz * width, msPos.y).xzy;
+    // widening by w across squeezes the normal's horizontal part by 1 / w (the inverse transpose)
+    vec3 n = vec3(turn * msNormal.xz / width, msNormal.y).xzy;
+    float speed = length(uWind);
+    float phase = dot(footHeight.xz, vec2(0.37, 0.51));
+    float swing = 1.0 + 0.33 * sin(6.2831853 * SWING_HZ * frame.timeInfo.x + phase);
+    vec2 lean = speed > 0.0 ? uWind / speed * min(MAX_LEAN, LEAN_PER_MS * speed) * swing : vec2(0.0);
+    p.xz += lean * max(msPos.y, 0.0) * max(msPos.y, 0.0);
+    wsPos = footHeight.xyz + p * footHeight.w * shrink;
+    wsNormal = normalize(n);
+    msShape = msPos * footHeight.w;
+    vPart = part;
+    vTint = turnTint.y;
+    // a plant wholly on the other shape's side of the band: folded away before the rasteriser
+    gl_Position = other ? vec4(0.0, 0.0, 2.0, 1.0) : frame.viewProjection * vec4(wsPos, 1.0);
+}
