@@ -10,6 +10,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -56,9 +57,9 @@ public final class MinimapSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        // transparent(): drawn over the finished picture, after every other system that draws in OVERLAY
+        // Layer.TRANSPARENT: drawn over the finished picture, after every other system that draws in OVERLAY
         return SystemSpec.named("minimap").reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class)
-                .transparent().draws(Pass.OVERLAY)
+                .layer(Layer.TRANSPARENT).draws(Pass.OVERLAY)
                 .offByDefault(); // shots and figures unchanged unless asked for: --set system.minimap=on
     }
 

@@ -21,6 +21,7 @@ import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Owned;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -98,7 +99,7 @@ public final class ParticleSystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("particles").reads(Settings.class, Camera.class, HeightField.class, Wind.class)
-                .updatesOnGpu().transparent().draws(Pass.MAIN)
+                .updatesOnGpu().layer(Layer.TRANSPARENT).draws(Pass.MAIN)
                 .offByDefault(); // a fair day by default: --set system.particles=on makes it snow (figure 14)
     }
 

@@ -17,6 +17,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -55,7 +56,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * step's.
  *
  * <p>Per pass (the water's REFLECTION, without the sun's disc, which the water adds as glitter; and MAIN) the sky is
- * the {@link org.openworld.engine.core.SystemSpec#background() background}: drawn after every opaque system, on the
+ * the {@link org.openworld.engine.core.Layer#BACKGROUND background}: drawn after every opaque system, on the
  * far plane with the depth test on and depth writes off, so a pixel some surface covers is rejected before it is
  * shaded, and each sky pixel is one panorama lookup plus the sun's disc.
  *
@@ -138,7 +139,7 @@ public final class SkySystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("sky").reads(TimeOfDay.class, Settings.class, Camera.class)
-                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).updatesOnGpu().background()
+                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).updatesOnGpu().layer(Layer.BACKGROUND)
                 .draws(Pass.REFLECTION, Pass.MAIN);
     }
 

@@ -78,7 +78,7 @@
  * towards the horizon), and that with horizon fog (the default).
  *
  * <p><b>Each pixel once, and cheaply.</b> The sky is the frame's background
- * ({@link org.openworld.engine.core.SystemSpec#background()}): it draws after the terrain and the trees, a full-screen
+ * ({@link org.openworld.engine.core.Layer#BACKGROUND}): it draws after the terrain and the trees, a full-screen
  * triangle on the far plane with the depth test {@code LEQUAL} and no depth writes, so every pixel a surface covers
  * fails the depth test before its fragment shader runs (early depth rejection, which llvmpipe does too while the
  * shader neither writes depth nor discards), and the sky costs in proportion to the sky one sees. What it does shade

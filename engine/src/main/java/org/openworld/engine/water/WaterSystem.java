@@ -15,6 +15,7 @@ import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Owned;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
@@ -98,12 +99,12 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     @Override
     public SystemSpec spec() {
-        // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
+        // Layer.OVER_OPAQUE: after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
         // copies to show what lies behind the water. The level is published, not written in the frame: the trees,
         // opaque and so before the water, read it too. prepares(REFLECTION): in the reflection pass it draws
         // nothing, only scissors the pass to the water's part of the screen (beginPass).
         return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class)
-                .publishes(WaterLevel.class).overOpaque().prepares(Pass.REFLECTION).draws(Pass.MAIN);
+                .publishes(WaterLevel.class).layer(Layer.OVER_OPAQUE).prepares(Pass.REFLECTION).draws(Pass.MAIN);
     }
 
     @Override
