@@ -98,6 +98,11 @@ public final class ShaderProgram implements Labelled {
         return resolve(new Uniform.Int(name));
     }
 
+    /** A sampler uniform set once to its texture unit, handed out by {@link TextureUnits}. */
+    public Uniform.Int sampler(TextureUnits.Sampler sampler) {
+        return sampler(sampler.name(), sampler.unit());
+    }
+
     /** A sampler uniform set once to its texture unit. */
     public Uniform.Int sampler(String name, int unit) {
         Uniform.Int sampler = int1(name);

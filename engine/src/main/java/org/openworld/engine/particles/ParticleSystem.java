@@ -34,6 +34,7 @@ import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.gl.VertexArray;
 import org.openworld.engine.settings.Settings;
@@ -57,8 +58,9 @@ public final class ParticleSystem implements EngineSystem {
     private static final float MIN_RADIUS_PIXELS = 1;
     /** A flake's albedo: fresh snow reflects 80–90% of visible light. */
     private static final float ALBEDO = 0.85f;
-    /** Texture unit of the ground patch in the update program. */
-    private static final int UNIT_GROUND = 0;
+    private static final TextureUnits UNITS = new TextureUnits();
+    /** The ground patch in the update program. */
+    private static final TextureUnits.Sampler GROUND = UNITS.add("ground");
     /**
      * An eye that moved more than this share of the cube's side between two steps jumped: 1/4 of the default 30 m
      * in 1/60 s is 450 m/s, beyond any flight.
@@ -114,7 +116,7 @@ public final class ParticleSystem implements EngineSystem {
         owned = context.owned();
         updateProgram = context.own("update", context.shaders().feedbackProgram("particles/update.vert",
                 "outPosition", "outVelocity"));
-        updateProgram.sampler("ground", UNIT_GROUND);
+        updateProgram.sampler(GROUND);
         updateUniforms = new UpdateUniforms(updateProgram.vec4("uForces"), updateProgram.vec3("uWind"),
                 updateProgram.vec4("uVolume"), updateProgram.int1("uStepKey"), updateProgram.vec4("uGround"));
         drawProgram = context.own("draw", context.shaders().program("particles/flake.vert", "particles/flake.frag"));
@@ -139,7 +141,7 @@ public final class ParticleSystem implements EngineSystem {
         updateUniforms.stepKey().set(SnowMotion.stepKey(world.resource(Settings.class).get(EngineSettings.class).seed(),
                 steps));
         updateUniforms.ground().set(ground.originX(), ground.originZ(), 1f / ground.spacing(), ground.samples());
-        groundTexture.bind(UNIT_GROUND);
+        groundTexture.bind(GROUND.unit());
 
         updateFrom[current].bind();
         states[1 - current].bindForFeedback(0);

@@ -17,6 +17,7 @@ import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -34,9 +35,10 @@ import org.openworld.engine.gl.Uniform;
  */
 final class ShadowProbe {
 
-    /** Texture units: the copied depth, the previous frame's points. */
-    private static final int UNIT_DEPTH = 0;
-    private static final int UNIT_POINTS = 1;
+    private static final TextureUnits UNITS = new TextureUnits();
+    /** The copied depth, the previous frame's points. */
+    private static final TextureUnits.Sampler DEPTH = UNITS.add("sceneDepth");
+    private static final TextureUnits.Sampler POINTS = UNITS.add("points");
 
     private final GlContext gl;
     /** The system's owner, which closes the targets as they are re-made and everything at the end. */
@@ -61,8 +63,8 @@ final class ShadowProbe {
         this.owned = context.owned();
         fullScreen = context.own("probe.fullScreen", Mesh.fullScreenTriangle(gl));
         program = context.own("probe", context.shaders().program("shadow/probe.vert", "shadow/probe.frag"));
-        program.sampler("sceneDepth", UNIT_DEPTH);
-        program.sampler("points", UNIT_POINTS);
+        program.sampler(DEPTH);
+        program.sampler(POINTS);
         revisit = program.int1("revisit");
     }
 
@@ -78,11 +80,11 @@ final class ShadowProbe {
         // 2. per pixel: visibility and world point (probe.frag), every pixel written, read back bottom row first
         glDisable(GL_DEPTH_TEST);
         program.use();
-        depthCopy.depth().bind(UNIT_DEPTH);
+        depthCopy.depth().bind(DEPTH.unit());
         draw(probed, false, context, pixels);
         // 3. the last frame's points under this frame's maps: what changed there is the maps' flicker
         if (haveLast) {
-            lastProbed.color().bind(UNIT_POINTS);
+            lastProbed.color().bind(POINTS.unit());
             draw(revisited, true, context, revisitedPixels);
         }
         // 4. judged against the last frame and the height field, into the counters

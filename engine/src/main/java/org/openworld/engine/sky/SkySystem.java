@@ -156,8 +156,8 @@ public final class SkySystem implements EngineSystem {
         int seed = settings.get(EngineSettings.class).seed();
         cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), seed);
         program = context.own("program", context.shaders().program("sky/sky.vert", "sky/sky.frag"));
-        program.sampler("skyPanorama", 0);
-        program.sampler("cloudPanorama", 1);
+        program.sampler(SkyPanorama.SKY_PANORAMA);
+        program.sampler(SkyPanorama.CLOUD_PANORAMA);
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
         sunDisc = program.float1("uSunDisc");
@@ -252,9 +252,9 @@ public final class SkySystem implements EngineSystem {
             threshold = CloudField.coverageThreshold(cloudField, c.cover());
             thresholdCover = c.cover();
         }
-        skyView.bind(SkyPanorama.UNIT_VIEW);
-        clouds.bind(SkyPanorama.UNIT_CLOUDS);
-        air.bind(SkyPanorama.UNIT_AIR);
+        skyView.bind(SkyPanorama.VIEW.unit());
+        clouds.bind(SkyPanorama.CLOUDS.unit());
+        air.bind(SkyPanorama.AIR.unit());
         Vector3f ground = new Vector3f(sun.color()).mul(Math.max(sun.direction().y(), 0)).add(sun.ambient());
         double light = Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT);
         panoramaScale = light < PANORAMA_SCALED_BELOW ? (float) (1 / light) : 1;
@@ -263,8 +263,8 @@ public final class SkySystem implements EngineSystem {
         // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
         // has a depth buffer, so the depth test passes whatever its state)
         program.use();
-        panorama.sky().bind(0);
-        panorama.clouds().bind(1);
+        panorama.sky().bind(SkyPanorama.SKY_PANORAMA.unit());
+        panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(1);
         nightUniforms.set(night, panoramaScale);
         environment.render(face -> {
@@ -320,8 +320,8 @@ public final class SkySystem implements EngineSystem {
     @Override
     public void render(Pass pass, RenderContext context) {
         program.use();
-        panorama.sky().bind(0);
-        panorama.clouds().bind(1);
+        panorama.sky().bind(SkyPanorama.SKY_PANORAMA.unit());
+        panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
         nightUniforms.set(night, panoramaScale);

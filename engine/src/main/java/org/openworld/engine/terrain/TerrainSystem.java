@@ -23,6 +23,7 @@ import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -52,10 +53,11 @@ public final class TerrainSystem implements EngineSystem {
     static final int FAR_LEVEL = 7;
     /** The most copies drawn on each side of the camera's tile (a small tile is cheap far away, but not free). */
     static final int MAX_COPY_RADIUS = 3;
-    /** Texture units: the terrain's maps first (heights, gradients, snow), then the materials (TerrainShading). */
-    private static final int UNIT_HEIGHTS = 0;
-    private static final int UNIT_GRADIENTS = 1;
-    private static final int UNIT_SNOW = 2;
+    /** Texture units: the terrain's maps first (heights, gradients, snow, in this order), then the materials. */
+    private static final TextureUnits UNITS = new TextureUnits();
+    private static final int UNIT_HEIGHTS = UNITS.add("heights").unit();
+    private static final int UNIT_GRADIENTS = UNITS.add("gradients").unit();
+    private static final int UNIT_SNOW = UNITS.add("snowMap").unit();
 
     private final Consumer<String> progress;
     /** The tile's heights, pyramid, snow map and sky view; null for the unbounded world. */

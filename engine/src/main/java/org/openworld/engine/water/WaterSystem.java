@@ -248,10 +248,10 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         WaterOptics optics = WaterOptics.of(s.clarity());
         WaterPrograms.Ripple ripple = new WaterPrograms.Ripple((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
                 (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale);
-        behind.color().bind(WaterPrograms.UNIT_REFRACTION);
-        behind.depth().bind(WaterPrograms.UNIT_DEPTH);
-        fresnelTable.bind(WaterPrograms.UNIT_FRESNEL);
-        ripples.bind(WaterPrograms.UNIT_RIPPLES);
+        behind.color().bind(WaterPrograms.REFRACTION.unit());
+        behind.depth().bind(WaterPrograms.DEPTH.unit());
+        fresnelTable.bind(WaterPrograms.FRESNEL.unit());
+        ripples.bind(WaterPrograms.RIPPLES.unit());
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         if (underwater) {
@@ -263,7 +263,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
             return;
         }
         if (reflection != null) {
-            reflection.color().bind(WaterPrograms.UNIT_REFLECTION);
+            reflection.color().bind(WaterPrograms.REFLECTION.unit());
         }
         double slopeVariance = s.rmsSlope() * s.rmsSlope();
         programs.useAbove(onScreen(context.camera(), s), (float) s.level(), optics, ripple, reflected,
@@ -305,7 +305,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         glColorMask(true, true, true, true);
         // 4. the mirrored scene over the whole screen, kept where the stencil says water, blended by its alpha
         if (reflected) {
-            reflection.color().bind(WaterPrograms.UNIT_REFLECTION);
+            reflection.color().bind(WaterPrograms.REFLECTION.unit());
             glDisable(GL_DEPTH_TEST);
             glDepthMask(false);
             glStencilFunc(GL_EQUAL, 0xFF, 0xFF);
