@@ -16,6 +16,7 @@ import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -51,6 +52,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * square {@link Mesh}, instanced over the current state buffer ({@link Mesh#instances}, the position of each record).
  */
 public final class ParticleSystem implements EngineSystem {
+    /** The counter of the flakes alive. */
+    private static final Counter COUNT = Counter.of("particles", "count");
 
     /** Samples a side of the ground patch: 0.47 m apart under the default 30 m cube (the patch spans two cubes). */
     private static final int GROUND_SAMPLES = 128;
@@ -171,7 +174,7 @@ public final class ParticleSystem implements EngineSystem {
         square.drawInstances(0, count, context.stats());
         glDisable(GL_BLEND);
         glDepthMask(true);
-        world.resource(Counters.class).put("particles.count", count);
+        world.resource(Counters.class).put(COUNT, count);
     }
 
     /**

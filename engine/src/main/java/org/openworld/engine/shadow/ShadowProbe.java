@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL11C.*;
 import static org.lwjgl.opengl.GL30C.*;
 
 import org.joml.Vector3fc;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.HeightField;
@@ -34,6 +35,11 @@ import org.openworld.engine.gl.Uniform;
  * the ground is taken as flat at sea level.
  */
 final class ShadowProbe {
+    /** The counters: the flicker's mean and its pixels, the acne's fraction and its pixels. */
+    private static final Counter FLICKER = Counter.of("shadow", "flicker");
+    private static final Counter FLICKER_PIXELS = Counter.of("shadow", "flicker-pixels");
+    private static final Counter ACNE = Counter.of("shadow", "acne");
+    private static final Counter ACNE_PIXELS = Counter.of("shadow", "acne-pixels");
 
     private static final TextureUnits UNITS = new TextureUnits();
     /** The copied depth, the previous frame's points. */
@@ -118,11 +124,11 @@ final class ShadowProbe {
         ShadowStatistics.Measures measures = statistics.measure(pixels, lastPointsNow, probed.width(), eye, toSun,
                 ground, highestCaster(CasterHeights.of(world)));
         measures.flicker().ifPresent(flicker -> {
-            counters.put("shadow.flicker", flicker.mean());
-            counters.put("shadow.flicker-pixels", flicker.pixels());
+            counters.put(FLICKER, flicker.mean());
+            counters.put(FLICKER_PIXELS, flicker.pixels());
         });
-        counters.put("shadow.acne", measures.acne().fraction());
-        counters.put("shadow.acne-pixels", measures.acne().pixels());
+        counters.put(ACNE, measures.acne().fraction());
+        counters.put(ACNE_PIXELS, measures.acne().pixels());
     }
 
     /**

@@ -14,6 +14,7 @@ import org.joml.Vector4f;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -64,6 +65,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * panorama and the environment map were redrawn).
  */
 public final class SkySystem implements EngineSystem {
+    /** The counters: 1 when the panorama was drawn; CPU time of tables that arrived this frame, ms. */
+    private static final Counter PANORAMA_DRAWN = Counter.of("sky", "panorama");
+    private static final Counter TABLES_MS = Counter.of("sky", "tables-ms");
 
     /** Texels along a side of the environment map's faces: the sky's gradients are smooth, so few suffice. */
     public static final int ENVIRONMENT_SIZE = 64;
@@ -276,7 +280,7 @@ public final class SkySystem implements EngineSystem {
         panoramaSun.set(sun.direction());
         panoramaClouds = c;
         panoramaAlbedo = albedo;
-        counters.put("sky.panorama", 1);
+        counters.put(PANORAMA_DRAWN, 1);
     }
 
     /** New tables for a sun and an eye, reusing those of {@code current} (may be null) that the air shares. */
@@ -296,7 +300,7 @@ public final class SkySystem implements EngineSystem {
 
     private void accept(SunTables fresh, Counters counters) {
         tables = fresh;
-        counters.put("sky.tables-ms", fresh.buildMillis());
+        counters.put(TABLES_MS, fresh.buildMillis());
     }
 
     /**

@@ -9,6 +9,7 @@ import org.joml.Vector3fc;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
@@ -43,6 +44,12 @@ import org.openworld.engine.settings.SettingsGroup;
  * the {@link SnowLine}: at init and again each update, as {@code materials.snow-mode} may change while it runs.
  */
 public final class TerrainSystem implements EngineSystem {
+    /** The counters, per pass: patches drawn and culled, selection's CPU time (ms), near patches, triangles. */
+    private static final Counter PATCHES = Counter.of("terrain", "patches");
+    private static final Counter CULLED = Counter.of("terrain", "culled");
+    private static final Counter SELECT_MS = Counter.of("terrain", "select-ms");
+    private static final Counter NEAR = Counter.of("terrain", "near");
+    private static final Counter TRIANGLES = Counter.of("terrain", "triangles");
 
     /**
      * How far from the camera's tile copies of a periodic tile are drawn, metres: where the ground's detail has
@@ -295,10 +302,9 @@ public final class TerrainSystem implements EngineSystem {
             unbounded.shadeFor(patches, copyOffsets, pass == Pass.MAIN ? StreamedWorld.UPLOADS_PER_FRAME : 0);
         }
         Counters counters = world.resource(Counters.class);
-        String prefix = "terrain." + pass.label() + ".";
-        counters.add(prefix + "patches", patches.size());
-        counters.add(prefix + "culled", selection.culledPatches());
-        counters.add(prefix + "select-ms", selectMs);
+        counters.add(PATCHES.in(pass), patches.size());
+        counters.add(CULLED.in(pass), selection.culledPatches());
+        counters.add(SELECT_MS.in(pass), selectMs);
         // 2. nearest first, so near ground hides far ground before it is shaded
         order.sort(patches, tree.bounds(), residency, copyOffsets, eye);
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
@@ -317,7 +323,7 @@ public final class TerrainSystem implements EngineSystem {
             }
             int near = shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class),
                     debug.colouring(), context.sunShadowed(), renderer, context.stats());
-            counters.add(prefix + "near", near);
+            counters.add(NEAR.in(pass), near);
             if (farField != null && pass == Pass.MAIN
                     && debug.colouring() == TerrainDebugSettings.Colouring.SHADED) {
                 // 4. beyond the patches, the far field to the horizon
@@ -329,7 +335,7 @@ public final class TerrainSystem implements EngineSystem {
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
         glDisable(GL_CULL_FACE);
-        context.world().resource(Counters.class).add(prefix + "triangles", context.stats().triangles() - triangles);
+        context.world().resource(Counters.class).add(TRIANGLES.in(pass), context.stats().triangles() - triangles);
     }
 
     private static Vector3f viewerEye(World world) {

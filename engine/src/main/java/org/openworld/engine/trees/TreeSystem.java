@@ -10,6 +10,7 @@ import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -43,6 +44,10 @@ import org.openworld.engine.settings.SettingsGroup;
  * cascades ({@link Pass#SHADOW}).
  */
 public final class TreeSystem implements EngineSystem {
+    /** The counters: placing's CPU time (ms, when the trees were placed again), the trees, those drawn per pass. */
+    private static final Counter PLACE_MS = Counter.of("trees", "place-ms");
+    private static final Counter COUNT = Counter.of("trees", "count");
+    private static final Counter DRAWN = Counter.of("trees", "drawn");
 
     /** The share of the view distance the viewer may move before the trees are placed again. */
     static final double REBUILD_SHARE = 0.25;
@@ -119,7 +124,7 @@ public final class TreeSystem implements EngineSystem {
         long t0 = System.nanoTime();
         layout = TreePlacement.around(now.field(), now.x(), now.z(), (1 + REBUILD_SHARE) * s.viewDistance(), s,
                 now.limits(), now.seed());
-        world.resource(Counters.class).put("trees.place-ms", (System.nanoTime() - t0) / 1e6);
+        world.resource(Counters.class).put(PLACE_MS, (System.nanoTime() - t0) / 1e6);
         placedFrom = now;
         placements++;
         FloatBuffer data = MemoryUtil.memAllocFloat(layout.records().length).put(layout.records()).flip();
@@ -185,8 +190,8 @@ public final class TreeSystem implements EngineSystem {
         drawn += runCount;
         glDisable(GL_CULL_FACE);
         Counters counters = world.resource(Counters.class);
-        counters.put("trees.count", layout.count());
-        counters.add("trees." + pass.label() + ".drawn", drawn);
+        counters.put(COUNT, layout.count());
+        counters.add(DRAWN.in(pass), drawn);
     }
 
     /** The trees placed now (tests and tools): {@link TreePlacement#FLOATS} floats per tree. */

@@ -11,6 +11,7 @@ import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -53,6 +54,8 @@ import org.openworld.engine.water.WaterSettings.Method;
  * height field stays when the terrain is switched off.
  */
 public final class WaterSystem implements EngineSystem, PassOwner {
+    /** The counter that is 1 when the eye is under the water. */
+    private static final Counter UNDERWATER = Counter.of("water", "underwater");
 
     /** Cosines per row of the Fresnel table: the steepest change, near total internal reflection, spans 3 texels. */
     private static final int FRESNEL_SIZE = 256;
@@ -212,7 +215,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
         updateRipples(s);
         boolean underwater = underwater(s, context.camera());
-        context.world().resource(Counters.class).put("water.underwater", underwater ? 1 : 0);
+        context.world().resource(Counters.class).put(UNDERWATER, underwater ? 1 : 0);
         // whether the reflection pass ran for this very camera this frame (see mirroredViewer): read, never reset
         boolean reflected = mirroredViewer == context.camera();
         if (drawsByStencil(s, context.camera())) {
