@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -23,6 +24,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.Engine;
+import org.openworld.engine.core.Counter;
+import org.openworld.engine.core.Pass;
 import org.openworld.engine.settings.Settings;
 
 /**
@@ -79,9 +82,10 @@ class DocsDriftTest {
 
     /** Declared type name → the source texts declaring it (a nested type maps to its outer file). */
     private static final Map<String, List<String>> TYPES = new HashMap<>();
-    /** Every string literal of the main sources: counter names such as {@code "sky.tables-ms"} are among them. */
+    /** Every string literal of the main sources, and every counter's name ({@code sky.tables-ms}, per pass too). */
     private static final Set<String> LITERALS = new HashSet<>();
     private static final Pattern LITERAL = Pattern.compile("\"([^\"\\\\]+)\"");
+    private static final Pattern COUNTER = Pattern.compile("Counter\\.of\\(\"([a-z0-9-]+)\", \"([a-z0-9-]+)\"\\)");
     private static Settings settings;
     private static Set<String> groups;
 
@@ -99,6 +103,12 @@ class DocsDriftTest {
                     Matcher literal = LITERAL.matcher(text);
                     while (literal.find()) {
                         LITERALS.add(literal.group(1));
+                    }
+                    Matcher counter = COUNTER.matcher(text);
+                    while (counter.find()) {
+                        Counter named = Counter.of(counter.group(1), counter.group(2));
+                        LITERALS.add(named.name());
+                        Arrays.stream(Pass.values()).forEach(pass -> LITERALS.add(named.in(pass).name()));
                     }
                 }
             }

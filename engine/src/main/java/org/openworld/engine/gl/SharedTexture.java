@@ -1,5 +1,9 @@
 package org.openworld.engine.gl;
 
+import java.nio.FloatBuffer;
+import org.joml.Vector3f;
+import org.lwjgl.system.MemoryUtil;
+
 /**
  * Textures every shader may sample without its system binding them: the engine binds each to its fixed unit before
  * every pass, and every program that declares the sampler gets it set to that unit at link time. They take the top
@@ -7,12 +11,19 @@ package org.openworld.engine.gl;
  * ({@link TextureUnits}, from 0) never meet them.
  */
 public enum SharedTexture {
+
     /** {@code sampler2DArrayShadow shadowMap}: the sun's shadow cascades ({@code shaders/common/shadow.glsl}). */
     SHADOW_MAP("shadowMap"),
     /** {@code samplerCube environmentMap}: the sky around the scene ({@code shaders/common/environment.glsl}). */
     ENVIRONMENT("environmentMap"),
     /** {@code sampler3D aerialPerspective}: the air's in-scattering and transmittance ({@code common/fog.glsl}). */
     AERIAL_PERSPECTIVE("aerialPerspective");
+
+    /**
+     * The radiance of the stand-in {@link #ENVIRONMENT}, a uniform sky, linear RGB (1 = the white of noon on a clear
+     * day): the ambient light of the sun a world without a sky has ({@code Sun.NOON}), so the two light alike.
+     */
+    public static final float NEUTRAL_SKY = 0.3f;
 
     /** Texture units a fragment shader is guaranteed (GL_MAX_TEXTURE_IMAGE_UNITS is at least 16 in OpenGL 3.3). */
     private static final int GUARANTEED_UNITS = 16;
@@ -21,6 +32,28 @@ public enum SharedTexture {
 
     SharedTexture(String sampler) {
         this.sampler = sampler;
+    }
+
+    /**
+     * A texture of one texel that stands in for this one where no shared resource binds it, and changes nothing:
+     * a shadow map at the far plane (everything lit), a uniform sky of {@link #NEUTRAL_SKY}, clear air (nothing
+     * scattered in, everything transmitted).
+     */
+    public GlTexture standIn(GlContext gl) {
+        return switch (this) {
+            case SHADOW_MAP -> DepthTextureArray.empty(gl);
+            case ENVIRONMENT -> CubeMapTexture.fromDirections(gl, 1, d -> new Vector3f(NEUTRAL_SKY));
+            case AERIAL_PERSPECTIVE -> clearAir(gl);
+        };
+    }
+
+    private static Texture3D clearAir(GlContext gl) {
+        FloatBuffer transmitted = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
+        try {
+            return Texture3D.of(gl, 1, 1, 1, Format.RGBA16F, Sampling.LINEAR_CLAMP, transmitted);
+        } finally {
+            MemoryUtil.memFree(transmitted);
+        }
     }
 
     /** The first unit the shared textures take: the units below it are the systems' own. */

@@ -23,6 +23,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.environment.SnowLine;
+import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.settings.Settings;
@@ -322,7 +323,7 @@ public final class TerrainSystem implements EngineSystem {
                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             }
             int near = shading.draw(patches, order, copyOffsets, settings.get(MaterialSettings.class),
-                    debug.colouring(), context.sunShadowed(), renderer, context.stats());
+                    debug.colouring(), context.shares(SunShadow.class), renderer, context.stats());
             counters.add(NEAR.in(pass), near);
             if (farField != null && pass == Pass.MAIN
                     && debug.colouring() == TerrainDebugSettings.Colouring.SHADED) {

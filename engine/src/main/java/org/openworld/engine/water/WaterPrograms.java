@@ -117,7 +117,7 @@ final class WaterPrograms {
      * @param glitterSlope2 mean square slope of the ripples finer than the texture
      * @param resolvedSlope2 mean square slope of the ripples the texture holds: where a pixel is too coarse to show
      *                       them, the shader moves this variance from the normal into the glitter's lobe
-     * @param sunShadowed   the pass has the sun's shadow maps bound (RenderContext#sunShadowed)
+     * @param sunShadowed   the pass has the sun's shadow maps bound (RenderContext#shares)
      */
     void useAbove(PlaneOnScreen plane, float level, WaterOptics optics, Ripple ripple, boolean hasReflection,
                   float glitterSlope2, float resolvedSlope2, boolean sunShadowed) {

@@ -25,6 +25,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
@@ -259,7 +260,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         glDepthMask(true);
         if (underwater) {
             // every pixel is under water: the shader writes the surface's depth, or the scene's where that is nearer
-            programs.useBelow((float) s.level(), optics, ripple, context.sunShadowed());
+            programs.useBelow((float) s.level(), optics, ripple, context.shares(SunShadow.class));
             glDepthFunc(GL_ALWAYS);
             fullScreen.draw(context.stats());
             glDepthFunc(GL_LESS);
@@ -271,7 +272,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         double slopeVariance = s.rmsSlope() * s.rmsSlope();
         programs.useAbove(onScreen(context.camera(), s), (float) s.level(), optics, ripple, reflected,
                 (float) (slopeVariance * (1 - RESOLVED_VARIANCE)), (float) (slopeVariance * RESOLVED_VARIANCE),
-                context.sunShadowed());
+                context.shares(SunShadow.class));
         drawPlane(context);
     }
 
