@@ -12,10 +12,21 @@ public final class ShaderLibrary {
     private final GlContext gl;
     private final ShaderSources sources;
     private final List<ShaderProgram> live = new ArrayList<>();
+    private final boolean onFirstUse;
 
+    /** A library whose programs compile when they are made, so an error comes at once. */
     public ShaderLibrary(GlContext gl, ShaderSources sources) {
+        this(gl, sources, false);
+    }
+
+    /**
+     * @param onFirstUse compile each program at its first {@link ShaderProgram#use()} rather than when it is made (the
+     *                   engine's: only the variants a frame draws are compiled)
+     */
+    public ShaderLibrary(GlContext gl, ShaderSources sources, boolean onFirstUse) {
         this.gl = gl;
         this.sources = sources;
+        this.onFirstUse = onFirstUse;
     }
 
     /** Compiles and links stage files, e.g. {@code program("sky/sky.vert", "sky/sky.frag")}. */
@@ -28,7 +39,7 @@ public final class ShaderLibrary {
      * {@code program(List.of("TERRAIN_FAR"), "terrain/terrain.vert", "terrain/terrain.frag")}.
      */
     public ShaderProgram program(List<String> defines, String... stageFiles) {
-        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), defines, live::remove));
+        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), defines, onFirstUse, live::remove));
     }
 
     /**
@@ -40,7 +51,8 @@ public final class ShaderLibrary {
         if (!vertexStage.endsWith(".vert") || captured.length == 0) {
             throw new IllegalArgumentException("a feedback program is one .vert stage and at least one captured output");
         }
-        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), List.of(), live::remove));
+        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), List.of(), onFirstUse,
+                live::remove));
     }
 
     private ShaderProgram track(ShaderProgram program) {
