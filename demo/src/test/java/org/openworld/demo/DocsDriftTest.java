@@ -253,17 +253,17 @@ class DocsDriftTest {
     }
 
     /**
-     * The architecture page's caption links each of the demo's systems to its page, by the system's name; a system
+     * The design page's caption links each of the demo's systems to its page, by the system's name; a system
      * added to {@code DemoScene.systems()} must be added there too.
      */
     @Test
-    void theArchitecturePageLinksEveryDemoSystem() {
-        List<String> page = DocPage.read("docs/architecture.md").lines();
+    void theDesignPageLinksEveryDemoSystem() {
+        List<String> page = DocPage.read("docs/design.md").lines();
         int from = 0;
         while (from < page.size() && !page.get(from).contains("`DemoScene.systems()`")) {
             from++;
         }
-        assertTrue(from < page.size(), "docs/architecture.md names DemoScene.systems()");
+        assertTrue(from < page.size(), "docs/design.md names DemoScene.systems()");
         Set<String> linked = new TreeSet<>();
         for (int i = from; i < page.size() && !page.get(i).isBlank(); i++) {
             Matcher link = LINK.matcher(page.get(i));
@@ -273,7 +273,7 @@ class DocsDriftTest {
         }
         Set<String> systems = new TreeSet<>();
         DemoScene.systems().forEach(system -> systems.add(system.spec().name()));
-        assertEquals(systems, linked, "docs/architecture.md:" + (from + 1) + ": the demo's systems, each linked by name");
+        assertEquals(systems, linked, "docs/design.md:" + (from + 1) + ": the demo's systems, each linked by name");
     }
 
     @Test
