@@ -19,8 +19,8 @@
  * another pass with the viewer in mind (the terrain's shadow casters are no finer than the ground the viewer sees).
  * A world resource that is a {@link org.openworld.engine.core.SharedResource} (the sky's maps, the sun's shadow) is
  * bound for every shader of a pass, over a stand-in, and a system asks
- * {@link org.openworld.engine.core.RenderContext#shares} whether it is. Systems report numbers per frame into the {@link org.openworld.engine.core.Counters}, each keyed by a
- * {@link org.openworld.engine.core.Counter} constant.
+ * {@link org.openworld.engine.core.RenderContext#shares} whether it is. Systems report numbers per frame into the
+ * {@link org.openworld.engine.core.Counters}, each keyed by a {@link org.openworld.engine.core.Counter} constant.
  *
  * <p><b>Shared vocabulary.</b> Types that several systems write or read, and that no one system owns, live here
  * rather than in a system's package: {@link org.openworld.engine.core.HeightField} (the ground, published by the
