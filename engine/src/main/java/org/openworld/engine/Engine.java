@@ -94,7 +94,7 @@ public final class Engine implements AutoCloseable {
     public Engine(GlContext gl, ShaderSources shaders, Settings settings, List<EngineSystem> systems,
                   int width, int height) {
         this.gl = gl;
-        this.shaders = new ShaderLibrary(gl, shaders, true); // each program compiled at its first use
+        this.shaders = new ShaderLibrary(gl, shaders, true, EngineSystem.shaderConstants(systems));
         this.settings = settings;
         this.order = SystemOrder.resolve(systems);
         for (EngineSystem system : order.systems()) {

@@ -24,7 +24,7 @@ import java.util.function.Consumer;
  * naming the program, when the uniform does not exist (or the compiler removed it as unused).
  *
  * <p>A program of a library that compiles on first use ({@link ShaderLibrary#ShaderLibrary(GlContext, ShaderSources,
- * boolean)}, the engine's) is compiled and linked by its first {@link #use()}: a variant no frame draws (another
+ * boolean, java.util.Map)}, the engine's) is compiled and linked by its first {@link #use()}: a variant no frame draws (another
  * tiling, the shadowed light with no shadow system) costs nothing. Until then its uniform handles wait and the values
  * set on them are kept, in order, for the link; an error (a compile error, a missing uniform) comes at that first
  * use, naming the program as at start-up. If the

@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL11C.*;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -150,6 +151,14 @@ public final class SkySystem implements EngineSystem {
     @Override
     public List<SettingsGroup<?>> settings() {
         return List.of(SkySettings.SETTINGS, AtmosphereSettings.SETTINGS, CloudSettings.SETTINGS);
+    }
+
+    /** The tables' layout, which {@code shaders/sky/atmosphere.glsl} reads them by. */
+    @Override
+    public Map<String, Number> shaderConstants() {
+        return Map.of("SKY_VIEW_WIDTH", SkyView.WIDTH, "SKY_VIEW_HEIGHT", SkyView.HEIGHT,
+                "AERIAL_WIDTH", AerialPerspective.WIDTH, "AERIAL_HEIGHT", AerialPerspective.HEIGHT,
+                "AERIAL_DEPTH", AerialPerspective.DEPTH, "AERIAL_MAX_DISTANCE", AerialPerspective.MAX_DISTANCE);
     }
 
     @Override

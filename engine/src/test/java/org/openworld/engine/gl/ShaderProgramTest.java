@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.HeadlessGl;
@@ -230,7 +231,7 @@ class ShaderProgramTest {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
         write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
-        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true);
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true, Map.of());
         int programs = GL.context().objects().live(GlObjects.Kind.PROGRAM);
 
         try (ShaderProgram program = library.program("fill.vert", "fill.frag");
@@ -250,11 +251,26 @@ class ShaderProgramTest {
     }
 
     @Test
+    void aLibrarysConstantsAreDefinedInEveryProgram() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(SHARED_GREY); }\n");
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true,
+                Map.of("SHARED_GREY", 0.25));
+        try (ShaderProgram program = library.program("fill.vert", "fill.frag")) {
+            int[] grey = draw(program, program.vec4("uScale"), 1);
+            assertEquals(64, grey[0], 1); // 0.25 · 255 = 63.75, rounded by the 8-bit target
+        }
+        ShaderLibrary without = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+        assertThrows(ShaderException.class, () -> without.program("fill.vert", "fill.frag"), "SHARED_GREY undefined");
+    }
+
+    @Test
     void aProgramCompiledOnFirstUseNamesItsErrorsThen() throws IOException {
         write("fill.vert", VERTEX);
         write("fill.frag", FRAGMENT);
         write("lib/tint.glsl", "vec3 tint() { return vec3(1.0) }\n"); // the semicolon missing
-        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true);
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true, Map.of());
         try (ShaderProgram broken = library.program("fill.vert", "fill.frag")) {
             ShaderException e = assertThrows(ShaderException.class, broken::use);
             assertTrue(e.getMessage().contains("tint.glsl"), e.getMessage());
