@@ -80,7 +80,7 @@ float insideness(vec3 coords) {
 }
 
 #ifdef SUN_UNSHADOWED
-// The variant for a pass with no shadow map bound (engine: RenderContext.sunShadowed): everything is lit, and no
+// The variant for a pass with no shadow map bound (engine: RenderContext.shares): everything is lit, and no
 // lookup is compiled in. With a map that shadows nothing (cascade count 0) the picture is the same, but a software
 // rasteriser runs a loop's body at least once, masked, whatever its count: the cascade loop and its filter cost a
 // fifth of the terrain's pixel time on llvmpipe, for no shadow.

@@ -1,14 +1,23 @@
 // Lookups into the sky tables built on the CPU by org.openworld.engine.sky (Hillaire 2020, paper 3.1).
-// Mirrors SkyView.uv and AerialPerspective's layout; keep the two in step.
+// The mapping is SkyView.uv's; the tables' sizes come from Java as defines (SkySystem.shaderConstants, from SkyView
+// and AerialPerspective). Without a sky system the engine binds a one-texel stand-in of clear air, and so do these.
 #include "common/conventions.glsl"
 
-// SkyView texture: 192 x 108 texels, u = azimuth from the sun's vertical plane / PI (0..PI: the sky is
-// symmetric about that plane), v = elevation with texels crowded at the horizon, row 0 at v = 0 (nadir).
-const vec2 SKY_VIEW_SIZE = vec2(192.0, 108.0);
-// AerialPerspective texture: 32 x 32 directions (same mapping as the sky view) x 32 distance slices.
-const vec3 AERIAL_SIZE = vec3(32.0, 32.0, 32.0);
-// Distance where the last slice ends, metres; slice k ends at AERIAL_MAX_DISTANCE * ((k + 1) / 32)^2.
-const float AERIAL_MAX_DISTANCE = 64000.0;
+#ifndef AERIAL_MAX_DISTANCE
+#define SKY_VIEW_WIDTH 1
+#define SKY_VIEW_HEIGHT 1
+#define AERIAL_WIDTH 1
+#define AERIAL_HEIGHT 1
+#define AERIAL_DEPTH 1
+#define AERIAL_MAX_DISTANCE 1.0
+#endif
+
+// SkyView texture: u = azimuth from the sun's vertical plane / PI (0..PI: the sky is symmetric about that plane),
+// v = elevation with texels crowded at the horizon, row 0 at v = 0 (nadir).
+const vec2 SKY_VIEW_SIZE = vec2(SKY_VIEW_WIDTH, SKY_VIEW_HEIGHT);
+// AerialPerspective texture: directions (same mapping as the sky view) x distance slices.
+const vec3 AERIAL_SIZE = vec3(AERIAL_WIDTH, AERIAL_HEIGHT, AERIAL_DEPTH);
+// AERIAL_MAX_DISTANCE: where the last slice ends, metres; slice k of n ends at AERIAL_MAX_DISTANCE * ((k + 1) / n)^2.
 
 // Unit coordinates in [0, 1] to texture coordinates of texel centres: u = 0 is the centre of the first texel and
 // u = 1 that of the last, so the table's end values are reached exactly (Hillaire's fromUnitToSubUvs).
@@ -38,8 +47,8 @@ vec2 skyViewUv(vec3 wsDir, vec3 sunDir) {
 }
 
 // Texture coordinates in the AerialPerspective texture for a world direction, the sun and a distance in metres.
-// w = sqrt(distance / max) is (k + 1) / 32 at the end of slice k, whose texel centre is (k + 0.5) / 32: so the
-// texture coordinate is w - 0.5 / 32, clamped to the first and last slice centres.
+// w = sqrt(distance / max) is (k + 1) / n at the end of slice k of n, whose texel centre is (k + 0.5) / n: so the
+// texture coordinate is w - 0.5 / n, clamped to the first and last slice centres.
 vec3 aerialPerspectiveUvw(vec3 wsDir, vec3 sunDir, float distanceM) {
     vec2 uv = unitToTexelCentres(skyTableUnit(wsDir, sunDir), AERIAL_SIZE.xy);
     float w = sqrt(max(distanceM, 0.0) / AERIAL_MAX_DISTANCE);

@@ -155,13 +155,13 @@ final class BenchCommand implements Callable<Integer> {
 
     /** Says on the standard error how often and how far the director lifted the path's eye out of the ground. */
     private static void reportLifted(List<FrameRecord> records) {
-        double[] lifts = records.stream().map(r -> r.counters().get(CameraSystem.LIFTED)).filter(m -> m != null)
-                .mapToDouble(Double::doubleValue).toArray();
+        double[] lifts = records.stream().map(r -> r.counters().get(CameraSystem.LIFTED.name()))
+                .filter(m -> m != null).mapToDouble(Double::doubleValue).toArray();
         if (lifts.length > 0) {
             System.err.printf(Locale.ROOT, "bench: the path's eye is below the ground, or nearer it than the near plane "
                     + "(%.1f m), in %d of %d frames: lifted there, by up to %.1f m (column %s of %s)%n",
                     CameraController.MIN_CLEARANCE, lifts.length, records.size(), Arrays.stream(lifts).max().orElse(0),
-                    CameraSystem.LIFTED, BenchReport.FRAMES_CSV);
+                    CameraSystem.LIFTED.name(), BenchReport.FRAMES_CSV);
         }
     }
 

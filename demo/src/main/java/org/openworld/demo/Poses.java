@@ -59,7 +59,7 @@ final class Poses {
      * below it; {@link CameraSystem#LIFTED}): one line saying where the eye is now.
      */
     static Optional<String> lifted(World world) {
-        Double metres = world.resource(Counters.class).snapshot().get(CameraSystem.LIFTED);
+        Double metres = world.resource(Counters.class).get(CameraSystem.LIFTED);
         if (metres == null) {
             return Optional.empty();
         }

@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -23,6 +24,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.Engine;
+import org.openworld.engine.core.Counter;
+import org.openworld.engine.core.Pass;
 import org.openworld.engine.settings.Settings;
 
 /**
@@ -79,9 +82,10 @@ class DocsDriftTest {
 
     /** Declared type name → the source texts declaring it (a nested type maps to its outer file). */
     private static final Map<String, List<String>> TYPES = new HashMap<>();
-    /** Every string literal of the main sources: counter names such as {@code "sky.tables-ms"} are among them. */
+    /** Every string literal of the main sources, and every counter's name ({@code sky.tables-ms}, per pass too). */
     private static final Set<String> LITERALS = new HashSet<>();
     private static final Pattern LITERAL = Pattern.compile("\"([^\"\\\\]+)\"");
+    private static final Pattern COUNTER = Pattern.compile("Counter\\.of\\(\"([a-z0-9-]+)\", \"([a-z0-9-]+)\"\\)");
     private static Settings settings;
     private static Set<String> groups;
 
@@ -99,6 +103,12 @@ class DocsDriftTest {
                     Matcher literal = LITERAL.matcher(text);
                     while (literal.find()) {
                         LITERALS.add(literal.group(1));
+                    }
+                    Matcher counter = COUNTER.matcher(text);
+                    while (counter.find()) {
+                        Counter named = Counter.of(counter.group(1), counter.group(2));
+                        LITERALS.add(named.name());
+                        Arrays.stream(Pass.values()).forEach(pass -> LITERALS.add(named.in(pass).name()));
                     }
                 }
             }
@@ -243,17 +253,17 @@ class DocsDriftTest {
     }
 
     /**
-     * The architecture page's caption links each of the demo's systems to its page, by the system's name; a system
+     * The design page's caption links each of the demo's systems to its page, by the system's name; a system
      * added to {@code DemoScene.systems()} must be added there too.
      */
     @Test
-    void theArchitecturePageLinksEveryDemoSystem() {
-        List<String> page = DocPage.read("docs/architecture.md").lines();
+    void theDesignPageLinksEveryDemoSystem() {
+        List<String> page = DocPage.read("docs/design.md").lines();
         int from = 0;
         while (from < page.size() && !page.get(from).contains("`DemoScene.systems()`")) {
             from++;
         }
-        assertTrue(from < page.size(), "docs/architecture.md names DemoScene.systems()");
+        assertTrue(from < page.size(), "docs/design.md names DemoScene.systems()");
         Set<String> linked = new TreeSet<>();
         for (int i = from; i < page.size() && !page.get(i).isBlank(); i++) {
             Matcher link = LINK.matcher(page.get(i));
@@ -263,7 +273,7 @@ class DocsDriftTest {
         }
         Set<String> systems = new TreeSet<>();
         DemoScene.systems().forEach(system -> systems.add(system.spec().name()));
-        assertEquals(systems, linked, "docs/architecture.md:" + (from + 1) + ": the demo's systems, each linked by name");
+        assertEquals(systems, linked, "docs/design.md:" + (from + 1) + ": the demo's systems, each linked by name");
     }
 
     @Test

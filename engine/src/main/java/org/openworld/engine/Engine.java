@@ -9,6 +9,7 @@ import java.util.EnumMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.Consumer;
 import org.openworld.engine.antialias.AntialiasSettings;
 import org.openworld.engine.antialias.Fxaa;
@@ -52,7 +53,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as
  * {@link FrameRecord}s once the GPU has finished them. Three parts live in classes of their own: the simulation's
  * clock ({@link FixedStepClock}), the frame's timings ({@link FrameTiming}) and what every pass's shaders can read
- * without binding it (the frame block, the sky's maps, the shadow maps: {@link SharedBindings}).
+ * without binding it (the frame block and the world's shared resources: {@link SharedBindings}).
  */
 public final class Engine implements AutoCloseable {
 
@@ -94,7 +95,7 @@ public final class Engine implements AutoCloseable {
     public Engine(GlContext gl, ShaderSources shaders, Settings settings, List<EngineSystem> systems,
                   int width, int height) {
         this.gl = gl;
-        this.shaders = new ShaderLibrary(gl, shaders);
+        this.shaders = new ShaderLibrary(gl, shaders, true, EngineSystem.shaderConstants(systems));
         this.settings = settings;
         this.order = SystemOrder.resolve(systems);
         for (EngineSystem system : order.systems()) {
@@ -267,7 +268,7 @@ public final class Engine implements AutoCloseable {
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
         world.setResource(viewer);
-        boolean shadowReady = false;
+        shared.beginFrame(owners.values());
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
             if (drawing.stream().noneMatch(s -> s.spec().passes().contains(pass) && isEnabled(s.spec().name()))) {
@@ -277,7 +278,7 @@ public final class Engine implements AutoCloseable {
             for (int v = 0; v < views.size(); v++) {
                 PassView view = views.get(v);
                 // 1. the pass's camera and the world's light into the frame block; the shared textures to their units
-                boolean sunShadowed = shared.bind(world, view, viewer, clock.simTime(), frame, shadowReady);
+                Set<Class<?>> bound = shared.bind(world, view, viewer, clock.simTime(), frame);
                 // 2. the target, bound and (but for OVERLAY, which draws over the picture) cleared
                 String label = pass.label() + (view.number() >= 0 ? String.valueOf(view.number()) : "") + ".";
                 timing.timeEngine(label + "engine", () -> {
@@ -289,7 +290,7 @@ public final class Engine implements AutoCloseable {
                     }
                 });
                 // 3. each system's state for the whole pass (EngineSystem.beginPass), before anyone draws
-                RenderContext context = new RenderContext(world, view.camera(), stats, view.target(), sunShadowed);
+                RenderContext context = new RenderContext(world, view.camera(), stats, view.target(), bound);
                 for (EngineSystem system : drawing) {
                     if (isEnabled(system.spec().name())) {
                         system.beginPass(pass, context);
@@ -306,7 +307,7 @@ public final class Engine implements AutoCloseable {
                 }
             }
             // the maps are ready once their owner has had its turn, even with no view: it may keep the last frame's
-            shadowReady |= pass == Pass.SHADOW && hasEnabledOwner(pass);
+            shared.release(hasEnabledOwner(pass) ? owners.get(pass).spec().writes() : Set.of());
         }
         // a neutral state for whatever draws next (the window's panel): front faces wind CCW, no stencil nor scissor
         glFrontFace(GL_CCW);

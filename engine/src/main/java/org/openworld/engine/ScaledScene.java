@@ -15,7 +15,7 @@ import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Sampling;
 
 /**
- * The engine's scene target at the render scale ({@code engine.render-scale}, docs/architecture.md, "Render scale"),
+ * The engine's scene target at the render scale ({@code engine.render-scale}, docs/design.md, "Render scale"),
  * the anti-aliased copy of it ({@code antialias.method}, {@link org.openworld.engine.antialias}), and the full-size
  * picture made from them. Below scale 1 the viewer's passes draw into a target of scale × the
  * picture's width and height, so the fragment shaders run for scale² of the pixels (0.75: 56 %); at the end of the

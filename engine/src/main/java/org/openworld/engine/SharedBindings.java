@@ -1,67 +1,89 @@
 package org.openworld.engine;
 
-import java.nio.FloatBuffer;
+import java.util.Collection;
+import java.util.EnumMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
 import org.joml.Matrix4f;
-import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SharedResource;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.environment.Exposure;
-import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.Sun;
-import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.environment.TimeOfDay;
-import org.openworld.engine.gl.CubeMapTexture;
 import org.openworld.engine.gl.FrameUniforms;
 import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.GlTexture;
+import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
-import org.openworld.engine.gl.Format;
-import org.openworld.engine.gl.Sampling;
-import org.openworld.engine.gl.Texture3D;
 
 /**
  * What every shader of a pass can read without its system binding it (docs/design.md, "Passes"): the frame uniform
  * block ({@code shaders/common/frame.glsl}: the pass camera and the viewer, from the {@link RenderOrigin}, the sun,
- * the exposure, the clock, the target's size),
- * the sky's aerial-perspective volume and environment map, and the sun's shadow maps with their block. A world
- * without a sky gets neutral stand-ins (clear air, a uniform sky as bright as the noon sun's ambient light), and a
- * frame whose shadow maps are not drawn gets a map that shadows nothing, so a shader never branches on what the
- * scene has.
+ * the exposure, the clock, the target's size) and the world's {@link SharedResource}s (the sky's maps, the sun's
+ * shadow). Before them it binds a stand-in for every {@link SharedTexture} and {@link SharedBlock}
+ * ({@link SharedTexture#standIn}: clear air, a uniform sky, a shadow map under which everything is lit), so a shader
+ * never branches on what the scene has.
  */
 final class SharedBindings {
 
     private final FrameUniforms frameUniforms;
-    private final SkyMaps neutralSky;
-    private final SunShadow noShadow;
+    private final Map<SharedTexture, GlTexture> textureStandIns = new EnumMap<>(SharedTexture.class);
+    private final Map<SharedBlock, GpuBuffer> blockStandIns = new EnumMap<>(SharedBlock.class);
+    /** What the owners of passes write that their pass has not yet drawn this frame (the sun's shadow maps). */
+    private final Set<Class<?>> held = new HashSet<>();
 
     /** Makes the frame block and the stand-ins, handing them to {@code owned} (the engine's). */
     SharedBindings(GlContext gl, Owned owned) {
         frameUniforms = owned.own("frame", new FrameUniforms(gl));
-        neutralSky = neutralSky(gl, owned);
-        noShadow = owned.own("noShadow", SunShadow.none(gl));
+        for (SharedTexture texture : SharedTexture.values()) {
+            textureStandIns.put(texture, owned.own("standIn." + texture.sampler(), texture.standIn(gl)));
+        }
+        for (SharedBlock block : SharedBlock.values()) {
+            GpuBuffer standIn = block.standIn(gl);
+            if (standIn != null) {
+                blockStandIns.put(block, owned.own("standIn." + block.block(), standIn));
+            }
+        }
+    }
+
+    /** At a frame's start: what the owners of passes write is held back until their pass has had its turn. */
+    void beginFrame(Collection<EngineSystem> owners) {
+        held.clear();
+        owners.forEach(owner -> held.addAll(owner.spec().writes()));
+    }
+
+    /** An owner's pass has had its turn (it may have kept the last frame's maps): what it writes is shared from now. */
+    void release(Set<Class<?>> written) {
+        held.removeAll(written);
     }
 
     /**
      * Writes the frame block for one view of a pass (its camera, and the viewer's eye as {@code viewerPos}) and binds
-     * the shared textures and blocks: the sky's, or the stand-ins; the sun's shadow once its owner has had this
-     * frame's turn (drawn its maps, or kept the last frame's; its block says none while the sun is down), else none
-     * (no system casts shadows or it is switched off; and a map being drawn must not be bound for reading).
+     * the stand-ins, then over them every shared resource of the world but those held back (written by the owner of
+     * a pass that has not had its turn this frame: a map being drawn must not be bound for reading).
      *
-     * @return whether the sun's shadow maps were bound, not the stand-in ({@link RenderContext#sunShadowed})
+     * @return the classes of the shared resources bound ({@link RenderContext#shares})
      */
-    boolean bind(World world, PassView view, PassView viewer, double simTime, long frame, boolean shadowReady) {
+    Set<Class<?>> bind(World world, PassView view, PassView viewer, double simTime, long frame) {
         frameUniforms.write(frameValues(world, view, viewer, simTime, frame));
-        SkyMaps maps = world.findResource(SkyMaps.class).orElse(neutralSky);
-        maps.aerialPerspective().bind(SharedTexture.AERIAL_PERSPECTIVE.unit());
-        maps.environment().bind(SharedTexture.ENVIRONMENT.unit());
-        SunShadow shadow = shadowReady ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
-        shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
-        shadow.block().bindBase(SharedBlock.SHADOW.binding());
-        return shadow != noShadow;
+        textureStandIns.forEach((texture, standIn) -> standIn.bind(texture.unit()));
+        blockStandIns.forEach((block, standIn) -> standIn.bindBase(block.binding()));
+        Set<Class<?>> bound = new HashSet<>();
+        for (SharedResource resource : world.resources(SharedResource.class)) {
+            if (!held.contains(resource.getClass())) {
+                resource.bindShared();
+                bound.add(resource.getClass());
+            }
+        }
+        return bound;
     }
 
     /** The block for one view of a pass; {@code viewer} is the MAIN camera's, given to every pass as the viewer. */
@@ -76,18 +98,5 @@ final class SharedBindings {
                 exposure.scale(), exposure.scotopic(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
                 view.target().height(), viewer.camera().positionFrom(origin.x(), origin.z()),
                 origin.x() / origin.step(), origin.z() / origin.step(), origin.step(), sun.sky().shaderFactors());
-    }
-
-    /** No air (nothing scattered in, everything transmitted) and a uniform sky as bright as the noon sun's ambient. */
-    private static SkyMaps neutralSky(GlContext gl, Owned owned) {
-        FloatBuffer clearAir = MemoryUtil.memAllocFloat(4).put(0).put(0).put(0).put(1).flip();
-        try {
-            Texture3D air = owned.own("neutralAir",
-                    Texture3D.of(gl, 1, 1, 1, Format.RGBA16F, Sampling.LINEAR_CLAMP, clearAir));
-            return new SkyMaps(air, owned.own("neutralSky",
-                    CubeMapTexture.fromDirections(gl, 1, d -> Sun.NOON.ambient())));
-        } finally {
-            MemoryUtil.memFree(clearAir);
-        }
     }
 }

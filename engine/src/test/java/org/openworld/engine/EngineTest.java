@@ -24,6 +24,7 @@ import org.junit.jupiter.api.extension.RegisterExtension;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -190,7 +191,7 @@ class EngineTest {
         @Override
         public void update(World world, double step) {
             super.update(world, step);
-            world.resource(Counters.class).put("shadow.casters", 3);
+            world.resource(Counters.class).put(Counter.of("shadow", "casters"), 3);
         }
     };
     /** Owns REFLECTION with the viewer mirrored in y = 0. */
@@ -206,7 +207,7 @@ class EngineTest {
         @Override
         public void render(Pass pass, RenderContext context) {
             super.render(pass, context);
-            context.world().resource(Counters.class).add("decals.drawn", 1);
+            context.world().resource(Counters.class).add(Counter.of("decals", "drawn"), 1);
         }
     };
     /** Draws red over the lower-left quarter after everything else. */

@@ -15,6 +15,7 @@ import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -25,8 +26,9 @@ import org.openworld.engine.gl.Uniform;
  */
 public final class Fxaa implements AutoCloseable {
 
-    /** Texture unit of the scene's colour while the pass draws. */
-    private static final int UNIT_SCENE = 0;
+    private static final TextureUnits UNITS = new TextureUnits();
+    /** The scene's colour while the pass draws. */
+    private static final TextureUnits.Sampler SCENE = UNITS.add("scene");
 
     private final Owned owned = new Owned("antialias");
     private final Mesh fullScreen;
@@ -37,7 +39,7 @@ public final class Fxaa implements AutoCloseable {
         try {
             fullScreen = owned.own("fullScreen", Mesh.fullScreenTriangle(gl));
             program = owned.own("fxaa", shaders.program("antialias/fxaa.vert", "antialias/fxaa.frag"));
-            program.sampler("scene", UNIT_SCENE);
+            program.sampler(SCENE);
             subpixel = program.float1("subpixel");
         } catch (RuntimeException e) {
             owned.close();
@@ -54,7 +56,7 @@ public final class Fxaa implements AutoCloseable {
         glDisable(GL_CULL_FACE);
         program.use();
         subpixel.set((float) settings.subpixel());
-        scene.color().bind(UNIT_SCENE);
+        scene.color().bind(SCENE.unit());
         fullScreen.draw(stats);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }

@@ -1,7 +1,7 @@
 /**
  * Anti-aliasing of the picture: FXAA, fast approximate anti-aliasing (Timothy Lottes, NVIDIA 2009; the "quality"
  * path of FXAA 3.11), one post pass over the finished scene ({@link org.openworld.engine.antialias.Fxaa},
- * {@code shaders/antialias/fxaa.frag}). Page: {@code docs/architecture.md}, "Anti-aliasing".
+ * {@code shaders/antialias/fxaa.frag}). Page: {@code docs/design.md}, "Anti-aliasing".
  *
  * <p><b>Why a post pass.</b> A forward renderer that shades every pixel once has three ways to smooth its edges:
  * MSAA (several coverage samples per pixel in the scene target, resolved at the end), a temporal method (TAA:

@@ -18,8 +18,8 @@ import org.openworld.engine.settings.Setting;
  * @param lookSmoothing    time constant of the exponential approach of the view to the mouse's aim; 0 turns at once
  * @param turnSpeed        turn rate of the arrow keys, for keyboard-only users
  * @param walkSpeed        walking speed
- * @param runFactor        factor on the walking speed while Shift is held
- * @param eyeHeight        eye above the ground in walk mode
+ * @param runFactor        factor on the walking speed while Shift is held (running)
+ * @param eyeHeight        eye height above the ground in walk mode
  * @param stepSmoothing    time constant with which the eye follows the ground in walk mode, so steps in the ground
  *                         do not jolt the view; 0 follows at once
  * @param mode             the mode at start (key V toggles it)

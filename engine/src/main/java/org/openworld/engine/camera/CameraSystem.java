@@ -1,6 +1,7 @@
 package org.openworld.engine.camera;
 
 import java.util.List;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
@@ -37,7 +38,7 @@ public final class CameraSystem implements EngineSystem {
             SettingsGroup.of("camera", CameraSettings.class, CameraSettings.DEFAULTS);
 
     /** The counter of a frame whose eye was lifted over the ground: by how many metres. */
-    public static final String LIFTED = "camera.lifted";
+    public static final Counter LIFTED = Counter.of("camera", "lifted");
 
     /** Stands in for the input resource in headless runs, which have none. */
     private static final InputState NO_INPUT = new InputState();

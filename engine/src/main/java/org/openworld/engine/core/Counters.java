@@ -4,24 +4,33 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
- * Numbers a system wants to report per frame, e.g. {@code terrain.visible} patches. A world resource, cleared by the
- * engine at the start of every frame; {@code bench} writes each counter as a column of {@code frames.csv}.
+ * Numbers a system wants to report per frame, e.g. {@code terrain.main.patches}, keyed by {@link Counter}. A world
+ * resource, cleared by the engine at the start of every frame; {@code bench} writes each counter as a column of
+ * {@code frames.csv}.
  */
 public final class Counters {
 
-    private final Map<String, Double> values = new LinkedHashMap<>();
+    private final Map<Counter, Double> values = new LinkedHashMap<>();
 
-    public void put(String name, double value) {
-        values.put(name, value);
+    public void put(Counter counter, double value) {
+        values.put(counter, value);
     }
 
     /** Adds to a counter, e.g. patches drawn in each pass. */
-    public void add(String name, double value) {
-        values.merge(name, value, Double::sum);
+    public void add(Counter counter, double value) {
+        values.merge(counter, value, Double::sum);
     }
 
+    /** This frame's value of {@code counter}, or null when it was not counted. */
+    public Double get(Counter counter) {
+        return values.get(counter);
+    }
+
+    /** The counters by {@link Counter#name}, in the order they were first counted this frame. */
     public Map<String, Double> snapshot() {
-        return new LinkedHashMap<>(values);
+        Map<String, Double> named = new LinkedHashMap<>();
+        values.forEach((counter, value) -> named.put(counter.name(), value));
+        return named;
     }
 
     /** Called by the engine at the start of each frame. */

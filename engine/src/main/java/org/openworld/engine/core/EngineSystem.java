@@ -1,6 +1,8 @@
 package org.openworld.engine.core;
 
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import org.openworld.engine.settings.SettingsGroup;
 
 /**
@@ -25,6 +27,22 @@ public interface EngineSystem extends AutoCloseable {
     /** The settings groups this system reads; their keys appear in {@code --set} and {@code openworld settings}. */
     default List<SettingsGroup<?>> settings() {
         return List.of();
+    }
+
+    /**
+     * Numbers this system's Java and its shaders share (the sky's table sizes), each passed to every program as
+     * {@code #define NAME value}: written once, in Java, where a shader would otherwise repeat them. Read once, when
+     * the engine starts, before any program is compiled.
+     */
+    default Map<String, Number> shaderConstants() {
+        return Map.of();
+    }
+
+    /** Every system's {@link #shaderConstants}, for the engine's shader library. */
+    static Map<String, Number> shaderConstants(List<? extends EngineSystem> systems) {
+        Map<String, Number> all = new LinkedHashMap<>();
+        systems.forEach(system -> all.putAll(system.shaderConstants()));
+        return all;
     }
 
     default void init(EngineContext context) {

@@ -1,5 +1,6 @@
 package org.openworld.engine.core;
 
+import java.util.Set;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.Framebuffer;
 
@@ -13,10 +14,17 @@ import org.openworld.engine.gl.Framebuffer;
  * @param stats  draw calls and triangles, counted by {@code Mesh}
  * @param target the framebuffer this pass draws into (the scene target in MAIN and OVERLAY), bound; a system that
  *               binds another one (the water copying the scene) binds this one back
- * @param sunShadowed the sun's shadow maps are bound ({@code shaders/common/shadow.glsl}); false: a map that shadows
- *               nothing is, and a program compiled with {@code SUN_UNSHADOWED}, which skips the lookup, draws the
- *               same picture for less
+ * @param shared the classes of the {@link SharedResource}s bound for this pass; the others' stand-ins are bound
  */
 public record RenderContext(World world, ViewCamera camera, DrawStats stats, Framebuffer target,
-                            boolean sunShadowed) {
+                            Set<Class<?>> shared) {
+
+    /**
+     * Whether the world's {@code type} is bound for this pass rather than its stand-in. False for the sun's shadow
+     * ({@code shaders/common/shadow.glsl}): a map that shadows nothing is bound, and a program compiled with
+     * {@code SUN_UNSHADOWED}, which skips the lookup, draws the same picture for less.
+     */
+    public boolean shares(Class<? extends SharedResource> type) {
+        return shared.contains(type);
+    }
 }

@@ -21,13 +21,13 @@ import java.util.stream.Collectors;
  *   <li>{@code after("x")}: x before the declaring system;</li>
  *   <li>data: a system that writes a type runs before every system that only reads it (a published type,
  *       {@code publishes()}, orders nothing);</li>
- *   <li>{@code transparent()}: every opaque system that draws in one of its passes before the transparent one;</li>
- *   <li>{@code overOpaque()}: every opaque system (neither transparent nor over the opaque) that draws in one of its
- *       passes before the one drawn over them (the water, which sees through to them);</li>
+ *   <li>layers ({@link Layer}): a system {@link Layer#OVER_OPAQUE over the opaque picture} (the water, which sees
+ *       through to it) or {@link Layer#TRANSPARENT transparent} after every system of an earlier layer that draws in
+ *       one of its passes;</li>
  * </ul>
- * A {@code background()} (the sky) has no edge of its own: its update keeps its place in the frame order, so an opaque
- * system may read what it writes (the sun), while in each pass it draws after every opaque system of that pass
- * ({@link #drawOrder}), shaded only where they left the far plane.
+ * A {@link Layer#BACKGROUND background} (the sky) has no edge of its own: its update keeps its place in the frame
+ * order, so an opaque system may read what it writes (the sun), while in each pass it draws after every opaque system
+ * of that pass ({@link #drawOrder}), shaded only where they left the far plane.
  * Two systems that write the same type must be ordered by {@code after} (directly or through other
  * {@code after}s), or the declaration is ambiguous and resolution fails. A cycle fails and names its edges. Among
  * systems free to go in any order, the alphabetically first goes first, so the order is stable and printable.
@@ -72,12 +72,10 @@ public final class SystemOrder {
                 if (shared.isEmpty()) {
                     continue;
                 }
-                if (t.isTransparent() && !o.isTransparent()) {
-                    graph.edge(o.name(), t.name(), t.name() + " is transparent, blended over what " + o.name()
-                            + " draws in " + shared.iterator().next().label());
-                } else if (t.isOverOpaque() && !o.isOverOpaque() && !o.isTransparent()) {
-                    graph.edge(o.name(), t.name(), t.name() + " is drawn over the opaque picture, which it reads: "
-                            + "over what " + o.name() + " draws in " + shared.iterator().next().label());
+                if (t.layer().followsEarlierLayers() && o.layer().compareTo(t.layer()) < 0) {
+                    graph.edge(o.name(), t.name(), t.name() + (t.layer() == Layer.TRANSPARENT
+                            ? " is transparent, blended over what " : " is drawn over the opaque picture, which it "
+                            + "reads: over what ") + o.name() + " draws in " + shared.iterator().next().label());
                 }
             }
         }
@@ -131,12 +129,12 @@ public final class SystemOrder {
             if (!spec.passes().contains(pass) && !spec.prepared().contains(pass)) {
                 continue;
             }
-            if (spec.isBackground()) {
+            if (spec.layer() == Layer.BACKGROUND) {
                 backgrounds.add(system);
                 continue;
             }
             draw.add(system);
-            if (spec.passes().contains(pass) && !spec.isOverOpaque() && !spec.isTransparent()) {
+            if (spec.passes().contains(pass) && spec.layer() == Layer.OPAQUE) {
                 behindOpaque = draw.size();
             }
         }

@@ -7,7 +7,7 @@ import java.util.Set;
 
 /**
  * What a system declares about itself, from which the engine derives the frame order: the resource and component
- * classes it reads and writes, the systems it must follow, and the passes it draws in.
+ * classes it reads and writes, the systems it must follow, the passes it draws in and the {@link Layer} it draws in.
  *
  * <p>Types and names keep the order they are declared in (Set.of would shuffle them per run), so
  * {@code openworld info --frame} prints the same text every time.
@@ -28,9 +28,7 @@ public final class SystemSpec {
     private final Set<String> after = new LinkedHashSet<>();
     private final Set<Pass> passes = EnumSet.noneOf(Pass.class);
     private final Set<Pass> prepared = EnumSet.noneOf(Pass.class);
-    private boolean transparent;
-    private boolean overOpaque;
-    private boolean background;
+    private Layer layer = Layer.OPAQUE;
     private boolean offByDefault;
     private boolean updatesOnGpu;
 
@@ -90,37 +88,9 @@ public final class SystemSpec {
         return this;
     }
 
-    /**
-     * Its drawing is blended over the finished opaque picture (particles): it follows every other system that draws in
-     * one of its passes, without naming them, so it stays last whichever systems a scene has.
-     */
-    public SystemSpec transparent() {
-        transparent = true;
-        return this;
-    }
-
-    /**
-     * It draws over the finished opaque picture of its passes and reads it (the water copies the scene's colour and
-     * depth to show what lies behind and under it): it follows every system that draws opaque in one of its passes
-     * (neither {@link #transparent()} nor this; the {@link #background()} included), without naming them, so a new
-     * opaque system is behind the water whatever it is called. Transparent systems still follow it.
-     */
-    public SystemSpec overOpaque() {
-        overOpaque = true;
-        return this;
-    }
-
-    /**
-     * It draws the background of its passes, what lies behind every surface (the sky): in each pass it draws after
-     * every opaque system of that pass (neither transparent, nor over the opaque, nor another background), without
-     * naming them ({@link SystemOrder#drawOrder}), while its update keeps its place in the frame order, so an opaque
-     * system may read what it writes (the sun). It draws at the far plane with the depth test on and depth writes
-     * off, so the pixels an opaque surface already covers fail the depth test before they are shaded (early depth
-     * rejection) and each pixel is shaded once. Systems drawn over the opaque picture, and transparent ones, still
-     * follow it. Work the opaque systems need from it (tables, maps) it does before the passes, in its update.
-     */
-    public SystemSpec background() {
-        background = true;
+    /** The layer it draws in, {@link Layer#OPAQUE} unless declared (the sky, the water, the particles declare theirs). */
+    public SystemSpec layer(Layer drawnIn) {
+        layer = drawnIn;
         return this;
     }
 
@@ -168,16 +138,9 @@ public final class SystemSpec {
         return passes;
     }
 
-    public boolean isTransparent() {
-        return transparent;
-    }
-
-    public boolean isOverOpaque() {
-        return overOpaque;
-    }
-
-    public boolean isBackground() {
-        return background;
+    /** The layer it draws in: see {@link Layer}. */
+    public Layer layer() {
+        return layer;
     }
 
     public boolean isOffByDefault() {

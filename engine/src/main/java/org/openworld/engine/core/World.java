@@ -84,6 +84,11 @@ public final class World {
         return Optional.ofNullable(type.cast(resources.get(type)));
     }
 
+    /** Every resource that is a {@code kind}, in the order they were first set. */
+    public <T> List<T> resources(Class<T> kind) {
+        return resources.values().stream().filter(kind::isInstance).map(kind::cast).toList();
+    }
+
     @SuppressWarnings("unchecked")
     private static <T> Class<T> castClass(T resource) {
         return (Class<T>) resource.getClass();

@@ -3,8 +3,10 @@
  * {@link org.openworld.engine.core.EngineSystem}s that only talk through it.
  *
  * <p><b>Frame order.</b> Each system declares in a {@link org.openworld.engine.core.SystemSpec} what it reads and
- * writes, which systems it follows and which {@link org.openworld.engine.core.Pass}es it draws in.
- * {@link org.openworld.engine.core.SystemOrder} turns that into a graph (writer → reader, after → system) and sorts
+ * writes, which systems it follows, which {@link org.openworld.engine.core.Pass}es it draws in and in which
+ * {@link org.openworld.engine.core.Layer} (opaque, background, over the opaque picture, transparent).
+ * {@link org.openworld.engine.core.SystemOrder} turns that into a graph (writer → reader, after → system, an earlier
+ * layer → a later one) and sorts
  * it topologically with Kahn's algorithm, alphabetical among equals: O(S² · T) for S systems and T declared types,
  * microseconds for the dozen systems of the demo, done once at start-up. A cycle, or two writers of one type that
  * nobody ordered, is an error that names the systems. {@code openworld info --frame} prints the resolved order
@@ -15,6 +17,10 @@
  * and REFLECTION what their {@link org.openworld.engine.core.PassOwner} (the shadow system, the water system) gives
  * each frame. The viewer's {@code PassView} is also a world resource, set before the passes, for a system that draws
  * another pass with the viewer in mind (the terrain's shadow casters are no finer than the ground the viewer sees).
+ * A world resource that is a {@link org.openworld.engine.core.SharedResource} (the sky's maps, the sun's shadow) is
+ * bound for every shader of a pass, over a stand-in, and a system asks
+ * {@link org.openworld.engine.core.RenderContext#shares} whether it is. Systems report numbers per frame into the
+ * {@link org.openworld.engine.core.Counters}, each keyed by a {@link org.openworld.engine.core.Counter} constant.
  *
  * <p><b>Shared vocabulary.</b> Types that several systems write or read, and that no one system owns, live here
  * rather than in a system's package: {@link org.openworld.engine.core.HeightField} (the ground, published by the

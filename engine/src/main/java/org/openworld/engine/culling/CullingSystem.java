@@ -8,6 +8,7 @@ import java.util.function.BiConsumer;
 import java.util.function.Predicate;
 import org.joml.Matrix4f;
 import org.openworld.engine.core.BoundsTree;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
@@ -47,6 +48,11 @@ import org.openworld.engine.settings.SettingsGroup;
  * and the traversal allocates nothing.
  */
 public final class CullingSystem implements EngineSystem {
+    /** The counters, per pass: boxes tested, subtrees rejected, subtrees accepted whole, partial nodes kept. */
+    private static final Counter TESTED = Counter.of("culling", "tested");
+    private static final Counter OUTSIDE = Counter.of("culling", "outside");
+    private static final Counter INSIDE = Counter.of("culling", "inside");
+    private static final Counter KEPT = Counter.of("culling", "kept");
 
     private static final Pass[] CULLED = {Pass.SHADOW, Pass.REFLECTION, Pass.MAIN};
 
@@ -54,10 +60,6 @@ public final class CullingSystem implements EngineSystem {
     private final Frustum[] frustums = new Frustum[Pass.values().length];
     private final boolean[] frozen = new boolean[Pass.values().length];
     /** Per pass, by ordinal: the counter names, built once. */
-    private final String[] testedName = new String[Pass.values().length];
-    private final String[] outsideName = new String[Pass.values().length];
-    private final String[] insideName = new String[Pass.values().length];
-    private final String[] keptName = new String[Pass.values().length];
     /** Made once, so iterating the world does not allocate a lambda per pass. */
     private final BiConsumer<Integer, Cullable> cullEntity = this::cullEntity;
     private final Predicate<Integer> withdraw = this::withdraw;
@@ -78,10 +80,6 @@ public final class CullingSystem implements EngineSystem {
     public CullingSystem() {
         for (Pass pass : Pass.values()) {
             frustums[pass.ordinal()] = new Frustum();
-            testedName[pass.ordinal()] = "culling." + pass.label() + ".tested";
-            outsideName[pass.ordinal()] = "culling." + pass.label() + ".outside";
-            insideName[pass.ordinal()] = "culling." + pass.label() + ".inside";
-            keptName[pass.ordinal()] = "culling." + pass.label() + ".kept";
         }
     }
 
@@ -140,10 +138,10 @@ public final class CullingSystem implements EngineSystem {
         world.each(Cullable.class, cullEntity);
         // 3. what it cost and what it found
         Counters counters = world.resource(Counters.class);
-        counters.put(testedName[p], tested);
-        counters.put(outsideName[p], outside);
-        counters.put(insideName[p], inside);
-        counters.put(keptName[p], kept);
+        counters.put(TESTED.in(pass), tested);
+        counters.put(OUTSIDE.in(pass), outside);
+        counters.put(INSIDE.in(pass), inside);
+        counters.put(KEPT.in(pass), kept);
     }
 
     private void cullEntity(Integer entity, Cullable cullable) {

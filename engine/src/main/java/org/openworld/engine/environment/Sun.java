@@ -2,6 +2,7 @@ package org.openworld.engine.environment;
 
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
+import org.openworld.engine.gl.SharedTexture;
 
 /**
  * The sun as the world sees it: the unit direction towards it and the light it gives at the ground, linear RGB
@@ -23,7 +24,8 @@ public record Sun(Vector3fc direction, Vector3fc color, Vector3fc ambient, SkyIr
     public static final double ANGULAR_RADIUS_DEG = 0.2666;
 
     /** The sun of a world with no system that models the sky: high (65°) towards the north-east, white. */
-    public static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1), new Vector3f(0.3f));
+    public static final Sun NOON = new Sun(new Vector3f(0.3f, 0.9f, -0.3f), new Vector3f(1),
+            new Vector3f(SharedTexture.NEUTRAL_SKY));
 
     /** A sun under a uniform sky of upward irradiance {@code ambient} over a black ground. */
     public Sun(Vector3fc direction, Vector3fc color, Vector3fc ambient) {

@@ -2,6 +2,7 @@ package org.openworld.engine.gl;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Builds shader programs and keeps track of the live ones, so a dev-mode reload (F5) can rebuild every program
@@ -12,10 +13,25 @@ public final class ShaderLibrary {
     private final GlContext gl;
     private final ShaderSources sources;
     private final List<ShaderProgram> live = new ArrayList<>();
+    private final boolean onFirstUse;
+    /** {@code NAME value} for each constant Java shares with every program. */
+    private final List<String> constants = new ArrayList<>();
 
+    /** A library whose programs compile when they are made, so an error comes at once; no shared constants. */
     public ShaderLibrary(GlContext gl, ShaderSources sources) {
+        this(gl, sources, false, Map.of());
+    }
+
+    /**
+     * @param onFirstUse compile each program at its first {@link ShaderProgram#use()} rather than when it is made (the
+     *                   engine's: only the variants a frame draws are compiled)
+     * @param constants  numbers defined in every program, {@code #define NAME value} (a double as a GLSL float)
+     */
+    public ShaderLibrary(GlContext gl, ShaderSources sources, boolean onFirstUse, Map<String, Number> constants) {
         this.gl = gl;
         this.sources = sources;
+        this.onFirstUse = onFirstUse;
+        constants.forEach((name, value) -> this.constants.add(name + " " + value));
     }
 
     /** Compiles and links stage files, e.g. {@code program("sky/sky.vert", "sky/sky.frag")}. */
@@ -28,7 +44,8 @@ public final class ShaderLibrary {
      * {@code program(List.of("TERRAIN_FAR"), "terrain/terrain.vert", "terrain/terrain.frag")}.
      */
     public ShaderProgram program(List<String> defines, String... stageFiles) {
-        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), defines, live::remove));
+        return track(ShaderProgram.build(gl, sources, List.of(stageFiles), List.of(), with(defines), onFirstUse,
+                live::remove));
     }
 
     /**
@@ -40,7 +57,15 @@ public final class ShaderLibrary {
         if (!vertexStage.endsWith(".vert") || captured.length == 0) {
             throw new IllegalArgumentException("a feedback program is one .vert stage and at least one captured output");
         }
-        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), List.of(), live::remove));
+        return track(ShaderProgram.build(gl, sources, List.of(vertexStage), List.of(captured), with(List.of()),
+                onFirstUse, live::remove));
+    }
+
+    /** The shared constants, then a variant's own defines. */
+    private List<String> with(List<String> defines) {
+        List<String> all = new ArrayList<>(constants);
+        all.addAll(defines);
+        return all;
     }
 
     private ShaderProgram track(ShaderProgram program) {

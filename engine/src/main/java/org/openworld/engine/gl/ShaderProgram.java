@@ -20,8 +20,14 @@ import java.util.function.Consumer;
  * rewritten by {@link ShaderLog} to the file and line it is about ({@code shaders/common/fog.glsl:15:24: error: ...});
  * a link error names the stages being linked, then the linker's lines.
  *
- * <p>Uniforms are typed handles resolved at link time: {@code Uniform.Mat4 model = program.mat4("uModel")} fails
- * at once, naming the program, when the uniform does not exist (or the compiler removed it as unused). If the
+ * <p>Uniforms are typed handles resolved at link time: {@code Uniform.Mat4 model = program.mat4("uModel")} fails,
+ * naming the program, when the uniform does not exist (or the compiler removed it as unused).
+ *
+ * <p>A program of a library that compiles on first use ({@link ShaderLibrary#ShaderLibrary(GlContext, ShaderSources,
+ * boolean, java.util.Map)}, the engine's) is compiled and linked by its first {@link #use()}: a variant no frame draws (another
+ * tiling, the shadowed light with no shadow system) costs nothing. Until then its uniform handles wait and the values
+ * set on them are kept, in order, for the link; an error (a compile error, a missing uniform) comes at that first
+ * use, naming the program as at start-up. If the
  * program declares a {@link SharedBlock} (the frame's, the shadow's), it is bound to its binding point; samplers named
  * like a {@link SharedTexture} are set to its unit.
  *
@@ -37,18 +43,21 @@ public final class ShaderProgram implements Labelled {
     private final List<String> defines;
     private final List<Uniform> uniforms = new ArrayList<>();
     private final Consumer<ShaderProgram> onClose;
+    /** Uniform values set before the first use, written in order once the program links. */
+    private final List<Runnable> deferred = new ArrayList<>();
     private int id;
+    private boolean closed;
     private String label;
 
     private ShaderProgram(GlContext gl, ShaderSources sources, List<String> stages, List<String> captured,
-                          List<String> defines, Consumer<ShaderProgram> onClose) {
+                          List<String> defines, boolean onFirstUse, Consumer<ShaderProgram> onClose) {
         this.gl = gl;
         this.sources = sources;
         this.stages = List.copyOf(stages);
         this.captured = List.copyOf(captured);
         this.defines = List.copyOf(defines);
         this.onClose = onClose;
-        this.id = link();
+        this.id = onFirstUse ? 0 : link();
     }
 
     /**
@@ -56,18 +65,59 @@ public final class ShaderProgram implements Labelled {
      *
      * @param captured the outputs transform feedback records, interleaved in this order (empty: none)
      * @param defines  names defined at the top of every stage (empty: none)
+     * @param onFirstUse compile and link at the first {@link #use()}, not now
      */
     static ShaderProgram build(GlContext gl, ShaderSources sources, List<String> stageFiles, List<String> captured,
-                               List<String> defines, Consumer<ShaderProgram> onClose) {
-        return new ShaderProgram(gl, sources, stageFiles, captured, defines, onClose);
+                               List<String> defines, boolean onFirstUse, Consumer<ShaderProgram> onClose) {
+        return new ShaderProgram(gl, sources, stageFiles, captured, defines, onFirstUse, onClose);
     }
 
+    /** Binds the program, compiling and linking it first if this is its first use. */
     public void use() {
+        if (id == 0) {
+            linkNow();
+        }
         glUseProgram(id);
     }
 
+    /** The GL name, linking first if the program has not been used yet. */
     public int id() {
+        if (id == 0) {
+            linkNow();
+        }
         return id;
+    }
+
+    /** Whether the program is compiled and linked (else its first use does it). */
+    boolean isLinked() {
+        return id != 0;
+    }
+
+    /** Keeps a uniform's value, set before the program linked, for the link. */
+    void defer(Runnable write) {
+        deferred.add(write);
+    }
+
+    private void linkNow() {
+        if (closed) {
+            throw new IllegalStateException(this + " is closed");
+        }
+        int fresh = link();
+        try {
+            for (Uniform uniform : uniforms) {
+                uniform.location = location(fresh, uniform.name);
+            }
+        } catch (ShaderException e) {
+            deleteProgram(fresh);
+            throw e;
+        }
+        id = fresh;
+        if (label != null) {
+            label(label);
+        }
+        glUseProgram(id);
+        deferred.forEach(Runnable::run);
+        deferred.clear();
     }
 
     public Uniform.Mat3 mat3(String name) {
@@ -98,16 +148,26 @@ public final class ShaderProgram implements Labelled {
         return resolve(new Uniform.Int(name));
     }
 
+    /** A sampler uniform set once to its texture unit, handed out by {@link TextureUnits}. */
+    public Uniform.Int sampler(TextureUnits.Sampler sampler) {
+        return sampler(sampler.name(), sampler.unit());
+    }
+
     /** A sampler uniform set once to its texture unit. */
     public Uniform.Int sampler(String name, int unit) {
         Uniform.Int sampler = int1(name);
-        use();
+        if (isLinked()) {
+            use();
+        }
         sampler.set(unit);
         return sampler;
     }
 
     private <U extends Uniform> U resolve(U uniform) {
-        uniform.location = location(id, uniform.name);
+        uniform.program = this;
+        if (isLinked()) {
+            uniform.location = location(id, uniform.name);
+        }
         uniforms.add(uniform);
         return uniform;
     }
@@ -123,9 +183,13 @@ public final class ShaderProgram implements Labelled {
 
     /**
      * Rebuilds the program from the current sources and re-resolves every uniform handle. If anything fails, the
-     * old program stays and the error is thrown.
+     * old program stays and the error is thrown. A program not used yet has nothing to rebuild: its first use reads
+     * the current sources.
      */
     public void reload() {
+        if (!isLinked()) {
+            return;
+        }
         int fresh = link();
         try {
             int[] locations = new int[uniforms.size()];
@@ -150,7 +214,9 @@ public final class ShaderProgram implements Labelled {
     @Override
     public void label(String name) {
         label = name;
-        gl.debug().label(GL_PROGRAM, id, name);
+        if (isLinked()) {
+            gl.debug().label(GL_PROGRAM, id, name);
+        }
     }
 
     private int link() {
@@ -262,9 +328,12 @@ public final class ShaderProgram implements Labelled {
 
     @Override
     public void close() {
-        if (id != 0) {
-            deleteProgram(id);
-            id = 0;
+        if (!closed) {
+            closed = true;
+            if (id != 0) {
+                deleteProgram(id);
+                id = 0;
+            }
             onClose.accept(this);
         }
     }

@@ -2,7 +2,9 @@ package org.openworld.engine.gl;
 
 import static org.lwjgl.opengl.GL20C.*;
 
+import org.joml.Matrix3f;
 import org.joml.Matrix3fc;
+import org.joml.Matrix4f;
 import org.joml.Matrix4fc;
 import org.joml.Vector3fc;
 import org.joml.Vector4fc;
@@ -16,6 +18,8 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
 
     final String name;
     int location;
+    /** The program it belongs to: a value set before the program first links is kept for the link. */
+    ShaderProgram program;
 
     Uniform(String name) {
         this.name = name;
@@ -25,12 +29,22 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         return name;
     }
 
+    /** Whether a value can be written now; if not, the caller hands it to {@link ShaderProgram#defer}. */
+    boolean now() {
+        return program == null || program.isLinked();
+    }
+
     public static final class Mat3 extends Uniform {
         Mat3(String name) {
             super(name);
         }
 
         public void set(Matrix3fc value) {
+            if (!now()) {
+                Matrix3f copy = new Matrix3f(value);
+                program.defer(() -> set(copy));
+                return;
+            }
             try (MemoryStack stack = MemoryStack.stackPush()) {
                 glUniformMatrix3fv(location, false, value.get(stack.mallocFloat(9)));
             }
@@ -43,6 +57,11 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         }
 
         public void set(Matrix4fc value) {
+            if (!now()) {
+                Matrix4f copy = new Matrix4f(value);
+                program.defer(() -> set(copy));
+                return;
+            }
             try (MemoryStack stack = MemoryStack.stackPush()) {
                 glUniformMatrix4fv(location, false, value.get(stack.mallocFloat(16)));
             }
@@ -55,6 +74,10 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         }
 
         public void set(float x, float y) {
+            if (!now()) {
+                program.defer(() -> set(x, y));
+                return;
+            }
             glUniform2f(location, x, y);
         }
     }
@@ -65,11 +88,15 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         }
 
         public void set(float x, float y, float z) {
+            if (!now()) {
+                program.defer(() -> set(x, y, z));
+                return;
+            }
             glUniform3f(location, x, y, z);
         }
 
         public void set(Vector3fc v) {
-            glUniform3f(location, v.x(), v.y(), v.z());
+            set(v.x(), v.y(), v.z());
         }
     }
 
@@ -79,11 +106,15 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         }
 
         public void set(float x, float y, float z, float w) {
+            if (!now()) {
+                program.defer(() -> set(x, y, z, w));
+                return;
+            }
             glUniform4f(location, x, y, z, w);
         }
 
         public void set(Vector4fc v) {
-            glUniform4f(location, v.x(), v.y(), v.z(), v.w());
+            set(v.x(), v.y(), v.z(), v.w());
         }
 
         /** A vec4 array from its first element on, four floats an element (elements the program lacks are ignored). */
@@ -98,6 +129,10 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         }
 
         public void set(float value) {
+            if (!now()) {
+                program.defer(() -> set(value));
+                return;
+            }
             glUniform1f(location, value);
         }
     }
@@ -109,6 +144,10 @@ public abstract sealed class Uniform permits Uniform.Mat3, Uniform.Mat4, Uniform
         }
 
         public void set(int value) {
+            if (!now()) {
+                program.defer(() -> set(value));
+                return;
+            }
             glUniform1i(location, value);
         }
     }

@@ -10,6 +10,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -20,6 +21,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
@@ -36,8 +38,9 @@ import org.openworld.engine.settings.SettingsGroup;
  */
 public final class MinimapSystem implements EngineSystem {
 
-    /** Texture unit of the relief map. */
-    private static final int UNIT_RELIEF = 0;
+    private static final TextureUnits UNITS = new TextureUnits();
+    /** The relief map. */
+    private static final TextureUnits.Sampler RELIEF = UNITS.add("relief");
     /** Width of the border around the map, pixels: a thin dark line that parts it from the scene. */
     private static final float BORDER_PX = 2;
     /** The marker's length from the camera to its tip, as a share of the map's side (23 px on the default 324 px). */
@@ -56,9 +59,9 @@ public final class MinimapSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        // transparent(): drawn over the finished picture, after every other system that draws in OVERLAY
+        // Layer.TRANSPARENT: drawn over the finished picture, after every other system that draws in OVERLAY
         return SystemSpec.named("minimap").reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class)
-                .transparent().draws(Pass.OVERLAY)
+                .layer(Layer.TRANSPARENT).draws(Pass.OVERLAY)
                 .offByDefault(); // shots and figures unchanged unless asked for: --set system.minimap=on
     }
 
@@ -70,7 +73,7 @@ public final class MinimapSystem implements EngineSystem {
     @Override
     public void init(EngineContext context) {
         program = context.own("program", context.shaders().program("minimap/minimap.vert", "minimap/minimap.frag"));
-        program.sampler("relief", UNIT_RELIEF);
+        program.sampler(RELIEF);
         squareUniform = program.vec3("uSquare");
         cameraUniform = program.vec3("uCamera");
         headingUniform = program.vec2("uHeading");
@@ -109,7 +112,7 @@ public final class MinimapSystem implements EngineSystem {
         cameraUniform.set((float) map.s(pose.x()), (float) map.t(pose.z()), (float) map.shownShare());
         headingUniform.set((float) Math.sin(yaw), (float) Math.cos(yaw));
         markerUniform.set(MARKER_SHARE * square.side(), BORDER_PX);
-        relief.bind(UNIT_RELIEF);
+        relief.bind(RELIEF.unit());
         // 4. one square over the picture: no depth test, and the scene's depth left as it was
         glDisable(GL_DEPTH_TEST);
         glDepthMask(false);

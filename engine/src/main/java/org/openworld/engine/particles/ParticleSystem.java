@@ -16,11 +16,13 @@ import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Owned;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -33,6 +35,7 @@ import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.gl.VertexArray;
 import org.openworld.engine.origin.RenderOrigin;
@@ -50,6 +53,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * square {@link Mesh}, instanced over the current state buffer ({@link Mesh#instances}, the position of each record).
  */
 public final class ParticleSystem implements EngineSystem {
+    /** The counter of the flakes alive. */
+    private static final Counter COUNT = Counter.of("particles", "count");
 
     /** Samples a side of the ground patch: 0.47 m apart under the default 30 m cube (the patch spans two cubes). */
     private static final int GROUND_SAMPLES = 128;
@@ -57,8 +62,9 @@ public final class ParticleSystem implements EngineSystem {
     private static final float MIN_RADIUS_PIXELS = 1;
     /** A flake's albedo: fresh snow reflects 80–90% of visible light. */
     private static final float ALBEDO = 0.85f;
-    /** Texture unit of the ground patch in the update program. */
-    private static final int UNIT_GROUND = 0;
+    private static final TextureUnits UNITS = new TextureUnits();
+    /** The ground patch in the update program. */
+    private static final TextureUnits.Sampler GROUND = UNITS.add("ground");
     /**
      * An eye that moved more than this share of the cube's side between two steps jumped: 1/4 of the default 30 m
      * in 1/60 s is 450 m/s, beyond any flight.
@@ -104,7 +110,7 @@ public final class ParticleSystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("particles").reads(Settings.class, Camera.class, HeightField.class, Wind.class)
-                .updatesOnGpu().transparent().draws(Pass.MAIN)
+                .updatesOnGpu().layer(Layer.TRANSPARENT).draws(Pass.MAIN)
                 .offByDefault(); // a fair day by default: --set system.particles=on makes it snow (figure 14)
     }
 
@@ -119,7 +125,7 @@ public final class ParticleSystem implements EngineSystem {
         owned = context.owned();
         updateProgram = context.own("update", context.shaders().feedbackProgram("particles/update.vert",
                 "outPosition", "outVelocity"));
-        updateProgram.sampler("ground", UNIT_GROUND);
+        updateProgram.sampler(GROUND);
         updateUniforms = new UpdateUniforms(updateProgram.vec4("uForces"), updateProgram.vec3("uWind"),
                 updateProgram.vec4("uVolume"), updateProgram.int1("uStepKey"), updateProgram.vec4("uGround"));
         drawProgram = context.own("draw", context.shaders().program("particles/flake.vert", "particles/flake.frag"));
@@ -144,7 +150,7 @@ public final class ParticleSystem implements EngineSystem {
         updateUniforms.stepKey().set(SnowMotion.stepKey(world.resource(Settings.class).get(EngineSettings.class).seed(),
                 steps));
         updateUniforms.ground().set(ground.originX(), ground.originZ(), 1f / ground.spacing(), ground.samples());
-        groundTexture.bind(UNIT_GROUND);
+        groundTexture.bind(GROUND.unit());
 
         updateFrom[current].bind();
         states[1 - current].bindForFeedback(0);
@@ -174,7 +180,7 @@ public final class ParticleSystem implements EngineSystem {
         square.drawInstances(0, count, context.stats());
         glDisable(GL_BLEND);
         glDepthMask(true);
-        world.resource(Counters.class).put("particles.count", count);
+        world.resource(Counters.class).put(COUNT, count);
     }
 
     /**

@@ -29,7 +29,7 @@
  * opacity times (true radius / drawn radius)², the light it would cover; flakes fade out towards the cube's
  * inscribed sphere, so none pops in as it wraps. Lit as a thin translucent plate at a random angle: albedo ·
  * (½ · sun · visibility + sky), the sun's visibility from the shadow maps, then the air's fog. Premultiplied alpha,
- * blended over the picture after every opaque system ({@code SystemSpec.transparent()}), without sorting: all
+ * blended over the picture after every opaque system ({@code SystemSpec.layer(Layer.TRANSPARENT)}), without sorting: all
  * flakes are one colour, so the order barely shows.
  *
  * <p><b>Cost.</b> The update reads and writes 24 bytes per flake per step; the draw is 4 vertices and 2 triangles

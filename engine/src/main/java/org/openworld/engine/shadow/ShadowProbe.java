@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL11C.*;
 import static org.lwjgl.opengl.GL30C.*;
 
 import org.joml.Vector3fc;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.HeightField;
@@ -17,6 +18,7 @@ import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.origin.RenderOrigin;
 
@@ -34,10 +36,16 @@ import org.openworld.engine.origin.RenderOrigin;
  * the ground is taken as flat at sea level.
  */
 final class ShadowProbe {
+    /** The counters: the flicker's mean and its pixels, the acne's fraction and its pixels. */
+    private static final Counter FLICKER = Counter.of("shadow", "flicker");
+    private static final Counter FLICKER_PIXELS = Counter.of("shadow", "flicker-pixels");
+    private static final Counter ACNE = Counter.of("shadow", "acne");
+    private static final Counter ACNE_PIXELS = Counter.of("shadow", "acne-pixels");
 
-    /** Texture units: the copied depth, the previous frame's points. */
-    private static final int UNIT_DEPTH = 0;
-    private static final int UNIT_POINTS = 1;
+    private static final TextureUnits UNITS = new TextureUnits();
+    /** The copied depth, the previous frame's points. */
+    private static final TextureUnits.Sampler DEPTH = UNITS.add("sceneDepth");
+    private static final TextureUnits.Sampler POINTS = UNITS.add("points");
 
     private final GlContext gl;
     /** The system's owner, which closes the targets as they are re-made and everything at the end. */
@@ -62,8 +70,8 @@ final class ShadowProbe {
         this.owned = context.owned();
         fullScreen = context.own("probe.fullScreen", Mesh.fullScreenTriangle(gl));
         program = context.own("probe", context.shaders().program("shadow/probe.vert", "shadow/probe.frag"));
-        program.sampler("sceneDepth", UNIT_DEPTH);
-        program.sampler("points", UNIT_POINTS);
+        program.sampler(DEPTH);
+        program.sampler(POINTS);
         revisit = program.int1("revisit");
     }
 
@@ -79,11 +87,11 @@ final class ShadowProbe {
         // 2. per pixel: visibility and world point (probe.frag), every pixel written, read back bottom row first
         glDisable(GL_DEPTH_TEST);
         program.use();
-        depthCopy.depth().bind(UNIT_DEPTH);
+        depthCopy.depth().bind(DEPTH.unit());
         draw(probed, false, context, pixels);
         // 3. the last frame's points under this frame's maps: what changed there is the maps' flicker
         if (haveLast) {
-            lastProbed.color().bind(UNIT_POINTS);
+            lastProbed.color().bind(POINTS.unit());
             draw(revisited, true, context, revisitedPixels);
         }
         // 4. judged against the last frame and the height field, into the counters
@@ -120,11 +128,11 @@ final class ShadowProbe {
         ShadowStatistics.Measures measures = statistics.measure(pixels, lastPointsNow, probed.width(), eye, toSun,
                 ground, highestCaster(CasterHeights.of(world)));
         measures.flicker().ifPresent(flicker -> {
-            counters.put("shadow.flicker", flicker.mean());
-            counters.put("shadow.flicker-pixels", flicker.pixels());
+            counters.put(FLICKER, flicker.mean());
+            counters.put(FLICKER_PIXELS, flicker.pixels());
         });
-        counters.put("shadow.acne", measures.acne().fraction());
-        counters.put("shadow.acne-pixels", measures.acne().pixels());
+        counters.put(ACNE, measures.acne().fraction());
+        counters.put(ACNE_PIXELS, measures.acne().pixels());
     }
 
     /**

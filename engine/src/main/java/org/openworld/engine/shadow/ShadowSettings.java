@@ -28,8 +28,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *                     over its last tenth (the PAPER map covers the view up to here)
  * @param normalOffset CASCADES: the looked-up point is moved off the surface along its normal by this many texels
  *                     times the sine of the sun's angle to the normal
- * @param slopeBias    CASCADES: the depth compared is pulled towards the sun by this many texels times the tangent of
- *                     the sun's angle to the normal (and the filter's reach)
+ * @param slopeBias    CASCADES: the slope-scaled depth bias: the depth compared is pulled towards the sun by this
+ *                     many texels times the tangent of the sun's angle to the normal (and the filter's reach)
  * @param refresh      when a map is redrawn: ALWAYS (every map every frame), MOVED (only when its box moved by a
  *                     texel or the sun turned by more than {@code refreshAngle}) or STAGGERED (the default: MOVED, and
  *                     cascade i at most every 2^i frames, unless its kept box no longer holds its slice of the view)

@@ -12,6 +12,7 @@ import org.joml.Vector3d;
 import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
@@ -51,6 +52,8 @@ import org.openworld.engine.shadow.ShadowSettings.Method;
  * <p>No views, and so no shadows, while the sun is below the horizon: its light is then nil anyway.
  */
 public final class ShadowSystem implements EngineSystem, PassOwner {
+    /** The counter of the cascades drawn again this frame. */
+    private static final Counter REDRAWN = Counter.of("shadow", "redrawn");
 
     /** The most cascades: the length of the block's matrix array ({@code ShadowSettings.cascades}' maximum). */
     static final int MAX_CASCADES = 4;
@@ -161,7 +164,7 @@ public final class ShadowSystem implements EngineSystem, PassOwner {
         }
         boxes = List.copyOf(held);
         writeBlock(s, eye, world.resource(RenderOrigin.class));
-        world.resource(Counters.class).put("shadow.redrawn", views.size());
+        world.resource(Counters.class).put(REDRAWN, views.size());
         return views;
     }
 

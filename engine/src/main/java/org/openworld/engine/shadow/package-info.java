@@ -15,14 +15,10 @@
  * 0.01, 0.1), against the surface shadowing itself where one texel's single depth stands for a tilted patch of
  * ground ("acne"), at the price of shadows that come loose from their casters when too large; and
  * <b>percentage-closer filtering</b> (figure 11's 1×1 to 7×7 kernels): the mean of N × N such tests a texel apart,
- * a soft edge N texels wide instead of a jagged one. The paper's depth buffer has 24 bits
- * ({@link org.openworld.engine.shadow.ShadowSettings.Depth#FIXED24}); the default stores 32-bit floats, never coarser.
- * Both span 0 .. 1 over the box's depth, so a margin is the same share of it in both, and the paper's margins are
- * thousands of 24-bit steps: its acne is a texel's footprint, not rounding.
- * Beyond the paper, the sun's disc (0.53°) blurs an edge by
+ * a soft edge N texels wide instead of a jagged one. Beyond the paper, the sun's disc (0.53°) blurs an edge by
  * 0.93 cm per metre between caster and ground: with {@code shadow.penumbra} one more test, against a depth
  * {@code 1.5 N t / 0.0093} metres nearer the sun (t the texel), finds casters far enough for that blur to outgrow the
- * filter, and there the N × N tests spread to two texels apart (no further: nearest-texel tests would show as steps).
+ * filter, and there the N × N tests spread to two texels apart.
  *
  * <h2>Why the paper's map fails on a big world, and cascades</h2>
  * One map over everything the camera sees spreads its texels over kilometres: 2048 texels over an 8 km view are 4 m
@@ -53,34 +49,25 @@
  * {@code lod.rule=paper}: levels from the viewer's eye, {@code lod.shadow-coarsening} levels coarser).
  *
  * <h2>Redrawing only what moved</h2>
- * A map holds depths seen through its box, and the stable fit moves a box by whole texels only: while the newly fitted
- * box is the very one the map was drawn with, and the casters are unchanged (no setting changed), a redraw would write
- * the same depths. {@link org.openworld.engine.shadow.CascadeRefresh} keeps such a map ({@code shadow.refresh}): the
- * system gives the engine no view for it, so its layer is neither cleared nor drawn, and the block goes on describing
- * the box it was drawn with. The sun turning turns every box a little every frame; a map keeps the old direction until
- * the sun has turned by more than {@code shadow.refresh-angle}. Staggered (the default), a far cascade whose box moved
- * also waits for its turn, cascade i at most every 2^i frames (the frames whose number has exactly i − 1 trailing zero
- * bits, so no two far cascades share a frame), read meanwhile through its old box, which matches its depths; one whose
- * old box no longer holds every corner of its slice is redrawn at once. The flicker measure does not see the skips.
+ * The stable fit moves a box by whole texels only, so while the fitted box is the one a map was drawn with and the
+ * casters are unchanged, a redraw would write the same depths: {@link org.openworld.engine.shadow.CascadeRefresh}
+ * keeps such a map ({@code shadow.refresh}, the engine gets no view for it), until the sun has turned by more than
+ * {@code shadow.refresh-angle}; staggered (the default), far cascade i waits for its turn, at most every 2^i frames.
  *
  * <h2>The lookup</h2>
- * {@code sunVisibility} walks the cascades from the finest and filters in the first that holds the point; inside its
- * blend band it keeps that result for the loop's next trip, which filters the next cascade and blends the two. Not an
- * {@code if}: a CPU rasteriser runs a group of pixels together and both sides of every branch under masks, but ends a
- * loop once every pixel of the group is done, so the second filter costs only where some pixel lies in a band.
+ * {@code sunVisibility} ({@code shaders/common/shadow.glsl}) walks the cascades from the finest and filters in the
+ * first that holds the point; inside its blend band the loop's next trip filters the next cascade and blends the two.
  *
  * <h2>Cost and limits</h2>
  * Per frame: one depth-only pass per cascade that moved (the terrain's vertex work again, at a coarser level), and
- * per lit pixel N² + 1 depth tests, twice that in a blend band. Measured on llvmpipe in {@code docs/benchmarks.md} and
- * {@code docs/shadows.md}. Limits: a kept map lags the casters that change with the viewer (the terrain's levels, the
- * trees' fade) by the frames it waits; the clouds cast no shadows; the penumbra widens an edge by at most twice the filter, into the shadow only; the sphere
+ * per lit pixel N² + 1 depth tests, twice that in a blend band; measured in {@code docs/shadows.md}, "Cost". Limits: a kept map lags the casters that change with the viewer (the terrain's levels, the
+ * trees' fade) by the frames it waits; the clouds cast no shadows; the penumbra widens an edge by at most twice the
+ * filter, into the shadow only; the sphere
  * fit wastes texels on a wide view; a sun within 8° of the zenith turns the maps' "up" to north, so the texel grid
  * turns once when the sun crosses that line; the margin, in depth units, means different metres for different boxes,
  * as it did in the paper.
  *
- * <h2>Measures</h2>
- * With {@code shadow.measure} on, the counters {@code shadow.flicker} (mean frame-to-frame change of the sun's
- * visibility over pixels whose ground barely moved) and {@code shadow.acne} (the share of sun-facing pixels that a ray
- * marched through the height field finds lit but the map shadows).
+ * <p>With {@code shadow.measure} on, {@link org.openworld.engine.shadow.ShadowProbe} counts the flicker and the acne
+ * of the picture (docs/shadows.md, "Measures").
  */
 package org.openworld.engine.shadow;

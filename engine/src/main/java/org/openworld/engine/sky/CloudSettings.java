@@ -11,7 +11,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * and one of time, {@link CloudField}), how much of the sky it covers, how it moves, and how the sky dome maps it
  * (paper 2.3, figure 5 a–d, {@code shaders/sky/clouds.glsl}).
  *
- * @param mapping       how a view direction finds its point in the field: the four variants of figure 5
+ * @param mapping       the sky-dome mapping, how a view direction finds its point in the field: spherical,
+ *                      spherical-fog, perspective or perspective-fog, the four variants of figure 5
  * @param cover         fraction of the field's samples that are cloud: the density threshold is the field's
  *                      (1 − cover) quantile ({@link CloudField#coverageThreshold}); 0 is a clear sky, 1 overcast
  * @param altitude      height of the cloud plane above the eye, for the perspective mappings
@@ -26,7 +27,8 @@ import org.openworld.engine.settings.SettingsGroup;
  *                      (the docs/design.md yaw convention: 0 north, 90 east)
  * @param resolution    samples of the field per side of a tile, a power of two
  * @param frames        samples of the field over one period, a power of two; the shader blends neighbouring frames
- * @param horizonFog    e-folding distance of the horizon fog along the cloud plane, in tiles: at a distance of
+ * @param horizonFog    fog distance on the cloud layer for the fog mappings: the e-folding distance of the horizon
+ *                      fog along the cloud plane, in tiles: at a distance of
  *                      {@code horizonFog · tileSize} the fog variants keep 1/e of a cloud's opacity and colour. One
  *                      tile (the default) hides the repeats of figure 5c, which show from a few tiles away
  */

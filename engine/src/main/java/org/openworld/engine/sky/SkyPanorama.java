@@ -12,6 +12,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -33,10 +34,15 @@ final class SkyPanorama {
 
     /** Texels along a side of each hemisphere's square; the textures are 2 SIZE × SIZE. */
     static final int SIZE = 576;
-    /** Texture units of the tables the panorama is drawn from. */
-    static final int UNIT_VIEW = 0;
-    static final int UNIT_CLOUDS = 1;
-    static final int UNIT_AIR = 2;
+    private static final TextureUnits DRAWN_FROM = new TextureUnits();
+    /** The tables the panorama is drawn from. */
+    static final TextureUnits.Sampler VIEW = DRAWN_FROM.add("skyView");
+    static final TextureUnits.Sampler CLOUDS = DRAWN_FROM.add("cloudField");
+    static final TextureUnits.Sampler AIR = DRAWN_FROM.add("airTable");
+    private static final TextureUnits DRAWN_WITH = new TextureUnits();
+    /** The panorama itself, sky and clouds, where the sky and the stars are drawn from it. */
+    static final TextureUnits.Sampler SKY_PANORAMA = DRAWN_WITH.add("skyPanorama");
+    static final TextureUnits.Sampler CLOUD_PANORAMA = DRAWN_WITH.add("cloudPanorama");
 
     private final ShaderProgram program;
     private final Texture2D sky;
@@ -54,9 +60,9 @@ final class SkyPanorama {
 
     SkyPanorama(EngineContext context) {
         program = context.own("panoramaProgram", context.shaders().program("sky/sky.vert", "sky/panorama.frag"));
-        program.sampler("skyView", UNIT_VIEW);
-        program.sampler("cloudField", UNIT_CLOUDS);
-        program.sampler("airTable", UNIT_AIR);
+        program.sampler(VIEW);
+        program.sampler(CLOUDS);
+        program.sampler(AIR);
         size = program.vec2("uSize");
         sunDir = program.vec3("uSunDir");
         sunColor = program.vec3("uSunColor");
@@ -75,7 +81,7 @@ final class SkyPanorama {
 
     /**
      * Draws the panorama for a sun and its light, the eye's altitude and the clouds of the moment, with the tables
-     * already bound to {@link #UNIT_VIEW}, {@link #UNIT_CLOUDS} and {@link #UNIT_AIR}; leaves the framebuffer and the
+     * already bound to {@link #VIEW}, {@link #CLOUDS} and {@link #AIR}; leaves the framebuffer and the
      * viewport as they were. The colours are stored times {@code scale} (after sunset 1 / the light on the ground,
      * display units): the night's radiance, 10⁻⁹ of the sun's, lies far below a half float's normal range (6·10⁻⁵), where it keeps a
      * few bits or none, and relative to the ground's light every hour's sky is within it. Readers divide

@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL11C.*;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -14,9 +15,11 @@ import org.joml.Vector4f;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -55,7 +58,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * step's.
  *
  * <p>Per pass (the water's REFLECTION, without the sun's disc, which the water adds as glitter; and MAIN) the sky is
- * the {@link org.openworld.engine.core.SystemSpec#background() background}: drawn after every opaque system, on the
+ * the {@link org.openworld.engine.core.Layer#BACKGROUND background}: drawn after every opaque system, on the
  * far plane with the depth test on and depth writes off, so a pixel some surface covers is rejected before it is
  * shaded, and each sky pixel is one panorama lookup plus the sun's disc.
  *
@@ -63,6 +66,9 @@ import org.openworld.engine.settings.SettingsGroup;
  * panorama and the environment map were redrawn).
  */
 public final class SkySystem implements EngineSystem {
+    /** The counters: 1 when the panorama was drawn; CPU time of tables that arrived this frame, ms. */
+    private static final Counter PANORAMA_DRAWN = Counter.of("sky", "panorama");
+    private static final Counter TABLES_MS = Counter.of("sky", "tables-ms");
 
     /** Texels along a side of the environment map's faces: the sky's gradients are smooth, so few suffice. */
     public static final int ENVIRONMENT_SIZE = 64;
@@ -138,13 +144,21 @@ public final class SkySystem implements EngineSystem {
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("sky").reads(TimeOfDay.class, Settings.class, Camera.class)
-                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).updatesOnGpu().background()
+                .writes(Sun.class, Exposure.class, SkyMaps.class, Wind.class).updatesOnGpu().layer(Layer.BACKGROUND)
                 .draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
     public List<SettingsGroup<?>> settings() {
         return List.of(SkySettings.SETTINGS, AtmosphereSettings.SETTINGS, CloudSettings.SETTINGS);
+    }
+
+    /** The tables' layout, which {@code shaders/sky/atmosphere.glsl} reads them by. */
+    @Override
+    public Map<String, Number> shaderConstants() {
+        return Map.of("SKY_VIEW_WIDTH", SkyView.WIDTH, "SKY_VIEW_HEIGHT", SkyView.HEIGHT,
+                "AERIAL_WIDTH", AerialPerspective.WIDTH, "AERIAL_HEIGHT", AerialPerspective.HEIGHT,
+                "AERIAL_DEPTH", AerialPerspective.DEPTH, "AERIAL_MAX_DISTANCE", AerialPerspective.MAX_DISTANCE);
     }
 
     @Override
@@ -155,8 +169,8 @@ public final class SkySystem implements EngineSystem {
         int seed = settings.get(EngineSettings.class).seed();
         cloudField = CloudField.generate(c.resolution(), c.frames(), c.beta(), seed);
         program = context.own("program", context.shaders().program("sky/sky.vert", "sky/sky.frag"));
-        program.sampler("skyPanorama", 0);
-        program.sampler("cloudPanorama", 1);
+        program.sampler(SkyPanorama.SKY_PANORAMA);
+        program.sampler(SkyPanorama.CLOUD_PANORAMA);
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
         sunDisc = program.float1("uSunDisc");
@@ -251,9 +265,9 @@ public final class SkySystem implements EngineSystem {
             threshold = CloudField.coverageThreshold(cloudField, c.cover());
             thresholdCover = c.cover();
         }
-        skyView.bind(SkyPanorama.UNIT_VIEW);
-        clouds.bind(SkyPanorama.UNIT_CLOUDS);
-        air.bind(SkyPanorama.UNIT_AIR);
+        skyView.bind(SkyPanorama.VIEW.unit());
+        clouds.bind(SkyPanorama.CLOUDS.unit());
+        air.bind(SkyPanorama.AIR.unit());
         Vector3f ground = new Vector3f(sun.color()).mul(Math.max(sun.direction().y(), 0)).add(sun.ambient());
         double light = Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT);
         panoramaScale = light < PANORAMA_SCALED_BELOW ? (float) (1 / light) : 1;
@@ -262,8 +276,8 @@ public final class SkySystem implements EngineSystem {
         // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
         // has a depth buffer, so the depth test passes whatever its state)
         program.use();
-        panorama.sky().bind(0);
-        panorama.clouds().bind(1);
+        panorama.sky().bind(SkyPanorama.SKY_PANORAMA.unit());
+        panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(1);
         nightUniforms.set(night, panoramaScale);
         environment.render(face -> {
@@ -275,7 +289,7 @@ public final class SkySystem implements EngineSystem {
         panoramaSun.set(sun.direction());
         panoramaClouds = c;
         panoramaAlbedo = albedo;
-        counters.put("sky.panorama", 1);
+        counters.put(PANORAMA_DRAWN, 1);
     }
 
     /** New tables for a sun and an eye, reusing those of {@code current} (may be null) that the air shares. */
@@ -295,7 +309,7 @@ public final class SkySystem implements EngineSystem {
 
     private void accept(SunTables fresh, Counters counters) {
         tables = fresh;
-        counters.put("sky.tables-ms", fresh.buildMillis());
+        counters.put(TABLES_MS, fresh.buildMillis());
     }
 
     /**
@@ -319,8 +333,8 @@ public final class SkySystem implements EngineSystem {
     @Override
     public void render(Pass pass, RenderContext context) {
         program.use();
-        panorama.sky().bind(0);
-        panorama.clouds().bind(1);
+        panorama.sky().bind(SkyPanorama.SKY_PANORAMA.unit());
+        panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
         nightUniforms.set(night, panoramaScale);

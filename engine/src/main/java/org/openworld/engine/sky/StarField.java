@@ -45,8 +45,8 @@ final class StarField {
 
     StarField(EngineContext context, StarCatalogue catalogue) {
         program = context.own("starsProgram", context.shaders().program("sky/stars.vert", "sky/stars.frag"));
-        program.sampler("skyPanorama", 0);
-        program.sampler("cloudPanorama", 1);
+        program.sampler(SkyPanorama.SKY_PANORAMA);
+        program.sampler(SkyPanorama.CLOUD_PANORAMA);
         toWorld = program.mat3("uEquatorialToWorld");
         night = new NightUniforms(program);
         count = catalogue.count();

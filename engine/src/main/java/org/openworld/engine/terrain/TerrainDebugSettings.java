@@ -7,7 +7,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * Views that show how the terrain is built rather than how it looks.
  *
  * @param wireframe draw the triangles' edges only: the stitching between levels becomes visible
- * @param colouring what the surface colour shows
+ * @param colouring what the surface colour shows: shaded, the LOD level (figure 6) or the tangent frame (figure 4)
  * @param freezeLod keep choosing levels from where the camera was when this was switched on, so flying away shows the
  *                  cut from outside (with {@code culling.freeze}, the frozen frustum too)
  */

@@ -234,7 +234,7 @@ final class TerrainShading {
      * Draws the ordered patches in the colouring asked for, near ones first; the maps are bound to their units.
      * Quilts the textures (or goes back to the tiles) first if {@code materials.tiling} turned to or from quilted,
      * and bakes the far material again if a setting it depends on changed. {@code sunShadowed}: the pass has the
-     * sun's shadow maps bound (RenderContext#sunShadowed), else the programs without the lookup draw. Returns how
+     * sun's shadow maps bound (RenderContext#shares), else the programs without the lookup draw. Returns how
      * many patches the near program drew (all of them in the debug colourings).
      */
     int draw(PatchList patches, PatchOrder order, float[] copyOffsets, MaterialSettings settings,

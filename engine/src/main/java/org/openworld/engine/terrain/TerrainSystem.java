@@ -10,6 +10,7 @@ import org.joml.Vector3fc;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
@@ -23,8 +24,10 @@ import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.environment.SnowLine;
+import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.terrain.heights.StageTimes;
@@ -60,11 +63,18 @@ import org.openworld.engine.terrain.stream.UnboundedWorld;
  * the {@link SnowLine}: at init and again each update, as {@code materials.snow-mode} may change while it runs.
  */
 public final class TerrainSystem implements EngineSystem {
+    /** The counters, per pass: patches drawn and culled, selection's CPU time (ms), near patches, triangles. */
+    private static final Counter PATCHES = Counter.of("terrain", "patches");
+    private static final Counter CULLED = Counter.of("terrain", "culled");
+    private static final Counter SELECT_MS = Counter.of("terrain", "select-ms");
+    private static final Counter NEAR = Counter.of("terrain", "near");
+    private static final Counter TRIANGLES = Counter.of("terrain", "triangles");
 
-    /** Texture units: the terrain's maps first (heights, gradients, snow), then the materials (TerrainShading). */
-    private static final int UNIT_HEIGHTS = 0;
-    private static final int UNIT_GRADIENTS = 1;
-    private static final int UNIT_SNOW = 2;
+    /** Texture units: the terrain's maps first (heights, gradients, snow, in this order), then the materials. */
+    private static final TextureUnits UNITS = new TextureUnits();
+    private static final int UNIT_HEIGHTS = UNITS.add("heights").unit();
+    private static final int UNIT_GRADIENTS = UNITS.add("gradients").unit();
+    private static final int UNIT_SNOW = UNITS.add("snowMap").unit();
 
     private final Consumer<String> progress;
     /** Makes a tile's heights, pyramid, snow map and sky view: generated or imported unless told otherwise. */
@@ -231,10 +241,9 @@ public final class TerrainSystem implements EngineSystem {
             ground.prepare(patches, copyOffsets, pass); // what the shading reads
         }
         Counters counters = world.resource(Counters.class);
-        String prefix = "terrain." + pass.label() + ".";
-        counters.add(prefix + "patches", patches.size());
-        counters.add(prefix + "culled", selection.culledPatches());
-        counters.add(prefix + "select-ms", selectMs);
+        counters.add(PATCHES.in(pass), patches.size());
+        counters.add(CULLED.in(pass), selection.culledPatches());
+        counters.add(SELECT_MS.in(pass), selectMs);
         // 2. nearest first, so near ground hides far ground before it is shaded
         order.sort(patches, tree.bounds(), ground.residency(), copyOffsets, eye);
         // 3. the maps, then the patches, front faces only: in the sun's pass with the heights alone, else with the
@@ -255,8 +264,8 @@ public final class TerrainSystem implements EngineSystem {
                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             }
             int near = shading.draw(patches, order, drawnOffsets, settings.get(MaterialSettings.class),
-                    debug.colouring(), context.sunShadowed(), renderer, context.stats());
-            counters.add(prefix + "near", near);
+                    debug.colouring(), context.shares(SunShadow.class), renderer, context.stats());
+            counters.add(NEAR.in(pass), near);
             if (farField != null && pass == Pass.MAIN
                     && debug.colouring() == TerrainDebugSettings.Colouring.SHADED) {
                 // 4. beyond the patches, the far field to the horizon
@@ -270,7 +279,7 @@ public final class TerrainSystem implements EngineSystem {
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
         }
         glDisable(GL_CULL_FACE);
-        context.world().resource(Counters.class).add(prefix + "triangles", context.stats().triangles() - triangles);
+        context.world().resource(Counters.class).add(TRIANGLES.in(pass), context.stats().triangles() - triangles);
     }
 
     private static Vector3f viewerEye(World world) {

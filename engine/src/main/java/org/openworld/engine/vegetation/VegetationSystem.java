@@ -9,6 +9,7 @@ import org.joml.Vector3f;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.Cullable;
 import org.openworld.engine.core.EngineContext;
@@ -38,6 +39,10 @@ import org.openworld.engine.settings.SettingsGroup;
  * culling's {@link Visibility} for the pass camera and has {@link TreeDraw} draw the visible tiles' plants.
  */
 public final class VegetationSystem implements EngineSystem {
+    /** The counters: placing's CPU time (ms, when plants were placed), the plants, those drawn per pass. */
+    private static final Counter PLACE_MS = Counter.of("vegetation", "place-ms");
+    private static final Counter COUNT = Counter.of("vegetation", "count");
+    private static final Counter DRAWN = Counter.of("vegetation", "drawn");
 
     /** The share of the view distance the viewer may move before the plants are placed again. */
     static final double REBUILD_SHARE = 0.25;
@@ -130,7 +135,7 @@ public final class VegetationSystem implements EngineSystem {
 
     /** The new layout on the GPU and its boxes with the culling. */
     private void take(World world, Placed placed) {
-        world.resource(Counters.class).put("vegetation.place-ms", placed.ms());
+        world.resource(Counters.class).put(PLACE_MS, placed.ms());
         layout = placed.layout();
         draw.upload(layout);
         if (layout.bounds() != null) {
@@ -163,8 +168,8 @@ public final class VegetationSystem implements EngineSystem {
         int drawn = draw.draw(pass, context, layout, visibility, s,
                 new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z()), new float[] {wind.x, wind.z});
         Counters counters = world.resource(Counters.class);
-        counters.put("vegetation.count", layout.count());
-        counters.add("vegetation." + pass.label() + ".drawn", drawn);
+        counters.put(COUNT, layout.count());
+        counters.add(DRAWN.in(pass), drawn);
     }
 
     @Override

@@ -3,6 +3,7 @@ package org.openworld.engine.water;
 import java.util.List;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.origin.RenderOrigin;
 
@@ -12,15 +13,16 @@ import org.openworld.engine.origin.RenderOrigin;
  * rasteriser runs both sides of a branch; and the paper's stencil method (stencil.frag). The two Fresnel programs
  * come twice, with the sun's shadow lookup and compiled without it ({@code SUN_UNSHADOWED}) for passes where no shadow
  * map is bound: a software rasteriser runs the lookup's loop once even for no cascade (docs/shadows.md). Each
- * {@code use} binds one and sets its uniforms; the caller binds the textures to the units below and draws.
+ * {@code use} binds one and sets its uniforms; the caller binds the textures to the samplers' units below and draws.
  */
 final class WaterPrograms {
 
-    static final int UNIT_REFLECTION = 0;
-    static final int UNIT_REFRACTION = 1;
-    static final int UNIT_DEPTH = 2;
-    static final int UNIT_FRESNEL = 3;
-    static final int UNIT_RIPPLES = 4;
+    private static final TextureUnits UNITS = new TextureUnits();
+    static final TextureUnits.Sampler REFLECTION = UNITS.add("reflection");
+    static final TextureUnits.Sampler REFRACTION = UNITS.add("refraction");
+    static final TextureUnits.Sampler DEPTH = UNITS.add("depthCopy");
+    static final TextureUnits.Sampler FRESNEL = UNITS.add("fresnelTable");
+    static final TextureUnits.Sampler RIPPLES = UNITS.add("ripples");
 
     /**
      * What the Fresnel programs are told of the ripples, see water/optics.glsl's uRipple and uRippleOrigin (the render
@@ -76,10 +78,10 @@ final class WaterPrograms {
                           Uniform.Vec4 rippleOrigin) {
 
         static Optics of(ShaderProgram program) {
-            program.sampler("refraction", UNIT_REFRACTION);
-            program.sampler("depthCopy", UNIT_DEPTH);
-            program.sampler("fresnelTable", UNIT_FRESNEL);
-            program.sampler("ripples", UNIT_RIPPLES);
+            program.sampler(REFRACTION);
+            program.sampler(DEPTH);
+            program.sampler(FRESNEL);
+            program.sampler(RIPPLES);
             return new Optics(Plane.of(program), program.float1("uLevel"), program.vec3("uExtinction"),
                     program.vec4("uRipple"), program.vec4("uRippleOrigin"));
         }
@@ -100,7 +102,7 @@ final class WaterPrograms {
         static Above of(EngineContext context, String role, List<String> light) {
             ShaderProgram p = context.own(role, context.shaders().program(light, "water/water.vert",
                     "water/fresnel.frag"));
-            p.sampler("reflection", UNIT_REFLECTION);
+            p.sampler(REFLECTION);
             return new Above(p, Optics.of(p), p.int1("uReflected"), p.vec3("uBody"), p.float1("uMicroSlope2"),
                     p.float1("uResolvedSlope2"));
         }
@@ -122,7 +124,7 @@ final class WaterPrograms {
         below = Below.of(context, "underwater", List.of());
         belowUnshadowed = Below.of(context, "underwater.unshadowed", List.of("SUN_UNSHADOWED"));
         stencil = context.own("stencil", context.shaders().program("water/water.vert", "water/stencil.frag"));
-        stencil.sampler("reflection", UNIT_REFLECTION);
+        stencil.sampler(REFLECTION);
         stencilPlane = Plane.of(stencil);
         stencilStep = stencil.int1("uStep");
         stencilAlpha = stencil.float1("uAlpha");
@@ -135,7 +137,7 @@ final class WaterPrograms {
      * @param glitterSlope2 mean square slope of the ripples finer than the texture
      * @param resolvedSlope2 mean square slope of the ripples the texture holds: where a pixel is too coarse to show
      *                       them, the shader moves this variance from the normal into the glitter's lobe
-     * @param sunShadowed   the pass has the sun's shadow maps bound (RenderContext#sunShadowed)
+     * @param sunShadowed   the pass has the sun's shadow maps bound (RenderContext#shares)
      */
     void useAbove(PlaneOnScreen plane, float level, WaterOptics optics, Ripple ripple, boolean hasReflection,
                   float glitterSlope2, float resolvedSlope2, boolean sunShadowed) {

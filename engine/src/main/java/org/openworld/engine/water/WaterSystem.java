@@ -12,10 +12,12 @@ import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
+import org.openworld.engine.core.Counter;
 import org.openworld.engine.core.Counters;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Owned;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.PassOwner;
 import org.openworld.engine.core.PassView;
@@ -24,6 +26,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.SkyMaps;
+import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.gl.Format;
 import org.openworld.engine.gl.Framebuffer;
@@ -54,6 +57,8 @@ import org.openworld.engine.water.WaterSettings.Method;
  * height field stays when the terrain is switched off.
  */
 public final class WaterSystem implements EngineSystem, PassOwner {
+    /** The counter that is 1 when the eye is under the water. */
+    private static final Counter UNDERWATER = Counter.of("water", "underwater");
 
     /** Cosines per row of the Fresnel table: the steepest change, near total internal reflection, spans 3 texels. */
     private static final int FRESNEL_SIZE = 256;
@@ -100,12 +105,12 @@ public final class WaterSystem implements EngineSystem, PassOwner {
 
     @Override
     public SystemSpec spec() {
-        // overOpaque(): after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
+        // Layer.OVER_OPAQUE: after every opaque system of MAIN (the terrain, the sky, the trees, ...), whose picture it
         // copies to show what lies behind the water. The level is published, not written in the frame: the trees,
         // opaque and so before the water, read it too. prepares(REFLECTION): in the reflection pass it draws
         // nothing, only scissors the pass to the water's part of the screen (beginPass).
         return SystemSpec.named("water").reads(Settings.class, Camera.class, SkyMaps.class)
-                .publishes(WaterLevel.class).overOpaque().prepares(Pass.REFLECTION).draws(Pass.MAIN);
+                .publishes(WaterLevel.class).layer(Layer.OVER_OPAQUE).prepares(Pass.REFLECTION).draws(Pass.MAIN);
     }
 
     @Override
@@ -217,7 +222,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         WaterSettings s = context.world().resource(Settings.class).get(WaterSettings.class);
         updateRipples(s);
         boolean underwater = underwater(s, context.camera());
-        context.world().resource(Counters.class).put("water.underwater", underwater ? 1 : 0);
+        context.world().resource(Counters.class).put(UNDERWATER, underwater ? 1 : 0);
         // whether the reflection pass ran for this very camera this frame (see mirroredViewer): read, never reset
         boolean reflected = mirroredViewer == context.camera();
         if (drawsByStencil(s, context.camera())) {
@@ -255,27 +260,27 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         WaterPrograms.Ripple ripple = new WaterPrograms.Ripple((float) (1 / RIPPLE_TILE), RIPPLE_FRAMES,
                 (float) (simTime / RIPPLE_PERIOD % 1.0), rippleSlopeScale,
                 WaterPrograms.Ripple.originTiles(origin.x(), origin.z(), RIPPLE_TILE));
-        behind.color().bind(WaterPrograms.UNIT_REFRACTION);
-        behind.depth().bind(WaterPrograms.UNIT_DEPTH);
-        fresnelTable.bind(WaterPrograms.UNIT_FRESNEL);
-        ripples.bind(WaterPrograms.UNIT_RIPPLES);
+        behind.color().bind(WaterPrograms.REFRACTION.unit());
+        behind.depth().bind(WaterPrograms.DEPTH.unit());
+        fresnelTable.bind(WaterPrograms.FRESNEL.unit());
+        ripples.bind(WaterPrograms.RIPPLES.unit());
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
         if (underwater) {
             // every pixel is under water: the shader writes the surface's depth, or the scene's where that is nearer
-            programs.useBelow((float) s.level(), optics, ripple, context.sunShadowed());
+            programs.useBelow((float) s.level(), optics, ripple, context.shares(SunShadow.class));
             glDepthFunc(GL_ALWAYS);
             fullScreen.draw(context.stats());
             glDepthFunc(GL_LESS);
             return;
         }
         if (reflection != null) {
-            reflection.color().bind(WaterPrograms.UNIT_REFLECTION);
+            reflection.color().bind(WaterPrograms.REFLECTION.unit());
         }
         double slopeVariance = s.rmsSlope() * s.rmsSlope();
         programs.useAbove(onScreen(context.camera(), s), (float) s.level(), optics, ripple, reflected,
                 (float) (slopeVariance * (1 - RESOLVED_VARIANCE)), (float) (slopeVariance * RESOLVED_VARIANCE),
-                context.sunShadowed());
+                context.shares(SunShadow.class));
         drawPlane(context);
     }
 
@@ -312,7 +317,7 @@ public final class WaterSystem implements EngineSystem, PassOwner {
         glColorMask(true, true, true, true);
         // 4. the mirrored scene over the whole screen, kept where the stencil says water, blended by its alpha
         if (reflected) {
-            reflection.color().bind(WaterPrograms.UNIT_REFLECTION);
+            reflection.color().bind(WaterPrograms.REFLECTION.unit());
             glDisable(GL_DEPTH_TEST);
             glDepthMask(false);
             glStencilFunc(GL_EQUAL, 0xFF, 0xFF);

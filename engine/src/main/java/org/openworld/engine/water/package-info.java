@@ -62,13 +62,12 @@
  *
  * <p><b>Cost.</b> The reflection pass redraws the terrain (a quarter of the pixels, a quarter of the triangles) and
  * the sky, below the horizon; the water shades only the pixels where it is seen, about 11 texture reads each, plus a
- * copy of the scene. On llvmpipe at 1280 × 720 with the sea over half the picture that took the water from about
- * 111 ms to about 36 ms a frame (docs/water.md, "Cost").
- * Start-up: the ripple field, 64 frames of 128² by FFT, about 0.2 s. Figures in {@code docs/benchmarks.md}.
+ * copy of the scene; at start-up the ripple field, 64 frames of 128² by FFT. Measured in docs/water.md, "Cost".
  *
  * <p><b>Limits.</b> A plane, not a height field: no lakes above sea level, no waves that move the geometry, no
  * foam. The reflection is exact only for a flat surface; the ripples bend its look-up as if what they reflect were
  * far away, and where that would reach past a shore's mirrored waterline the pixel shows the unbent mirror. Far
- * water keeps its ripples' variance only in the glitter: the reflection there is sharp, not blurred. The pictures are mixed after tone mapping. The eye within 5 cm of the surface has no reflection pass.
+ * water keeps its ripples' variance only in the glitter: the reflection there is sharp, not blurred. The pictures
+ * are mixed after tone mapping. The eye within 5 cm of the surface has no reflection pass.
  */
 package org.openworld.engine.water;

@@ -74,7 +74,7 @@ class SystemOrderTest {
         // Alphabetically "flakes" would go before "sky" and "water"; it must follow every opaque drawer of MAIN.
         List<Fake> systems = List.of(
                 system(SystemSpec.named("water").draws(Pass.MAIN)),
-                system(SystemSpec.named("flakes").transparent().draws(Pass.MAIN)),
+                system(SystemSpec.named("flakes").layer(Layer.TRANSPARENT).draws(Pass.MAIN)),
                 system(SystemSpec.named("sky").draws(Pass.MAIN, Pass.REFLECTION)),
                 system(SystemSpec.named("zz-shadow").draws(Pass.SHADOW)),
                 system(SystemSpec.named("hud").draws(Pass.OVERLAY)));
@@ -98,10 +98,11 @@ class SystemOrderTest {
                 system(SystemSpec.named("terrain").draws(Pass.MAIN, Pass.REFLECTION)),
                 system(SystemSpec.named("rocks").draws(Pass.REFLECTION)),
                 system(SystemSpec.named("boulders").reads(String.class).draws(Pass.MAIN)),
-                system(SystemSpec.named("sky").writes(String.class).background().draws(Pass.MAIN, Pass.REFLECTION)),
+                system(SystemSpec.named("sky").writes(String.class).layer(Layer.BACKGROUND)
+                        .draws(Pass.MAIN, Pass.REFLECTION)),
                 system(SystemSpec.named("shadow").reads(String.class).draws(Pass.OVERLAY)),
-                system(SystemSpec.named("water").overOpaque().draws(Pass.MAIN)),
-                system(SystemSpec.named("flakes").transparent().draws(Pass.MAIN)),
+                system(SystemSpec.named("water").layer(Layer.OVER_OPAQUE).draws(Pass.MAIN)),
+                system(SystemSpec.named("flakes").layer(Layer.TRANSPARENT).draws(Pass.MAIN)),
                 system(SystemSpec.named("a-hud").draws(Pass.OVERLAY)));
 
         SystemOrder order = SystemOrder.resolve(systems);
@@ -123,10 +124,10 @@ class SystemOrderTest {
     void aSystemOverTheOpaquePictureFollowsEveryOpaqueOneOfItsPassesAndPrecedesTheTransparentOnes() {
         // Alphabetically "trees" and "zz-rocks" would be split around "water": both are opaque and must go before it.
         List<Fake> systems = List.of(
-                system(SystemSpec.named("water").overOpaque().draws(Pass.MAIN)),
+                system(SystemSpec.named("water").layer(Layer.OVER_OPAQUE).draws(Pass.MAIN)),
                 system(SystemSpec.named("zz-rocks").draws(Pass.MAIN, Pass.SHADOW)),
                 system(SystemSpec.named("trees").draws(Pass.MAIN, Pass.SHADOW, Pass.REFLECTION)),
-                system(SystemSpec.named("flakes").transparent().draws(Pass.MAIN)),
+                system(SystemSpec.named("flakes").layer(Layer.TRANSPARENT).draws(Pass.MAIN)),
                 system(SystemSpec.named("zz-shadow").draws(Pass.SHADOW)));
 
         SystemOrder order = SystemOrder.resolve(systems);

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
+import java.util.Set;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
@@ -56,7 +57,7 @@ class CullingTraversalTest {
             boolean shadow = c % 4 == 3;
             ViewCamera camera = shadow ? sunCamera(random) : randomViewer(random);
             Pass pass = shadow ? Pass.SHADOW : Pass.MAIN;
-            culling.render(pass, new RenderContext(world, camera, new DrawStats(), NO_TARGET, false));
+            culling.render(pass, new RenderContext(world, camera, new DrawStats(), NO_TARGET, Set.of()));
 
             Visibility visibility = world.get(entity, Visibility.class).orElseThrow();
             if (first == null) {
@@ -90,9 +91,9 @@ class CullingTraversalTest {
         int entity = world.spawn();
         world.add(entity, new Cullable(randomTree(new Random(SEED)), OFFSETS));
         ViewCamera camera = ViewCamera.perspective(new CameraPose(0, 100, 0, 0, 0, 60), 16 / 9f, 0.5f, 40_000);
-        culling.render(Pass.MAIN, new RenderContext(world, camera, new DrawStats(), NO_TARGET, false));
+        culling.render(Pass.MAIN, new RenderContext(world, camera, new DrawStats(), NO_TARGET, Set.of()));
         assertTrue(world.get(entity, Visibility.class).isPresent());
-        culling.render(Pass.OVERLAY, new RenderContext(world, camera, new DrawStats(), NO_TARGET, false));
+        culling.render(Pass.OVERLAY, new RenderContext(world, camera, new DrawStats(), NO_TARGET, Set.of()));
         assertTrue(world.get(entity, Visibility.class).isEmpty(),
                 "a Visibility left after the frame would be read, stale, if culling were switched off");
     }

@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.GlTest;
 import org.openworld.engine.HeadlessGl;
@@ -225,6 +226,63 @@ class ShaderProgramTest {
         }
     }
 
+    @Test
+    void aProgramCompiledOnFirstUseLinksThenWithTheValuesSetBefore() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true, Map.of());
+        int programs = GL.context().objects().live(GlObjects.Kind.PROGRAM);
+
+        try (ShaderProgram program = library.program("fill.vert", "fill.frag");
+             Framebuffer target = new Framebuffer(GL.context(), 8, 8, Format.RGBA8, null, Sampling.NEAREST_CLAMP);
+             Mesh triangle = GlTestSupport.fullScreenTriangle(GL.context())) {
+            Uniform.Vec4 scale = program.vec4("uScale");
+            scale.set(0.5f, 0.5f, 0.5f, 1);
+            assertEquals(programs, GL.context().objects().live(GlObjects.Kind.PROGRAM), "nothing compiled before use");
+            target.bind();
+            program.use();
+            assertEquals(programs + 1, GL.context().objects().live(GlObjects.Kind.PROGRAM), "linked by its first use");
+            triangle.draw(new DrawStats());
+            // the value set before the link is the one drawn with: white tint times 0.5, in 8 bits 127 or 128
+            int red = target.read().channel(4, 4, 0);
+            assertTrue(Math.abs(red - 127.5) <= 0.5, "red " + red);
+        }
+    }
+
+    @Test
+    void aLibrarysConstantsAreDefinedInEveryProgram() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(SHARED_GREY); }\n");
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true,
+                Map.of("SHARED_GREY", 0.25));
+        try (ShaderProgram program = library.program("fill.vert", "fill.frag")) {
+            int[] grey = draw(program, program.vec4("uScale"), 1);
+            assertEquals(64, grey[0], 1); // 0.25 · 255 = 63.75, rounded by the 8-bit target
+        }
+        ShaderLibrary without = new ShaderLibrary(GL.context(), ShaderSources.directory(dir));
+        assertThrows(ShaderException.class, () -> without.program("fill.vert", "fill.frag"), "SHARED_GREY undefined");
+    }
+
+    @Test
+    void aProgramCompiledOnFirstUseNamesItsErrorsThen() throws IOException {
+        write("fill.vert", VERTEX);
+        write("fill.frag", FRAGMENT);
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0) }\n"); // the semicolon missing
+        ShaderLibrary library = new ShaderLibrary(GL.context(), ShaderSources.directory(dir), true, Map.of());
+        try (ShaderProgram broken = library.program("fill.vert", "fill.frag")) {
+            ShaderException e = assertThrows(ShaderException.class, broken::use);
+            assertTrue(e.getMessage().contains("tint.glsl"), e.getMessage());
+        }
+        write("lib/tint.glsl", "vec3 tint() { return vec3(1.0); }\n");
+        try (ShaderProgram misspelt = library.program("fill.vert", "fill.frag")) {
+            misspelt.vec4("uScal");
+            ShaderException e = assertThrows(ShaderException.class, misspelt::use);
+            assertTrue(e.getMessage().contains("'uScal'"), e.getMessage());
+        }
+    }
+
     /** Draws the program over a small target and returns the centre pixel's RGBA. */
     private static int[] draw(ShaderProgram program, Uniform.Vec4 scale, float s) {
         try (Framebuffer target = new Framebuffer(GL.context(), 8, 8, Format.RGBA8, null, Sampling.NEAREST_CLAMP);
@@ -273,7 +331,7 @@ class ShaderProgramTest {
             assertEquals(List.of(), library.reloadAll());
             int[] green = draw(program, scale, 0.5f);
             assertEquals(0, green[0]);
-            assertEquals(128, green[1], 1);
+            assertEquals(128, green[1], 1); // 0.5 · 255 = 127.5, rounded to 127 or 128 by the 8-bit target
             assertEquals(0, green[2]);
         }
         assertEquals(0, GL.context().objects().live(GlObjects.Kind.PROGRAM));

@@ -97,6 +97,8 @@ class SnowMotionTest {
                 squares += x * x;
             }
         }
+        // 3n = 90 000 standard normal samples: the mean's standard error is 1 / √90 000 = 0.0033 and that of the
+        // mean square (variance 2 per sample) √(2 / 90 000) = 0.0047, so both bands are six standard errors wide
         assertEquals(0, sum / (3 * n), 0.02);
         assertEquals(1, squares / (3 * n), 0.03);
         float[] again = new float[3];

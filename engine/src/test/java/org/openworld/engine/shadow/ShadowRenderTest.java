@@ -395,7 +395,7 @@ class ShadowRenderTest {
 
         @Override
         public void render(Pass pass, RenderContext context) {
-            told.add(context.sunShadowed());
+            told.add(context.shares(SunShadow.class));
         }
     }
 

@@ -18,6 +18,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -47,7 +48,7 @@ class EnvironmentMapTest {
 
         @Override
         public SystemSpec spec() {
-            return SystemSpec.named("probe").overOpaque().draws(Pass.MAIN);
+            return SystemSpec.named("probe").layer(Layer.OVER_OPAQUE).draws(Pass.MAIN);
         }
 
         @Override

@@ -22,6 +22,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -93,7 +94,7 @@ class SkyOcclusionTest {
     static final class Counter implements EngineSystem {
         @Override
         public SystemSpec spec() {
-            return SystemSpec.named("counter").overOpaque().draws(Pass.MAIN);
+            return SystemSpec.named("counter").layer(Layer.OVER_OPAQUE).draws(Pass.MAIN);
         }
 
         @Override

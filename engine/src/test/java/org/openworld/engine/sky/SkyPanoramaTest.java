@@ -25,6 +25,7 @@ import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
@@ -66,7 +67,7 @@ class SkyPanoramaTest {
 
         @Override
         public SystemSpec spec() {
-            return SystemSpec.named("direct").overOpaque().draws(Pass.MAIN);
+            return SystemSpec.named("direct").layer(Layer.OVER_OPAQUE).draws(Pass.MAIN);
         }
 
         @Override

@@ -89,7 +89,7 @@ class EyeUnderTheGroundTest {
             // the director's floor, and its report
             double floor = ground.heightAt(eye.x(), eye.z()) + CameraController.MIN_CLEARANCE;
             assertEquals(floor, eye.y(), 1e-9, "the eye lifted to the near plane's distance above the ground");
-            assertEquals(floor - INSIDE_THE_HILL.y(), records.get(0).counters().get(CameraSystem.LIFTED), 1e-9);
+            assertEquals(floor - INSIDE_THE_HILL.y(), records.get(0).counters().get(CameraSystem.LIFTED.name()), 1e-9);
         }
     }
 

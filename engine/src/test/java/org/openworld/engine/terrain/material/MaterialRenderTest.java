@@ -307,6 +307,7 @@ class MaterialRenderTest {
             assertTrue(peakBands[3] > peakMap[3] + 50, "peak with bands " + rgb(peakBands) + ", with the map " + rgb(peakMap));
             double[] meadowMap = mean(map, Region.whole(MEADOW));
             double[] meadowBands = mean(bands, Region.whole(MEADOW));
+            // one level of 255: below the snow both modes shade the meadow alike, so only rounding may part them
             assertEquals(meadowMap[3], meadowBands[3], 1, "low ground is the same in both modes");
         }
     }

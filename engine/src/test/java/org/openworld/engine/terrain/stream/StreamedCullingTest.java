@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.joml.Vector4f;
@@ -166,7 +167,7 @@ class StreamedCullingTest {
         w.setResource(Engine.settingsFor(List.of(culling)));
         w.setResource(new Counters());
         w.add(w.spawn(), new Cullable(world.tree().bounds(), offsets(), heights));
-        culling.render(Pass.REFLECTION, new RenderContext(w, camera, new DrawStats(), null, false));
+        culling.render(Pass.REFLECTION, new RenderContext(w, camera, new DrawStats(), null, Set.of()));
         Counters counters = w.resource(Counters.class);
         return new double[] {counters.snapshot().get("culling.reflection.tested"),
             counters.snapshot().get("culling.reflection.outside"), counters.snapshot().get("culling.reflection.inside")};
