@@ -14,8 +14,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * No source, shader, asset or page cites an issue number ("issue 21", "Issue21"): the reader has the repository,
- * not the tracker, so a comment or a heading says what the work was for instead (CONTRIBUTING.md, "Numbers carry
+ * No source, shader, asset or page cites an issue number (the word followed by a number): the reader has the
+ * repository, not the tracker, so a comment or a heading says what the work was for instead (CONTRIBUTING.md, "Numbers carry
  * units" asks the same of numbers: a reason the reader can check).
  */
 class NoIssueNumbersTest {
@@ -37,7 +37,7 @@ class NoIssueNumbersTest {
                     read++;
                     List<String> lines = Files.readAllLines(file, StandardCharsets.ISO_8859_1);
                     for (int i = 0; i < lines.size(); i++) {
-                        if (CITATION.matcher(lines.get(i)).find() && !file.endsWith("NoIssueNumbersTest.java")) {
+                        if (CITATION.matcher(lines.get(i)).find()) {
                             failures.add(DocPage.ROOT.relativize(file) + ":" + (i + 1) + ": " + lines.get(i).strip());
                         }
                     }
@@ -48,10 +48,12 @@ class NoIssueNumbersTest {
         assertEquals(List.of(), failures, "issue numbers cited (say what the work was for instead)");
     }
 
+    /** The examples are put together at run time, so this file passes its own check and the grep. */
     @Test
     void theCheckFindsACitation() {
-        assertTrue(CITATION.matcher("the 10 % Issue 21 allows").find());
-        assertTrue(CITATION.matcher("(issue20)").find());
+        String word = "Issue";
+        assertTrue(CITATION.matcher("the 10 % " + word + " 21 allows").find());
+        assertTrue(CITATION.matcher("(" + word.toLowerCase() + "20)").find());
     }
 
     private static boolean isText(Path file) {
