@@ -15,8 +15,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * No source, shader, asset or page cites an issue number (the word followed by a number): the reader has the
- * repository, not the tracker, so a comment or a heading says what the work was for instead (CONTRIBUTING.md, "Numbers carry
- * units" asks the same of numbers: a reason the reader can check).
+ * repository, not the tracker, so a comment or a heading says what the work was for instead (CONTRIBUTING.md,
+ * "Numbers carry units" asks the same of numbers: a reason the reader can check).
  */
 class NoIssueNumbersTest {
 
