@@ -10,7 +10,8 @@ import org.openworld.engine.drainage.FlowNetwork;
 import org.openworld.engine.files.AtomicFiles;
 
 /**
- * {@code openworld heightmap --stats}: the drainage measures of a grid of heights ({@link DrainageStats}: Flint's
+ * {@code openworld heightmap --stats}: the drainage measures of a grid of heights, whose water leaves at its border
+ * and into the sea (heights at or below 0 m, where the generated worlds put sea level) ({@link DrainageStats}: Flint's
  * concavity θ, Hack's h, the hypsometric integral, slope percentiles, drainage density), printed, and
  * {@code drainage.png}: the channels (cells draining at least the fit range's lower end, blue, darker and wider
  * where they drain more) over the shaded relief in grey.
@@ -21,6 +22,8 @@ final class DrainageReport {
     /** Fit range of the slope–area and length–area fits, m²: 0.1 to 10 km², the channels of hills and valleys. */
     static final double AREA_MIN_M2 = 1e5;
     static final double AREA_MAX_M2 = 1e7;
+    /** Ground at or below this height is sea: rivers end there, as at the grid's border. */
+    private static final double SEA_LEVEL_M = 0;
     /** The channels' colour at the threshold and at the range's top, display RGB. */
     private static final int[] THIN = {120, 170, 230};
     private static final int[] THICK = {10, 40, 150};
@@ -38,7 +41,11 @@ final class DrainageReport {
      */
     static void write(String title, float[] heights, int n, double spacing, Path out) throws IOException {
         long start = System.nanoTime();
-        FlowNetwork net = FlowNetwork.open(heights, n, n, spacing, spacing);
+        boolean[] sea = new boolean[heights.length];
+        for (int i = 0; i < sea.length; i++) {
+            sea[i] = heights[i] <= SEA_LEVEL_M;
+        }
+        FlowNetwork net = FlowNetwork.open(heights, n, n, spacing, spacing, sea);
         DrainageStats s = DrainageStats.of(net, heights, AREA_MIN_M2, AREA_MAX_M2);
         double ms = (System.nanoTime() - start) / 1e6;
         System.out.printf(Locale.ROOT, "drainage of %s: %d² cells %.0f m apart, routed and measured in %.0f ms%n",

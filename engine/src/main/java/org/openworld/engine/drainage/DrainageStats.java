@@ -9,7 +9,8 @@ import java.util.Arrays;
  * @param concavity        θ of Flint's law S ∝ A^−θ, fitted over the channels ({@code areaMin ≤ A ≤ areaMax})
  * @param concavityR2      how well the slope–area line fits its bins (R²)
  * @param concavityBins    the area bins of a tenth of a decade that held a channel cell
- * @param hack             h of Hack's law L ∝ A^h, L the longest flow path to a cell, over the same channels
+ * @param hack             h of Hack's law L ∝ A^h, L the longest flow path to a cell, over the same channels (the
+ *                         outlets, where rivers meet the sea, left out)
  * @param hackR2           how well the length–area line fits its bins (R²)
  * @param areaMin          lower end of the fit range, m²: also the channel threshold for the drainage density
  * @param areaMax          upper end of the fit range, m²
@@ -42,7 +43,7 @@ public record DrainageStats(double concavity, double concavityR2, int concavityB
         int cells = heights.length;
         // a raised cell's slope is the fill's ε, not the land's: it is left out of the slope–area fit
         LogFit sa = LogFit.of(cells, net::area, c -> net.raised(c) ? 0 : net.slope(c), areaMin, areaMax);
-        LogFit hl = LogFit.of(cells, net::area, net::length, areaMin, areaMax);
+        LogFit hl = LogFit.of(cells, net::area, c -> net.outlet(c) ? 0 : net.length(c), areaMin, areaMax);
 
         double min = Double.POSITIVE_INFINITY;
         double max = Double.NEGATIVE_INFINITY;

@@ -57,14 +57,24 @@ public final class FlowNetwork {
      * @param heights {@code width · depth} heights in metres, row-major; not changed
      */
     public static FlowNetwork open(float[] heights, int width, int depth, double dx, double dz) {
-        check(heights, width, depth, dx, dz);
-        boolean[] outlets = new boolean[width * depth];
+        return open(heights, width, depth, dx, dz, new boolean[heights.length]);
+    }
+
+    /**
+     * The network of an open grid: water leaves at its border and at the marked outlets (the sea).
+     *
+     * @param heights {@code width · depth} heights in metres, row-major; not changed
+     * @param outlets cells where the water leaves besides the border, {@code width · depth}; not changed
+     */
+    public static FlowNetwork open(float[] heights, int width, int depth, double dx, double dz, boolean[] outlets) {
+        check(heights, width, depth, dx, dz, outlets);
+        boolean[] marked = outlets.clone(); // kept by the network
         for (int z = 0; z < depth; z++) {
             for (int x = 0; x < width; x++) {
-                outlets[z * width + x] = x == 0 || z == 0 || x == width - 1 || z == depth - 1;
+                marked[z * width + x] |= x == 0 || z == 0 || x == width - 1 || z == depth - 1;
             }
         }
-        return new FlowNetwork(width, depth, dx, dz, false, heights, outlets);
+        return new FlowNetwork(width, depth, dx, dz, false, heights, marked);
     }
 
     /**
@@ -76,10 +86,7 @@ public final class FlowNetwork {
      */
     public static FlowNetwork periodic(float[] heights, int width, int depth, double dx, double dz,
             boolean[] outlets) {
-        check(heights, width, depth, dx, dz);
-        if (outlets.length != heights.length) {
-            throw new IllegalArgumentException("outlets must have one flag per cell, got " + outlets.length);
-        }
+        check(heights, width, depth, dx, dz, outlets);
         boolean[] marked = outlets.clone(); // kept by the network
         boolean any = false;
         int lowest = 0;
@@ -93,13 +100,16 @@ public final class FlowNetwork {
         return new FlowNetwork(width, depth, dx, dz, true, heights, marked);
     }
 
-    private static void check(float[] heights, int width, int depth, double dx, double dz) {
+    private static void check(float[] heights, int width, int depth, double dx, double dz, boolean[] outlets) {
         if (width < 3 || depth < 3 || heights.length != width * depth) {
             throw new IllegalArgumentException("a flow grid needs at least 3 × 3 cells and one height per cell, got "
                     + width + " × " + depth + " and " + heights.length + " heights");
         }
         if (!(dx > 0 && dz > 0)) {
             throw new IllegalArgumentException("cell spacing must be positive, got " + dx + " × " + dz);
+        }
+        if (outlets.length != heights.length) {
+            throw new IllegalArgumentException("outlets must have one flag per cell, got " + outlets.length);
         }
     }
 

@@ -1,6 +1,7 @@
 package org.openworld.engine.terrain;
 
 import java.nio.file.Path;
+import org.openworld.engine.erosion.TileErosion;
 
 /**
  * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow
@@ -18,6 +19,7 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
     public static final String PYRAMID = "pyramid";
     public static final String SNOW_MAP = "snow map";
     public static final String SKY_VISIBILITY = "sky view";
+    public static final String EROSION = "erosion";
 
     /**
      * Makes the heights (synthesised from the seed, or imported when {@link TerrainSettings#importFile()} is set),
@@ -26,9 +28,10 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
      * @throws HeightImportException if the import file cannot be used
      */
     public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
-        HeightMap base = s.imports()
+        HeightMap made = s.imports()
                 ? times.time(IMPORT, () -> HeightImport.read(Path.of(s.importFile()), s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
+        HeightMap base = s.erosion() ? times.time(EROSION, () -> TileErosion.erode(made, s.erosionTalus())) : made;
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
         SkyVisibility sky = times.time(SKY_VISIBILITY, () -> SkyVisibility.of(pyramid));

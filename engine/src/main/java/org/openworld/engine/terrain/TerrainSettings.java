@@ -30,6 +30,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       refuses an import (the demo's command line refuses the two named together)
  * @param memoryBudget   the unbounded world's GPU memory for streamed heights, slopes and snow, MiB: it sets how many
  *                       samples each level keeps around the camera ({@link HeightClipmap})
+ * @param erosion        the tile's heights carved by rivers (stream power with uplift) and settled to the talus
+ *                       ({@link org.openworld.engine.erosion}); off keeps the plain spectral heights
+ * @param erosionTalus   the steepest a hillslope stands after erosion, degrees (the angle of repose)
  */
 public record TerrainSettings(
         @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192, atStart = true)
@@ -60,7 +63,11 @@ public record TerrainSettings(
         @Setting(doc = "UNBOUNDED: made per level around the camera, never repeating; TILE: one map, repeated if "
                 + "generated; an imported map is always the tile", atStart = true) World world,
         @Setting(doc = "unbounded world: GPU memory for the streamed heights, slopes and snow", unit = "MiB", min = 2,
-                max = 4096, atStart = true) int memoryBudget) {
+                max = 4096, atStart = true) int memoryBudget,
+        @Setting(doc = "tile: heights carved by rivers (stream power with uplift) and thermal erosion", atStart = true)
+        boolean erosion,
+        @Setting(doc = "steepest hillslope after erosion (angle of repose)", unit = "deg", min = 20, max = 60,
+                atStart = true) double erosionTalus) {
 
     /** Where the heights come from and how far they reach. */
     public enum World {
@@ -83,7 +90,9 @@ public record TerrainSettings(
             0.60,   // ...and is certain on the top 40 %: snow on the upper slopes, as in the paper's figure 1b
             1,      // px: a 3×3 square keeps the paper's ragged, probabilistic fringe below the snow fields
             World.UNBOUNDED, // the open world the engine is named for; the paper's figures ask for the tile
-            20);    // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
+            20,     // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
+            false,  // the paper's plain spectral heights, as every picture and test of the tile was made
+            38);    // deg: scree's angle of repose, 34-40° (a rock wall stands steeper than any 8 m cell shows)
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);
