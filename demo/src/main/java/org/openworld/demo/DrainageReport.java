@@ -14,7 +14,7 @@ import org.openworld.engine.files.AtomicFiles;
  * and into the sea (heights at or below 0 m, where the generated worlds put sea level) ({@link DrainageStats}: Flint's
  * concavity θ, Hack's h, the hypsometric integral, slope percentiles, drainage density), printed, and
  * {@code drainage.png}: the channels (cells draining at least the fit range's lower end, blue, darker and wider
- * where they drain more) over the shaded relief in grey.
+ * where they drain more) over the shaded relief in grey, the sea flat grey-blue.
  */
 final class DrainageReport {
 
@@ -27,6 +27,8 @@ final class DrainageReport {
     /** The channels' colour at the threshold and at the range's top, display RGB. */
     private static final int[] THIN = {120, 170, 230};
     private static final int[] THICK = {10, 40, 150};
+    /** The sea, where the rivers end, display RGB. */
+    private static final int SEA = 0x5c7ca0;
     /** Grey of the relief: ambient and lit share, out of 255. */
     private static final double AMBIENT = 90;
     private static final double LIT = 165;
@@ -75,12 +77,12 @@ final class DrainageReport {
                 // n · l for the light (-0.5, √0.5, -0.5): level ground 0.71
                 double lit = Math.max(0, (0.5 * gx + Math.sqrt(0.5) + 0.5 * gz) / Math.sqrt(gx * gx + 1 + gz * gz));
                 int grey = (int) Math.min(255, AMBIENT + LIT * lit);
-                image.setRGB(x, z, grey << 16 | grey << 8 | grey);
+                image.setRGB(x, z, h[z * n + x] <= SEA_LEVEL_M ? SEA : grey << 16 | grey << 8 | grey);
             }
         }
         for (int c = 0; c < n * n; c++) {
             double a = net.area(c);
-            if (a < AREA_MIN_M2) {
+            if (net.outlet(c) || a < AREA_MIN_M2) {
                 continue;
             }
             double t = Math.min(1, Math.log10(a / AREA_MIN_M2) / span);
@@ -88,9 +90,11 @@ final class DrainageReport {
             for (int k = 0; k < 3; k++) {
                 rgb = rgb << 8 | (int) Math.round(THIN[k] + t * (THICK[k] - THIN[k]));
             }
-            image.setRGB(c % n, c / n, rgb);
-            if (t > 0.5) { // the trunks two pixels wide
-                image.setRGB(Math.min(c % n + 1, n - 1), c / n, rgb);
+            int brush = t > 0.5 ? 3 : 2; // the channels two pixels wide, the trunks three
+            for (int dz = 0; dz < brush; dz++) {
+                for (int dx = 0; dx < brush; dx++) {
+                    image.setRGB(Math.min(c % n + dx, n - 1), Math.min(c / n + dz, n - 1), rgb);
+                }
             }
         }
         return image;

@@ -77,7 +77,7 @@ public final class TileErosion {
     }
 
     /** The level closest to {@link #ROUTING_SPACING_M}, no smaller than {@link #MIN_ROUTING_SIZE} samples. */
-    static int routingLevel(HeightMap base) {
+    public static int routingLevel(HeightMap base) {
         int k = (int) Math.max(0, Math.round(Math.log(ROUTING_SPACING_M / base.spacing()) / Math.log(2)));
         while (k > 0 && base.size() >> k < MIN_ROUTING_SIZE) {
             k--;

@@ -21,6 +21,8 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.drainage.Wetness;
+import org.openworld.engine.erosion.TileErosion;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.settings.Settings;
@@ -174,6 +176,11 @@ public final class TerrainSystem implements EngineSystem {
         data = TerrainData.create(terrain, seed, times);
         HeightMap base = data.pyramid().base();
         context.world().setResource(HeightField.class, base::heightAt);
+        if (base.periodic()) {
+            HeightMap routed = data.pyramid().level(TileErosion.routingLevel(base));
+            context.world().setResource(times.time("wetness",
+                    () -> Wetness.ofTile(routed.heights(), routed.size(), routed.spacing())));
+        }
         tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         selection = new PatchSelection(tree);
         layout = PatchLayout.tile(base, cells);
