@@ -33,6 +33,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param erosion        the tile's heights carved by rivers (stream power with uplift) and settled to the talus
  *                       ({@link org.openworld.engine.erosion}); off keeps the plain spectral heights
  * @param erosionTalus   the steepest a hillslope stands after erosion, degrees (the angle of repose)
+ * @param ranges         the unbounded world's large-scale structure: ranges and plains tens of kilometres across
+ *                       ({@link org.openworld.engine.tectonics}); off keeps the bands' even relief
  */
 public record TerrainSettings(
         @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192, atStart = true)
@@ -67,7 +69,9 @@ public record TerrainSettings(
         @Setting(doc = "tile: heights carved by rivers (stream power with uplift) and thermal erosion", atStart = true)
         boolean erosion,
         @Setting(doc = "steepest hillslope after erosion (angle of repose)", unit = "deg", min = 20, max = 60,
-                atStart = true) double erosionTalus) {
+                atStart = true) double erosionTalus,
+        @Setting(doc = "unbounded world: mountain ranges and plains tens of kilometres across", atStart = true)
+        boolean ranges) {
 
     /** Where the heights come from and how far they reach. */
     public enum World {
@@ -92,7 +96,8 @@ public record TerrainSettings(
             World.UNBOUNDED, // the open world the engine is named for; the paper's figures ask for the tile
             20,     // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
             false,  // the paper's plain spectral heights, as every picture and test of the tile was made
-            38);    // deg: scree's angle of repose, 34-40° (a rock wall stands steeper than any 8 m cell shows)
+            38,     // deg: scree's angle of repose, 34-40° (a rock wall stands steeper than any 8 m cell shows)
+            false); // the bands' even relief, as every picture and test of the unbounded world was made
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);

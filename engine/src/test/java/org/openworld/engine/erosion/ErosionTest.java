@@ -19,7 +19,7 @@ class ErosionTest {
         TerrainSettings d = TerrainSettings.DEFAULTS;
         return new TerrainSettings(512, 8, d.relief(), d.seaFraction(), d.beta(), 16, d.maxWavelength(), "",
                 d.snowBase(), d.snowFull(), d.snowMorphology(), TerrainSettings.World.TILE, d.memoryBudget(), erosion,
-                d.erosionTalus());
+                d.erosionTalus(), false);
     }
 
     private static DrainageStats measure(HeightMap map) {
