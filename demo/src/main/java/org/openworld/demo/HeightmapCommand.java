@@ -35,6 +35,7 @@ import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.PowerSpectrum;
 import org.openworld.engine.terrain.material.SnowMap;
 import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.TerrainData;
 import org.openworld.engine.terrain.heights.TerrainSettings;
 import picocli.CommandLine.Command;
@@ -92,6 +93,20 @@ final class HeightmapCommand implements Callable<Integer> {
                     + "between samples; writes height.png (16-bit) and relief.png (shaded relief).")
     boolean overview;
 
+    @Option(names = "--stats",
+            description = "Instead of the pictures, measure the drainage (concavity, Hack's exponent, hypsometric "
+                    + "integral, slopes, drainage density) of the tile or import, or for the unbounded world of "
+                    + "1024² samples around the origin; writes drainage.png (channels over shaded relief).")
+    boolean stats;
+
+    @Option(names = "--stats-level", paramLabel = "K",
+            description = "Pyramid level measured by --stats: samples 2^K times terrain.spacing apart "
+                    + "(default: ${DEFAULT-VALUE}, 8 m at the default spacing).", defaultValue = "2")
+    int statsLevel;
+
+    /** Side of the unbounded world's window that --stats measures, samples: 8 km at level 2. */
+    private static final int STATS_WINDOW = 1024;
+
     @Override
     public Integer call() throws IOException {
         Settings settings = newSettings();
@@ -101,6 +116,9 @@ final class HeightmapCommand implements Callable<Integer> {
         int worldSeed = settings.get(EngineSettings.class).seed();
         if (repeat < 1) {
             throw new UserError("--repeat must be at least 1, got " + repeat);
+        }
+        if (stats) {
+            return stats(terrain, worldSeed);
         }
         if (overview) {
             if (terrain.imports()) {
@@ -196,6 +214,40 @@ final class HeightmapCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "snow covers %.1f %% of the map%n", 100 * data.snow().fraction());
         System.out.println("wrote " + out.resolve(HEIGHT_PNG) + ", " + out.resolve(SNOW_PNG) + ", "
                 + out.resolve(SPECTRUM_PNG));
+        return 0;
+    }
+
+    /** {@code --stats}: the drainage measures of the world that {@code terrain.world} names, or the import. */
+    private int stats(TerrainSettings terrain, int worldSeed) throws IOException {
+        if (overview || repeat != 1) {
+            throw new UserError("--stats measures the world once; leave out --overview and --repeat");
+        }
+        if (statsLevel < 0) {
+            throw new UserError("--stats-level must be 0 or more, got " + statsLevel);
+        }
+        Outputs.folder(out);
+        Outputs.png(out.resolve(DrainageReport.DRAINAGE_PNG), false);
+        if (terrain.world() == TerrainSettings.World.UNBOUNDED) {
+            BandedHeights world = new BandedHeights(terrain, worldSeed);
+            if (statsLevel >= world.levels()) {
+                throw new UserError("--stats-level " + statsLevel + ": the unbounded world has levels 0 to "
+                        + (world.levels() - 1));
+            }
+            float[] h = world.level(statsLevel, -STATS_WINDOW / 2, -STATS_WINDOW / 2, STATS_WINDOW);
+            DrainageReport.write(String.format(Locale.ROOT, "the unbounded world, level %d around the origin, seed %d",
+                    statsLevel, worldSeed), h, STATS_WINDOW, world.spacing(statsLevel), out);
+            return 0;
+        }
+        TerrainData data = TerrainData.create(terrain, worldSeed, new StageTimes(stage ->
+                System.out.printf(Locale.ROOT, "%-10s %8.0f ms%n", stage.name(), stage.ms())));
+        if (statsLevel >= data.pyramid().levelCount()) {
+            throw new UserError("--stats-level " + statsLevel + ": the map has levels 0 to "
+                    + (data.pyramid().levelCount() - 1));
+        }
+        HeightMap level = data.pyramid().level(statsLevel);
+        DrainageReport.write(terrain.imports() ? terrain.importFile() + ", level " + statsLevel
+                : String.format(Locale.ROOT, "the tile, level %d, seed %d", statsLevel, worldSeed), level.heights(),
+                level.size(), level.spacing(), out);
         return 0;
     }
 

@@ -67,6 +67,33 @@ class HeightmapCommandTest {
         assertTrue(worst <= 1, "largest difference in 16-bit steps: " + worst);
     }
 
+    /**
+     * {@code --stats} on a small eroded tile (512² at 8 m, routed at level 0): the measures are printed and the
+     * drainage picture written; erosion gives the concavity of real channels (0.3–0.6, docs/terrain.md section 6).
+     */
+    @Test
+    void statsMeasureTheDrainageAndDrawIt() throws Exception {
+        assertEquals(0, Main.execute("heightmap", "--stats", "--stats-level", "0", "--out", dir.toString(),
+                "--set", "terrain.world=tile", "--set", "terrain.size=512", "--set", "terrain.spacing=8",
+                "--set", "terrain.min-wavelength=16", "--set", "terrain.erosion=on"), console.stderr());
+        for (String line : new String[] {"erosion", "concavity theta", "Hack exponent h", "hypsometric integral",
+                "slope percentiles", "drainage density"}) {
+            assertTrue(console.stdout().contains(line), "missing '" + line + "' in\n" + console.stdout());
+        }
+        double theta = Double.parseDouble(console.stdout().replaceAll("(?s).*concavity theta\\s+(-?[0-9.]+).*", "$1"));
+        assertTrue(theta > 0.3 && theta < 0.6, console.stdout());
+        Image picture = Image.read(dir.resolve(DrainageReport.DRAINAGE_PNG));
+        assertEquals(512, picture.width());
+    }
+
+    /** A level the map does not have is one clear line and the user's exit code. */
+    @Test
+    void statsRefuseALevelTheMapLacks() {
+        assertEquals(ExitCode.USER_MISTAKE.code(), Main.execute("heightmap", "--stats", "--stats-level", "20",
+                "--out", dir.toString(), "--set", "terrain.world=tile", "--set", "terrain.size=256"));
+        assertTrue(console.stderr().contains("--stats-level 20"), console.stderr());
+    }
+
     @Test
     void repeatPrintsTheMedianOfEachStage() {
         assertEquals(0, Main.execute("heightmap", "--out", dir.toString(), "--set", "terrain.size=256",

@@ -61,7 +61,7 @@ final class DetailBands {
         TerrainSettings d = TerrainSettings.DEFAULTS;
         TerrainSettings s2 = new TerrainSettings(256, fine, Math.max(6 * sigma, 1e-6), 0.5, beta, 2 * fine,
                 2 * coarse, "", d.snowBase(), d.snowFull(), d.snowMorphology(), TerrainSettings.World.UNBOUNDED,
-                d.memoryBudget(), d.importScale(), 0, d.importDetail());
+                d.memoryBudget(), d.importScale(), 0, d.importDetail(), false, d.erosionTalus(), false);
         return new DetailBands(new BandedHeights(s2, seed), beta, sigma);
     }
 

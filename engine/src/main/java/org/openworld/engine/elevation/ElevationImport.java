@@ -99,7 +99,8 @@ public final class ElevationImport {
         double relief = map.max() - map.min();
         return new TerrainSettings(s.size(), s.spacing(), relief, -map.min() / relief, s.beta(), s.minWavelength(),
                 s.maxWavelength(), s.importFile(), s.snowBase(), s.snowFull(), s.snowMorphology(), s.world(),
-                s.memoryBudget(), s.importScale(), s.seaLevel(), s.importDetail());
+                s.memoryBudget(), s.importScale(), s.seaLevel(), s.importDetail(), s.erosion(), s.erosionTalus(),
+                s.ranges());
     }
 
     /** The heap not yet used: the most the JVM may grow to, less what is in use now. */

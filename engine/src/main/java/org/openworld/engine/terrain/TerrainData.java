@@ -2,6 +2,7 @@ package org.openworld.engine.terrain;
 
 import java.nio.file.Path;
 import org.openworld.engine.elevation.ElevationImport;
+import org.openworld.engine.erosion.TileErosion;
 import org.openworld.engine.terrain.heights.HeightImport;
 import org.openworld.engine.terrain.heights.HeightImportException;
 import org.openworld.engine.terrain.heights.HeightMap;
@@ -30,6 +31,7 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
     public static final String PYRAMID = "pyramid";
     public static final String SNOW_MAP = "snow map";
     public static final String SKY_VISIBILITY = "sky view";
+    public static final String EROSION = "erosion";
 
     /** Makes a tile's data from the settings and the seed: {@link #create}, or a tile of another source. */
     @FunctionalInterface
@@ -46,9 +48,10 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
     public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
         Path file = Path.of(s.importFile());
         boolean real = s.imports() && ElevationImport.handles(file);
-        HeightMap base = s.imports()
+        HeightMap made = s.imports()
                 ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed) : HeightImport.read(file, s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
+        HeightMap base = s.erosion() ? times.time(EROSION, () -> TileErosion.erode(made, s.erosionTalus())) : made;
         // a map at true scale lays its snow over its own height range in metres
         return of(base, real && s.importScale() ? ElevationImport.rangeOf(s, base) : s, seed, times);
     }

@@ -23,6 +23,8 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.elevation.ElevationImport;
+import org.openworld.engine.drainage.Wetness;
+import org.openworld.engine.erosion.TileErosion;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.origin.RenderOrigin;
@@ -30,6 +32,7 @@ import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.lod.CopyLattice;
@@ -169,8 +172,15 @@ public final class TerrainSystem implements EngineSystem {
         progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
                 + (ElevationImport.handles(file) ? ": " + ElevationImport.describe(file, terrain, seed) : "")
                 : "generating " + terrain.size() + "² samples, seed " + seed));
-        return new TileGround(context, tiles.make(terrain, seed, times), seed, cells, UNIT_HEIGHTS,
-                UNIT_GRADIENTS, UNIT_SNOW, times);
+        TerrainData data = tiles.make(terrain, seed, times);
+        HeightMap base = data.pyramid().base();
+        if (base.periodic()) {
+            // how wet each place is, from the water that drains through it (drainage.Wetness)
+            HeightMap routed = data.pyramid().level(TileErosion.routingLevel(base));
+            context.world().setResource(times.time("wetness",
+                    () -> Wetness.ofTile(routed.heights(), routed.size(), routed.spacing())));
+        }
+        return new TileGround(context, data, seed, cells, UNIT_HEIGHTS, UNIT_GRADIENTS, UNIT_SNOW, times);
     }
 
     /** The unbounded world: bands, streamed around where the camera starts, and the programs that read them. */

@@ -3,6 +3,7 @@ package org.openworld.engine.terrain.heights;
 import java.util.SplittableRandom;
 import java.util.function.DoubleBinaryOperator;
 import java.util.stream.IntStream;
+import org.openworld.engine.tectonics.RangeField;
 
 /**
  * The unbounded world's heights, made per level: the 1/ω^β spectrum of {@link SpectralSynthesis} split
@@ -61,6 +62,8 @@ public final class BandedHeights implements HeightSource {
     private final double metresPerUnit;
     private final double base;
     private final double reach;
+    /** Ranges and plains over the bands (terrain.ranges), or null for the bands alone. */
+    private final RangeField ranges;
 
     /** The world of these settings (spacing, relief, sea fraction, β, cut-offs) and seed; terrain.size is unused. */
     public BandedHeights(TerrainSettings s, int seed) {
@@ -83,12 +86,13 @@ public final class BandedHeights implements HeightSource {
             r += band == null ? 0 : metresPerUnit * band.bound();
         }
         reach = r;
+        ranges = s.ranges() ? new RangeField(seed, s.relief()) : null;
     }
 
     /** No height of any level lies below this, metres: the mean less every band's largest magnitude. */
     @Override
     public double lowest() {
-        return base - reach;
+        return base - reach - (ranges == null ? 0 : ranges.drop());
     }
 
     /** No height of any level lies above this, metres. */
@@ -143,11 +147,11 @@ public final class BandedHeights implements HeightSource {
     @Override
     public double height(int level, double x, double z) {
         checkLevel(level);
-        double h = base;
+        double h = ranges == null ? base : 0;
         for (int k = bands.length - 1; k >= level; k--) {
             h += band(k, x, z);
         }
-        return h;
+        return ranges == null ? h : base + ranges.shape(x, z, h);
     }
 
     /**

@@ -38,6 +38,11 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       at true scale
  * @param importDetail   synthesise the octaves a true-scale map is too coarse to hold, down to {@code spacing} or to
  *                       a tile of {@code size} samples, whichever is coarser
+ * @param erosion        the tile's heights carved by rivers (stream power with uplift) and settled to the talus
+ *                       ({@link org.openworld.engine.erosion}); off keeps the plain spectral heights
+ * @param erosionTalus   the steepest a hillslope stands after erosion, degrees (the angle of repose)
+ * @param ranges         the unbounded world's large-scale structure: ranges and plains tens of kilometres across
+ *                       ({@link org.openworld.engine.tectonics}); off keeps the bands' even relief
  */
 public record TerrainSettings(
         @Setting(doc = "samples per side of the height map, a power of two", min = 256, max = 8192, atStart = true)
@@ -74,7 +79,13 @@ public record TerrainSettings(
         @Setting(doc = "true-scale import: the file's height that becomes sea level", unit = "m", min = -12000,
                 max = 9000, atStart = true) double seaLevel,
         @Setting(doc = "true-scale import: synthesise the detail below the data's resolution", atStart = true)
-        boolean importDetail) {
+        boolean importDetail,
+        @Setting(doc = "tile: heights carved by rivers (stream power with uplift) and thermal erosion", atStart = true)
+        boolean erosion,
+        @Setting(doc = "steepest hillslope after erosion (angle of repose)", unit = "deg", min = 20, max = 60,
+                atStart = true) double erosionTalus,
+        @Setting(doc = "unbounded world: mountain ranges and plains tens of kilometres across", atStart = true)
+        boolean ranges) {
 
     /** Where the heights come from and how far they reach. */
     public enum World {
@@ -100,7 +111,10 @@ public record TerrainSettings(
             20,     // MiB: 512² heights, slopes and snow on each of 8 levels: 1 km across at 2 m, 130 km at the 8th
             true,   // a real place's metres are the point of importing it
             0,      // m: elevation models count from mean sea level
-            true);  // a 30-90 m model is soft mush at walking height without the octaves it cannot hold
+            true,   // a 30-90 m model is soft mush at walking height without the octaves it cannot hold
+            false,  // the paper's plain spectral heights, as every picture and test of the tile was made
+            38,     // deg: scree's angle of repose, 34-40° (a rock wall stands steeper than any 8 m cell shows)
+            false); // the bands' even relief, as every picture and test of the unbounded world was made
 
     public static final SettingsGroup<TerrainSettings> SETTINGS =
             SettingsGroup.of("terrain", TerrainSettings.class, DEFAULTS);

@@ -19,9 +19,12 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.culling.Visibility.Containment;
+import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.HeightPyramid;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.heights.TestPyramids;
 import org.openworld.engine.terrain.mesh.PatchPatterns;
+import org.openworld.engine.erosion.TileErosion;
 
 class PatchSelectionTest {
 
@@ -292,6 +295,10 @@ class PatchSelectionTest {
     void sharedBordersMatchInPositionAndSampledLevel(LodMode mode) {
         checkBorders(hills(256, 1, 8, true), mode, 3);
         checkBorders(hills(512, 2, 32, false), mode, 4);
+        // and on eroded ground, whose levels' errors (and so the cut) differ from the hills'
+        HeightMap eroded = TileErosion.erode(TestPyramids.hills(512, 2).base(),
+                TerrainSettings.DEFAULTS.erosionTalus());
+        checkBorders(new World(HeightPyramid.build(eroded), 16, true), mode, 5);
     }
 
     private static void checkBorders(World world, LodMode mode, long seed) {

@@ -10,7 +10,9 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.HeightPyramid;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.heights.TestPyramids;
+import org.openworld.engine.erosion.TileErosion;
 
 /**
  * The screen-error rule against heights measured here, not by the rule's code: for every selected patch, every
@@ -40,7 +42,17 @@ class ScreenErrorRuleTest {
      */
     @Test
     void everySelectedPatchStaysWithinThePixelBound() {
-        HeightPyramid pyramid = rough(256, 2, 3);
+        staysWithinThePixelBound(rough(256, 2, 3));
+    }
+
+    /** The same on eroded ground: valleys cut to their rivers and faces at the talus, each level's error its own. */
+    @Test
+    void erodedGroundStaysWithinThePixelBound() {
+        HeightMap eroded = TileErosion.erode(rough(256, 2, 3).base(), TerrainSettings.DEFAULTS.erosionTalus());
+        staysWithinThePixelBound(HeightPyramid.build(eroded));
+    }
+
+    private static void staysWithinThePixelBound(HeightPyramid pyramid) {
         TerrainQuadtree tree = new TerrainQuadtree(pyramid, 16);
         float[] offsets = TestPyramids.threeByThree(pyramid.base().extent());
         PatchSelection selection = new PatchSelection(tree);
