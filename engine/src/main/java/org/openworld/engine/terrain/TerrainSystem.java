@@ -22,8 +22,8 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.environment.SnowLine;
-import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 

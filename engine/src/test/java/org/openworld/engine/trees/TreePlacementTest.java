@@ -92,8 +92,8 @@ class TreePlacementTest {
             float z = at(here, i, 2);
             if (Math.hypot(x - 300, z + 170) < 599) {
                 inBoth++;
-                assertTrue(hasFootAt(movedFeet, x, z), "a rebuilt disc grows the same trees where the two overlap: none at "
-                        + x + ", " + z);
+                assertTrue(hasFootAt(movedFeet, x, z),
+                        "a rebuilt disc grows the same trees where the two overlap: none at " + x + ", " + z);
             }
         }
         assertTrue(inBoth > 100, "trees in the overlap: " + inBoth);
