@@ -26,7 +26,6 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemOrder;
 import org.openworld.engine.core.SystemOrderException;
 import org.openworld.engine.core.World;
-import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.GlContext;
@@ -125,13 +124,12 @@ public final class Engine implements AutoCloseable {
         world.setResource(counters);
         world.setResource(new TimeOfDay(10.0, 0.0));
         world.setResource(new Camera());
-        world.setResource(new RenderOrigin(RenderOrigin.DEFAULT_STEP)); // the terrain sets its own tile's
         try {
             scene = new ScaledScene(gl, owned, width, height, renderScale(),
                     settings.get(AntialiasSettings.class).enabled());
             fxaa = owned.own(new Fxaa(gl, this.shaders));
             timing = new FrameTiming(gl, owned, order.systems());
-            shared = new SharedBindings(gl, owned);
+            shared = new SharedBindings(gl, owned, world);
             for (EngineSystem system : order.systems()) {
                 // Added first, so a system whose init fails half-way is closed with the others.
                 Owned made = new Owned(system.spec().name());
@@ -261,10 +259,7 @@ public final class Engine implements AutoCloseable {
         stats.reset();
         AntialiasSettings antialias = settings.get(AntialiasSettings.class);
         scene.fit(width(), height(), renderScale(), antialias.enabled()); // either may have changed (the panel)
-        Camera camera = world.resource(Camera.class);
-        PassView viewer = new PassView(camera.view((float) width() / height()), scene.scene());
-        // the point the GPU measures positions from, near the viewer, for every pass of the frame (origin package)
-        world.resource(RenderOrigin.class).follow(camera.pose().x(), camera.pose().z());
+        PassView viewer = shared.viewer(world, (float) width() / height(), scene.scene());
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
         world.setResource(viewer);

@@ -6,6 +6,7 @@ import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 import org.joml.Matrix4f;
+import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.Owned;
 import org.openworld.engine.core.PassView;
@@ -13,16 +14,17 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SharedResource;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
-import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.FrameUniforms;
+import org.openworld.engine.gl.Framebuffer;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.GlTexture;
 import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
+import org.openworld.engine.origin.RenderOrigin;
 
 /**
  * What every shader of a pass can read without its system binding it (docs/design.md, "Passes"): the frame uniform
@@ -40,8 +42,12 @@ final class SharedBindings {
     /** What the owners of passes write that their pass has not yet drawn this frame (the sun's shadow maps). */
     private final Set<Class<?>> held = new HashSet<>();
 
-    /** Makes the frame block and the stand-ins, handing them to {@code owned} (the engine's). */
-    SharedBindings(GlContext gl, Owned owned) {
+    /**
+     * Makes the frame block and the stand-ins, handing them to {@code owned} (the engine's), and gives the world a
+     * render origin with the default step (the terrain, if any, replaces it with its tile's).
+     */
+    SharedBindings(GlContext gl, Owned owned, World world) {
+        world.setResource(new RenderOrigin(RenderOrigin.DEFAULT_STEP));
         frameUniforms = owned.own("frame", new FrameUniforms(gl));
         for (SharedTexture texture : SharedTexture.values()) {
             textureStandIns.put(texture, owned.own("standIn." + texture.sampler(), texture.standIn(gl)));
@@ -63,6 +69,17 @@ final class SharedBindings {
     /** An owner's pass has had its turn (it may have kept the last frame's maps): what it writes is shared from now. */
     void release(Set<Class<?>> written) {
         held.removeAll(written);
+    }
+
+    /**
+     * The viewer's view for this frame, from the {@link Camera}, and the render origin moved to it: every pass of the
+     * frame measures positions from there.
+     */
+    PassView viewer(World world, float aspect, Framebuffer target) {
+        PassView viewer = new PassView(world.resource(Camera.class).view(aspect), target);
+        world.resource(RenderOrigin.class).follow(viewer.camera().exactPosition().x(),
+                viewer.camera().exactPosition().z());
+        return viewer;
     }
 
     /**
@@ -94,7 +111,8 @@ final class SharedBindings {
         Sun sun = world.findResource(Sun.class).orElse(Sun.NOON);
         Exposure exposure = world.findResource(Exposure.class).orElse(Exposure.NONE);
         return new FrameUniforms.Values(camera.viewFrom(origin.x(), origin.z()), new Matrix4f(camera.projection()),
-                camera.positionFrom(origin.x(), origin.z()), camera.near(), camera.far(), sun.direction(), sun.color(), sun.ambient(),
+                camera.positionFrom(origin.x(), origin.z()), camera.near(), camera.far(), sun.direction(), sun.color(),
+                sun.ambient(),
                 exposure.scale(), exposure.scotopic(), simTime, world.resource(TimeOfDay.class).hours(), frame, view.target().width(),
                 view.target().height(), viewer.camera().positionFrom(origin.x(), origin.z()),
                 origin.x() / origin.step(), origin.z() / origin.step(), origin.step(), sun.sky().shaderFactors());

@@ -159,7 +159,8 @@ public final class CameraPathParser {
     private static double coordinate(Line line, int index, String name) throws CameraPathFormatException {
         double metres = line.number(index, name);
         if (!CameraPose.drawable(metres)) {
-            throw line.error(line.token(index), name + " within -16777216 .. 16777216 m (2^24 m, the renderer's reach)");
+            throw line.error(line.token(index),
+                    name + " within -16777216 .. 16777216 m (2^24 m, the renderer's reach)");
         }
         return metres;
     }

@@ -86,8 +86,8 @@ public final class RenderOrigin {
 
     /**
      * {@code value} modulo {@code period}, in [0, period): what a function of period {@code period} needs of a large
-     * coordinate. Java's {@code %} on doubles is IEEE's fmod, which is exact (the remainder of two doubles is a double),
-     * so the only error is the one {@code value} already carries.
+     * coordinate. Java's {@code %} on doubles is IEEE's fmod, which is exact (the remainder of two doubles is a
+     * double), so the only error is the one {@code value} already carries.
      */
     public static double reduce(double value, double period) {
         if (!(period > 0) || !Double.isFinite(period)) {
