@@ -14,7 +14,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param maxHeight    the tallest tree, metres; at least {@code minHeight}
  * @param viewDistance how far from the viewer plants are drawn, metres; they shrink into the ground over the last
  *                     fifth of it, in every pass alike
- * @param lodDistance  how far from the viewer plants keep their full shapes, metres; beyond, their simplified ones,
+ * @param lodDistance  the distance from the viewer where full shapes give way to simplified ones, metres,
  *                     cross-faded (dithered) over a tenth of this distance either side
  * @param shoreMargin  how far above the water a plant's foot must be, metres (the wet rim holds none)
  */

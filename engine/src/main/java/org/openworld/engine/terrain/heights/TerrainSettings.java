@@ -36,8 +36,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       or a file that gives no scale, normalises it to {@code relief} and {@code seaFraction}
  * @param seaLevel       the file's height that becomes sea level (height 0, where the water lies) in a map imported
  *                       at true scale
- * @param importDetail   synthesise the octaves a true-scale map is too coarse to hold, down to {@code spacing} or to
- *                       a tile of {@code size} samples, whichever is coarser
+ * @param importDetail   true-scale import: synthesise the detail below the data's resolution, the octaves the map
+ *                       is too coarse to hold, down to {@code spacing} or to a tile of {@code size} samples, whichever
+ *                       is coarser
  * @param erosion        the tile's heights carved by rivers (stream power with uplift) and settled to the talus
  *                       ({@link org.openworld.engine.erosion}); off keeps the plain spectral heights
  * @param erosionTalus   the steepest a hillslope stands after erosion, degrees (the angle of repose)
