@@ -1,11 +1,10 @@
 package org.openworld.demo;
 
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPose;
-import java.util.List;
-import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.colour.Shimmer;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
@@ -38,8 +37,14 @@ final class StabilityCommand implements Callable<Integer> {
      */
     static final int REFERENCE_SCALE = 4;
 
-    /** The references are supersampled, not post-filtered: the measure's zero is 16 plain samples a pixel. */
-    private static final List<String> REFERENCE_SETTINGS = List.of("antialias.method=off");
+    /**
+     * The references are supersampled, not post-filtered: the measure's zero is 16 plain samples a pixel. The
+     * terrain's level of detail, chosen by its error in pixels, is scaled with them, so that a reference draws the
+     * same triangles as the frame and differs only in its samples (the setting's largest value caps it).
+     */
+    private static final String REFERENCE_AA = "antialias.method=off";
+    private static final String LOD_ERROR = "lod.pixel-error";
+    private static final double LOD_ERROR_MAX = 100;
 
     @Mixin
     RenderOptions render;
@@ -61,28 +66,39 @@ final class StabilityCommand implements Callable<Integer> {
         }
         CameraPose moved = new CameraPose(camera.x() + move[0], camera.y() + move[1], camera.z() + move[2],
                 camera.yaw(), camera.pitch(), camera.fov());
-        Image first = frame(render, camera);
-        Image second = frame(render, moved);
-        ImageComparison diff = ImageComparison.of(first, second);
+        Shimmer shimmer = measure(render, camera, moved);
         System.out.printf(Locale.ROOT, "stability at %dx%d, moved %s,%s,%s m: %.2f %% of the pixels noticeably "
-                        + "changed (ΔE00 above 1), mean ΔE00 %.3f%n", first.width(), first.height(),
-                num(move[0]), num(move[1]), num(move[2]), 100.0 * diff.pixelsAbove(Shimmer.NOTICEABLE) / diff.pixels(),
-                diff.meanDeltaE());
-        RenderOptions large = render.resized(new Size(render.size.width() * REFERENCE_SCALE,
-                render.size.height() * REFERENCE_SCALE), REFERENCE_SETTINGS);
-        Shimmer shimmer = Shimmer.of(first, second, Shimmer.reduce(frame(large, camera), REFERENCE_SCALE),
-                Shimmer.reduce(frame(large, moved), REFERENCE_SCALE));
-        System.out.printf(Locale.ROOT, "shimmer: %.2f %% of the pixels changed noticeably more than their %d-sample "
-                        + "reference (ΔE00 above the reference's + 1); frames from their references: mean ΔE00 %.3f%n",
-                100.0 * shimmer.share(), REFERENCE_SCALE * REFERENCE_SCALE, shimmer.meanError());
+                        + "changed (ΔE00 above 1); shimmer: %.2f %% changed noticeably more than in their %d-sample "
+                        + "references (ΔE00 above the reference's + 1); frames from their references: mean ΔE00 %.3f%n",
+                render.size.width(), render.size.height(), num(move[0]), num(move[1]), num(move[2]),
+                100 * shimmer.rawShare(), 100 * shimmer.share(), REFERENCE_SCALE * REFERENCE_SCALE,
+                shimmer.meanError());
         return 0;
     }
 
+    /** The two poses' frames with these options, measured against their references ({@link #reference}). */
+    static Shimmer measure(RenderOptions render, CameraPose first, CameraPose second) {
+        RenderOptions large = reference(render);
+        return Shimmer.of(frame(render, first), frame(render, second), Shimmer.reduce(frame(large, first),
+                REFERENCE_SCALE), Shimmer.reduce(frame(large, second), REFERENCE_SCALE));
+    }
+
+    /**
+     * The options of the references: {@value #REFERENCE_SCALE} times the size, without anti-aliasing, the terrain's
+     * pixel error {@value #REFERENCE_SCALE} times as many pixels.
+     */
+    static RenderOptions reference(RenderOptions render) {
+        double error = Double.parseDouble(Launch.settings(render).text(LOD_ERROR));
+        return render.resized(new Size(render.size.width() * REFERENCE_SCALE,
+                render.size.height() * REFERENCE_SCALE), List.of(REFERENCE_AA,
+                LOD_ERROR + "=" + Math.min(LOD_ERROR_MAX, error * REFERENCE_SCALE)));
+    }
+
     /** The picture {@code shot --camera pose} makes with these render options. */
-    private static Image frame(RenderOptions options, CameraPose pose) {
+    static Image frame(RenderOptions options, CameraPose pose) {
         try (Launch launch = Launch.start(options, options.windowed(false), "OpenWorld stability")) {
             ShotCommand.prepare(launch, CameraDirection.fixed(pose));
-            launch.engine.render();
+            ShotCommand.renderSettled(launch);
             return ShotCommand.opaque(launch.engine.readImage());
         }
     }
