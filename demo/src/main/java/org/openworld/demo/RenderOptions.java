@@ -103,4 +103,22 @@ final class RenderOptions {
     @Option(names = "--dev", description = "Read shaders from ./shaders on disk (F5 reloads them in the window); "
             + "a GL debug context whose driver messages are printed on stderr.")
     boolean dev;
+
+    /** These options at another size, with {@code extra} {@code --set} assignments after the user's. */
+    RenderOptions resized(Size newSize, List<String> extra) {
+        RenderOptions copy = new RenderOptions();
+        copy.size = newSize;
+        copy.seed = seed;
+        copy.preset = preset;
+        copy.config = config;
+        copy.hours = hours;
+        copy.daySpeed = daySpeed;
+        copy.set = new ArrayList<>(set);
+        copy.set.addAll(extra);
+        copy.window = window;
+        copy.headless = headless;
+        copy.context = context;
+        copy.dev = dev;
+        return copy;
+    }
 }

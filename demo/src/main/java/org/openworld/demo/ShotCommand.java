@@ -4,6 +4,7 @@ import static org.lwjgl.glfw.GLFW.glfwSetWindowSize;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.openworld.engine.antialias.AntialiasSettings;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
@@ -61,7 +62,7 @@ final class ShotCommand implements Callable<Integer> {
             if (ui) {
                 renderWithUi(launch);
             } else {
-                launch.engine.render();
+                renderSettled(launch);
             }
             Image image = opaque(launch.engine.readImage());
             image.write(out);
@@ -78,6 +79,16 @@ final class ShotCommand implements Callable<Integer> {
     static void prepare(Launch launch, CameraDirection direction) {
         Poses.direct(launch.engine.world(), direction);
         launch.engine.update();
+    }
+
+    /**
+     * Renders the frames a still picture needs ({@code AntialiasSettings.framesToSettle}): one, or with TAA one of
+     * each jitter offset, each blended into the history, so the picture is the mean of them all.
+     */
+    static void renderSettled(Launch launch) {
+        for (int i = launch.engine.settings().get(AntialiasSettings.class).framesToSettle(); i > 0; i--) {
+            launch.engine.render();
+        }
     }
 
     /** Renders a few frames with the panel and HUD drawn over them, as {@link WindowLoop} does. */

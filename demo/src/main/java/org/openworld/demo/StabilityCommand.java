@@ -1,31 +1,50 @@
 package org.openworld.demo;
 
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPose;
-import org.openworld.engine.colour.ImageComparison;
+import org.openworld.engine.colour.Shimmer;
 import org.openworld.engine.gl.Image;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
- * {@code openworld stability}: how much of the picture changes noticeably when the camera moves a little, the
- * figure of shimmer and crawl in motion. It renders the pose and the pose moved by {@code --move}, each exactly as
- * {@code shot} would (a fresh engine, one update, one frame), and prints the share of pixels whose CIEDE2000
- * difference exceeds 1 (just noticeable side by side), with the mean difference.
+ * {@code openworld stability}: how much of the picture changes noticeably when the camera moves a little, and how
+ * much of that is shimmer. It renders the pose and the pose moved by {@code --move}, each exactly as {@code shot}
+ * would (a fresh engine, one update, one frame), and prints the share of pixels whose CIEDE2000 difference exceeds 1
+ * (just noticeable side by side), with the mean difference: the raw figure.
  *
  * <p>A sharp picture changes under any motion: 1 m at 400 m moves the far ground by about a fifth to half a pixel at
  * 480 × 270, and a well-filtered texture moved half a pixel changes by more than 1 wherever its contrast from pixel to
- * pixel exceeds 2. So the figure has a floor that no anti-aliasing removes (docs/benchmarks.md, "Temporal
- * stability", measures it with supersampled pictures); what lies above it is aliasing: edges that step, highlights
- * and texels that flicker.
+ * pixel exceeds 2, so the raw figure has a floor that no anti-aliasing removes. The command therefore renders both
+ * poses again {@value #REFERENCE_SCALE} times larger on each side without {@code antialias.method}, reduces them to
+ * the size ({@value #REFERENCE_SCALE}² samples a pixel) and prints the shimmer: the share of pixels whose change
+ * exceeds their reference's by more than 1 ({@link Shimmer}, which says why this and not a reprojection), and the
+ * frames' mean ΔE00 from their references (what anti-aliasing costs in sharpness or gains in fidelity).
  */
 @Command(name = "stability", mixinStandardHelpOptions = true,
         description = "Share of pixels noticeably changed (CIEDE2000 above 1) between the pose and the pose moved a "
-                + "little: shimmer in motion.")
+                + "little, and the share changed noticeably more than in supersampled references: shimmer in motion.")
 final class StabilityCommand implements Callable<Integer> {
+
+    /**
+     * How many times larger on each side the references are drawn: 16 samples a pixel, where the raw figure of
+     * supersampled pairs had converged (4 and 16 samples gave 12.8 and 12.9 % at 480 × 270; docs/benchmarks.md,
+     * "Temporal stability").
+     */
+    static final int REFERENCE_SCALE = 4;
+
+    /**
+     * The references are supersampled, not post-filtered: the measure's zero is 16 plain samples a pixel. The
+     * terrain's level of detail, chosen by its error in pixels, is scaled with them, so that a reference draws the
+     * same triangles as the frame and differs only in its samples (the setting's largest value caps it).
+     */
+    private static final String REFERENCE_AA = "antialias.method=off";
+    private static final String LOD_ERROR = "lod.pixel-error";
+    private static final double LOD_ERROR_MAX = 100;
 
     @Mixin
     RenderOptions render;
@@ -47,21 +66,39 @@ final class StabilityCommand implements Callable<Integer> {
         }
         CameraPose moved = new CameraPose(camera.x() + move[0], camera.y() + move[1], camera.z() + move[2],
                 camera.yaw(), camera.pitch(), camera.fov());
-        Image first = frame(camera);
-        Image second = frame(moved);
-        ImageComparison diff = ImageComparison.of(first, second);
+        Shimmer shimmer = measure(render, camera, moved);
         System.out.printf(Locale.ROOT, "stability at %dx%d, moved %s,%s,%s m: %.2f %% of the pixels noticeably "
-                        + "changed (ΔE00 above 1), mean ΔE00 %.3f%n", first.width(), first.height(),
-                num(move[0]), num(move[1]), num(move[2]), 100.0 * diff.pixelsAbove(1) / diff.pixels(),
-                diff.meanDeltaE());
+                        + "changed (ΔE00 above 1); shimmer: %.2f %% changed noticeably more than in their %d-sample "
+                        + "references (ΔE00 above the reference's + 1); frames from their references: mean ΔE00 %.3f%n",
+                render.size.width(), render.size.height(), num(move[0]), num(move[1]), num(move[2]),
+                100 * shimmer.rawShare(), 100 * shimmer.share(), REFERENCE_SCALE * REFERENCE_SCALE,
+                shimmer.meanError());
         return 0;
     }
 
+    /** The two poses' frames with these options, measured against their references ({@link #reference}). */
+    static Shimmer measure(RenderOptions render, CameraPose first, CameraPose second) {
+        RenderOptions large = reference(render);
+        return Shimmer.of(frame(render, first), frame(render, second), Shimmer.reduce(frame(large, first),
+                REFERENCE_SCALE), Shimmer.reduce(frame(large, second), REFERENCE_SCALE));
+    }
+
+    /**
+     * The options of the references: {@value #REFERENCE_SCALE} times the size, without anti-aliasing, the terrain's
+     * pixel error {@value #REFERENCE_SCALE} times as many pixels.
+     */
+    static RenderOptions reference(RenderOptions render) {
+        double error = Double.parseDouble(Launch.settings(render).text(LOD_ERROR));
+        return render.resized(new Size(render.size.width() * REFERENCE_SCALE,
+                render.size.height() * REFERENCE_SCALE), List.of(REFERENCE_AA,
+                LOD_ERROR + "=" + Math.min(LOD_ERROR_MAX, error * REFERENCE_SCALE)));
+    }
+
     /** The picture {@code shot --camera pose} makes with these render options. */
-    private Image frame(CameraPose pose) throws Exception {
-        try (Launch launch = Launch.start(render, render.windowed(false), "OpenWorld stability")) {
+    static Image frame(RenderOptions options, CameraPose pose) {
+        try (Launch launch = Launch.start(options, options.windowed(false), "OpenWorld stability")) {
             ShotCommand.prepare(launch, CameraDirection.fixed(pose));
-            launch.engine.render();
+            ShotCommand.renderSettled(launch);
             return ShotCommand.opaque(launch.engine.readImage());
         }
     }

@@ -12,7 +12,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.Consumer;
 import org.openworld.engine.antialias.AntialiasSettings;
-import org.openworld.engine.antialias.Fxaa;
+import org.openworld.engine.antialias.Antialiasing;
 import org.openworld.engine.bench.FrameRecord;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.core.Counters;
@@ -44,7 +44,7 @@ import org.openworld.engine.settings.SettingsGroup;
  *       and REFLECTION, whose {@link PassOwner} gives a view this frame), the frame uniform block is written with
  *       that pass's camera, its target is bound and cleared, each system working in it sets up the pass
  *       ({@link EngineSystem#beginPass}), and the systems draw in resolved order;</li>
- *   <li>with {@code antialias.method} on, the scene target anti-aliased ({@link Fxaa});</li>
+ *   <li>with {@code antialias.method} on, the scene target anti-aliased ({@link Antialiasing});</li>
  *   <li>below {@code engine.render-scale} 1, the scene target, drawn smaller, is stretched over the full-size
  *       picture ({@link ScaledScene});</li>
  *   <li>the picture is read back (headless) or shown (window).</li>
@@ -78,7 +78,7 @@ public final class Engine implements AutoCloseable {
     private ScaledScene scene;
     private FrameTiming timing;
     private SharedBindings shared;
-    private Fxaa fxaa;
+    private Antialiasing antialiasing;
     private long frame;
 
     /**
@@ -127,7 +127,7 @@ public final class Engine implements AutoCloseable {
         try {
             scene = new ScaledScene(gl, owned, width, height, renderScale(),
                     settings.get(AntialiasSettings.class).enabled());
-            fxaa = owned.own(new Fxaa(gl, this.shaders));
+            antialiasing = owned.own(new Antialiasing(gl, this.shaders));
             timing = new FrameTiming(gl, owned, order.systems());
             shared = new SharedBindings(gl, owned, world);
             for (EngineSystem system : order.systems()) {
@@ -259,7 +259,8 @@ public final class Engine implements AutoCloseable {
         stats.reset();
         AntialiasSettings antialias = settings.get(AntialiasSettings.class);
         scene.fit(width(), height(), renderScale(), antialias.enabled()); // either may have changed (the panel)
-        PassView viewer = shared.viewer(world, (float) width() / height(), scene.scene());
+        var eye = world.resource(Camera.class).view((float) width() / height());
+        PassView viewer = shared.viewer(world, antialiasing.viewer(eye, frame, scene.scene(), antialias), scene.scene());
         // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
         // terrain's shadow casters are no finer than the ground the viewer sees)
         world.setResource(viewer);
@@ -311,7 +312,7 @@ public final class Engine implements AutoCloseable {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         // 5. the scene anti-aliased, then below scale 1 stretched over the picture: part of the frame, timed as such
         if (scene.antialiased()) {
-            timing.timeEngine("antialias.engine", () -> fxaa.draw(scene.scene(), scene.resolved(), antialias, stats));
+            timing.timeEngine("antialias.engine", () -> antialiasing.draw(scene.scene(), scene.resolved(), stats));
         }
         if (scene.scaled()) {
             timing.timeEngine("upscale.engine", scene::upscale);

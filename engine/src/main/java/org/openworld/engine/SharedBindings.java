@@ -72,14 +72,12 @@ final class SharedBindings {
     }
 
     /**
-     * The viewer's view for this frame, from the {@link Camera}, and the render origin moved to it: every pass of the
-     * frame measures positions from there.
+     * The viewer's view for this frame, {@code camera} (the {@link Camera}'s, as the anti-aliasing may have moved it),
+     * and the render origin moved to it: every pass of the frame measures positions from there.
      */
-    PassView viewer(World world, float aspect, Framebuffer target) {
-        PassView viewer = new PassView(world.resource(Camera.class).view(aspect), target);
-        world.resource(RenderOrigin.class).follow(viewer.camera().exactPosition().x(),
-                viewer.camera().exactPosition().z());
-        return viewer;
+    PassView viewer(World world, ViewCamera camera, Framebuffer target) {
+        world.resource(RenderOrigin.class).follow(camera.exactPosition().x(), camera.exactPosition().z());
+        return new PassView(camera, target);
     }
 
     /**

@@ -1,15 +1,18 @@
 /**
- * Anti-aliasing of the picture: FXAA, fast approximate anti-aliasing (Timothy Lottes, NVIDIA 2009; the "quality"
+ * Anti-aliasing of the picture: the engine's choice of method ({@link org.openworld.engine.antialias.Antialiasing},
+ * {@code antialias.method}), and FXAA, fast approximate anti-aliasing (Timothy Lottes, NVIDIA 2009; the "quality"
  * path of FXAA 3.11), one post pass over the finished scene ({@link org.openworld.engine.antialias.Fxaa},
- * {@code shaders/antialias/fxaa.frag}). Page: {@code docs/design.md}, "Anti-aliasing".
+ * {@code shaders/antialias/fxaa.frag}). The default, temporal anti-aliasing, is a technique of its own:
+ * {@link org.openworld.engine.temporal}. Page: {@code docs/design.md}, "Anti-aliasing".
  *
- * <p><b>Why a post pass.</b> A forward renderer that shades every pixel once has three ways to smooth its edges:
- * MSAA (several coverage samples per pixel in the scene target, resolved at the end), a temporal method (TAA:
- * the projection jittered by a fraction of a pixel each frame and the frames blended through a reprojected
- * history), or a post filter that finds edges in the finished picture. On Mesa's llvmpipe, which rasterises on the
- * CPU, MSAA multiplies the depth, stencil and colour work per pixel and the water's copies of the scene; TAA needs
- * motion vectors and a history that a single {@code shot} does not have. FXAA reads the picture alone, costs one
- * full-screen pass on any driver and needs nothing from the systems.
+ * <p><b>Why two.</b> A forward renderer that shades every pixel once has three ways to smooth its edges: MSAA
+ * (several coverage samples per pixel in the scene target, resolved at the end), a temporal method (TAA: the
+ * projection jittered by a fraction of a pixel each frame and the frames blended through a reprojected history), or
+ * a post filter that finds edges in the finished picture. On Mesa's llvmpipe, which rasterises on the CPU, MSAA
+ * multiplies the depth, stencil and colour work per pixel and the water's copies of the scene. FXAA reads one
+ * picture alone and smooths its edges, but cannot make motion steadier: it cannot tell a texel that flickers from
+ * one that does not. TAA can, for about the same full-screen pass, and is the default; FXAA stays for a single
+ * frame that must be smooth without a history.
  *
  * <p><b>Method.</b> Per pixel, with luma L of the sRGB-encoded colour (what the eye compares): the range of L over the
  * pixel and its four neighbours, below {@code max(1/32, L_max / 8)} no edge; the edge's direction from the second

@@ -53,6 +53,11 @@ public record Lab(double l, double a, double b) {
         return new Lab(116 * fy - 16, 500 * (fx - fy), 200 * (fy - fz));
     }
 
+    /** Linear light (0 to 1) of an 8-bit sRGB code value. */
+    static double linear(int code) {
+        return LINEAR[code];
+    }
+
     private static double xyz(int row, double r, double g, double b) {
         return TO_XYZ[row][0] * r + TO_XYZ[row][1] * g + TO_XYZ[row][2] * b;
     }

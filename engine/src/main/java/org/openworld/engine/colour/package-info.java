@@ -5,6 +5,8 @@
  * two pictures pixel by pixel and draws a difference image. {@code openworld diff} prints what it finds.
  * {@link org.openworld.engine.colour.Repetition} measures how much one picture repeats itself (the peak of its
  * luminance's autocorrelation away from zero shift): how visibly a texture tiles.
+ * {@link org.openworld.engine.colour.Shimmer} counts the pixels that change between two frames noticeably more than
+ * in supersampled references of them: aliasing in motion, with the motion itself taken out.
  *
  * <p>Why not compare the RGB numbers? Equal steps in sRGB are not equal steps to the eye: a change of 10 in a dark
  * blue is far easier to miss than the same change in a mid green. CIELAB was built so that distances are roughly
