@@ -8,6 +8,7 @@ import org.openworld.engine.core.PassView;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.core.World;
+import org.openworld.engine.environment.CloudShadow;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyMaps;
 import org.openworld.engine.environment.Sun;
@@ -25,9 +26,10 @@ import org.openworld.engine.gl.Texture3D;
 /**
  * What every shader of a pass can read without its system binding it (docs/design.md, "Passes"): the frame uniform
  * block ({@code shaders/common/frame.glsl}: the pass camera, the sun, the exposure, the clock, the target's size),
- * the sky's aerial-perspective volume and environment map, and the sun's shadow maps with their block. A world
- * without a sky gets neutral stand-ins (clear air, a uniform sky as bright as the noon sun's ambient light), and a
- * frame whose shadow maps are not drawn gets a map that shadows nothing, so a shader never branches on what the
+ * the sky's aerial-perspective volume and environment map, the sun's shadow maps with their block, and the clouds'
+ * shadow map with its block. A world without a sky gets neutral stand-ins (clear air, a uniform sky as bright as the
+ * noon sun's ambient light), and a frame whose shadow maps are not drawn (or a world without volumetric clouds) gets
+ * a map that shadows nothing, so a shader never branches on what the
  * scene has.
  */
 final class SharedBindings {
@@ -35,12 +37,14 @@ final class SharedBindings {
     private final FrameUniforms frameUniforms;
     private final SkyMaps neutralSky;
     private final SunShadow noShadow;
+    private final CloudShadow noClouds;
 
     /** Makes the frame block and the stand-ins, handing them to {@code owned} (the engine's). */
     SharedBindings(GlContext gl, Owned owned) {
         frameUniforms = owned.own("frame", new FrameUniforms(gl));
         neutralSky = neutralSky(gl, owned);
         noShadow = owned.own("noShadow", SunShadow.none(gl));
+        noClouds = owned.own("noCloudShadow", CloudShadow.none(gl));
     }
 
     /**
@@ -59,6 +63,9 @@ final class SharedBindings {
         SunShadow shadow = shadowReady ? world.findResource(SunShadow.class).orElse(noShadow) : noShadow;
         shadow.map().bind(SharedTexture.SHADOW_MAP.unit());
         shadow.block().bindBase(SharedBlock.SHADOW.binding());
+        CloudShadow clouds = world.findResource(CloudShadow.class).orElse(noClouds);
+        clouds.map().bind(SharedTexture.CLOUD_SHADOW_MAP.unit());
+        clouds.block().bindBase(SharedBlock.CLOUD_SHADOW.binding());
         return shadow != noShadow;
     }
 

@@ -9,7 +9,9 @@ public enum SharedBlock {
     /** {@code FrameBlock}: the pass's camera, the sun, time ({@code shaders/common/frame.glsl}, {@link FrameUniforms}). */
     FRAME("FrameBlock", 0),
     /** {@code ShadowBlock}: the sun's shadow cascades ({@code shaders/common/shadow.glsl}). */
-    SHADOW("ShadowBlock", 1);
+    SHADOW("ShadowBlock", 1),
+    /** {@code CloudShadowBlock}: where the cloud shadow map lies ({@code shaders/common/shadow.glsl}). */
+    CLOUD_SHADOW("CloudShadowBlock", 2);
 
     private final String block;
     private final int binding;

@@ -6,6 +6,8 @@ package org.openworld.engine.gl;
  * from the top of the 16 a fragment shader is guaranteed, so systems' own units (from 0) never meet them.
  */
 public enum SharedTexture {
+    /** {@code sampler2D cloudShadowMap}: the sunlight the clouds let through ({@code shaders/common/shadow.glsl}). */
+    CLOUD_SHADOW_MAP("cloudShadowMap", 12),
     /** {@code sampler2DArrayShadow shadowMap}: the sun's shadow cascades ({@code shaders/common/shadow.glsl}). */
     SHADOW_MAP("shadowMap", 13),
     /** {@code samplerCube environmentMap}: the sky around the scene ({@code shaders/common/environment.glsl}). */
