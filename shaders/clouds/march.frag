@@ -15,7 +15,7 @@ uniform vec4 uGrid;           // xy: the quarter grid's size (texels); zw: this 
 uniform float uEveryTexel;    // 1: march every texel of the grid (no history); 0: the frame's slot only
 
 // Steps along the ray through the layer; the first is jittered per texel so the steps' banding becomes noise.
-const int STEPS = 32;
+const int STEPS = 24;
 // Metres of the ray beyond which nothing is marched: the aerial perspective's table ends at 64 km, and a cloud
 // that far is a few pixels of haze.
 const float MAX_DISTANCE = 60000.0;

@@ -14,7 +14,8 @@ uniform sampler2D cloudOptics; // 256 x 1 (CloudOptics.table): r the height prof
                                // gba the phase of octaves 0, 1, 2 over cos(angle to the sun), -1..1
 uniform vec4 uLayer;           // x: base radius, y: top radius (m, from the Earth's centre); z: the field's tile (m);
                                // w: the density threshold of the cover (standard deviations)
-uniform vec4 uMotion;          // xy: the wind's offset of the field (m, world x, z); z: time phase 0..1; w: 0
+uniform vec4 uMotion;          // xy: the wind's offset of the field (m, world x, z); z: time phase 0..1; w: half a
+                               // frame of the field's time axis (1 / 2 frames: frame i's texel centre is (i + 0.5) / n)
 
 // The Earth's radius, metres (the atmosphere's: org.openworld.engine.sky.Atmosphere). The layer is curved around a
 // centre below the eye, so it falls away towards the horizon as a real one does.
@@ -36,9 +37,9 @@ const float EXTINCTION = 0.04;
 // OCTAVE_C^i (the phase table's g, b, a channels). 0.5 each, the papers' values.
 const float OCTAVE_A = 0.5;
 const float OCTAVE_B = 0.5;
-// Metres from a sample towards the sun of the four samples of the light's optical depth, each standing for the
-// stretch to the next: the shadow of the cloud's own near parts, then of its far side.
-const vec4 SUN_STEPS = vec4(40.0, 120.0, 280.0, 600.0);
+// Metres from a sample towards the sun of the three samples of the light's optical depth, each standing for the
+// stretch from the one before: the shadow of the cloud's own near parts, then of its far side.
+const vec3 SUN_STEPS = vec3(50.0, 180.0, 450.0);
 
 vec3 earthCentre() {
     return vec3(cameraPos().x, -EARTH_RADIUS, cameraPos().z);
@@ -52,7 +53,7 @@ float layerHeight(vec3 wsPos) {
 // The base shape at a point of height fraction h: the cover's strength where the profile allows it, 0..1.
 float cloudShape(vec3 wsPos, float h) {
     vec2 st = (wsPos.xz - uMotion.xy) / uLayer.z;
-    float field = texture(cloudField, vec3(st, uMotion.z)).r;
+    float field = texture(cloudField, vec3(st, uMotion.z + uMotion.w)).r;
     float cover = clamp((field - uLayer.w) / COVER_SPREAD, 0.0, 1.0);
     float profile = texture(cloudOptics, vec2(clamp(h, 0.0, 1.0), 0.5)).r;
     return clamp(cover + profile - 1.0, 0.0, 1.0) * step(0.0, h) * step(h, 1.0);
@@ -61,7 +62,7 @@ float cloudShape(vec3 wsPos, float h) {
 // The density, 0..1, the base shape eroded by the detail field where the shape is thin.
 float cloudDensity(vec3 wsPos, float h, float shape) {
     vec2 st = (wsPos.xz - uMotion.xy) / uLayer.z * DETAIL_SCALE;
-    float detail = texture(cloudDetail, vec3(st, uMotion.z + wsPos.y / DETAIL_HEIGHT)).r;
+    float detail = texture(cloudDetail, vec3(st, uMotion.z + uMotion.w + wsPos.y / DETAIL_HEIGHT)).r;
     float eaten = EROSION * clamp(0.5 + 0.25 * detail, 0.0, 1.0);
     return clamp((shape - eaten) / (1.0 - eaten), 0.0, 1.0);
 }
@@ -70,7 +71,7 @@ float cloudDensity(vec3 wsPos, float h, float shape) {
 float opticalDepthToSun(vec3 wsPos) {
     float depth = 0.0;
     float from = 0.0;
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < 3; i++) {
         vec3 p = wsPos + sunDir() * SUN_STEPS[i];
         depth += cloudShape(p, layerHeight(p)) * (SUN_STEPS[i] - from);
         from = SUN_STEPS[i];

@@ -39,6 +39,7 @@ final class CloudPrograms {
     private final Uniform.Vec4 resolveGrid;
     private final Uniform.Float resolveEvery;
     private final Uniform.Vec2 compositeGrid;
+    private final Uniform.Float compositeSky;
 
     CloudPrograms(EngineContext context) {
         shadow = program(context, "shadowProgram", "clouds/shadow.frag");
@@ -70,10 +71,10 @@ final class CloudPrograms {
         resolveEvery = resolve.float1("uEveryTexel");
 
         composite = program(context, "compositeProgram", "clouds/composite.frag");
-        composite.sampler("sceneDepth", UNIT_SCENE_DEPTH);
         composite.sampler("cloudLight", UNIT_LIGHT);
         composite.sampler("cloudDepth", UNIT_DEPTH);
         compositeGrid = composite.vec2("uGridSize");
+        compositeSky = composite.float1("uSky");
     }
 
     private static ShaderProgram program(EngineContext context, String role, String fragment) {
@@ -108,9 +109,10 @@ final class CloudPrograms {
         resolveEvery.set(every ? 1 : 0);
     }
 
-    /** The composite's program in use. */
-    void useComposite(int gridWidth, int gridHeight) {
+    /** The composite's program in use, for the sky's pixels or the surfaces'. */
+    void useComposite(int gridWidth, int gridHeight, boolean sky) {
         composite.use();
         compositeGrid.set(gridWidth, gridHeight);
+        compositeSky.set(sky ? 1 : 0);
     }
 }

@@ -9,11 +9,11 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture2D;
 
 /**
- * The clouds' render targets for one picture size: a copy of the scene's depth at full resolution, and on the
- * quarter grid (a quarter of the width and of the height, {@link #GRID_DIVISOR}) this frame's march and two
- * histories that the resolve writes in turn (one read while the other is written). Each grid target is two textures:
- * the light (RGBA16F, rgb light and a transmittance) and the distances (RGBA32F: metres up to the 10⁷ that stands
- * for the sky, beyond a half float). At 1280 × 720: 320 × 180 texels, 4.1 MB in all with the depth copy's 3.7 MB.
+ * The clouds' render targets for one picture size, on the quarter grid (a quarter of the width and of the height,
+ * {@link #GRID_DIVISOR}): this frame's march and two histories that the resolve writes in turn (one read while the
+ * other is written). Each is two textures: the light (RGBA16F, rgb light and a transmittance) and the distances
+ * (RGBA32F: metres up to the 10⁷ that stands for the sky, beyond a half float). At 1280 × 720: 320 × 180 texels,
+ * 1.4 MB in all.
  */
 final class CloudTargets implements Labelled {
 
@@ -25,7 +25,6 @@ final class CloudTargets implements Labelled {
     final int height;
     final int gridWidth;
     final int gridHeight;
-    final Framebuffer depth;
     final Texture2D freshLight;
     final Texture2D freshDepth;
     final Framebuffer fresh;
@@ -39,8 +38,6 @@ final class CloudTargets implements Labelled {
         gridWidth = (width + GRID_DIVISOR - 1) / GRID_DIVISOR;
         gridHeight = (height + GRID_DIVISOR - 1) / GRID_DIVISOR;
         try {
-            depth = owned.own(new Framebuffer(gl, width, height, null, Format.DEPTH24_STENCIL8,
-                    Sampling.NEAREST_CLAMP));
             freshLight = owned.own(grid(gl, Format.RGBA16F, Sampling.NEAREST_CLAMP));
             freshDepth = owned.own(grid(gl, Format.RGBA32F, Sampling.NEAREST_CLAMP));
             fresh = owned.own(Framebuffer.onTextures(gl, freshLight, freshDepth));
@@ -65,7 +62,6 @@ final class CloudTargets implements Labelled {
 
     @Override
     public void label(String name) {
-        depth.label(name + ".depth");
         fresh.label(name + ".fresh");
         freshLight.label(name + ".freshLight");
         freshDepth.label(name + ".freshDepth");

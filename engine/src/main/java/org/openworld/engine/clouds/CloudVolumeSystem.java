@@ -41,11 +41,11 @@ import org.openworld.engine.sky.SkySystem;
  * every other system but the transparent ones (it reads the finished depth). In the update, before the passes, the
  * cloud shadow map is redrawn when the clouds evolved for {@link #SHADOW_REFRESH} s or the sun moved. Per frame:
  * <ol>
- *   <li>the scene's depth is copied (it is read while the scene target is drawn into);</li>
  *   <li>the march ({@code clouds/march.frag}) on a quarter grid, one texel of every 2 × 2 per frame, every texel when
  *       there is no usable history ({@link #jumped});</li>
  *   <li>the resolve ({@code clouds/resolve.frag}) fills the grid from the march and the reprojected history;</li>
- *   <li>the composite ({@code clouds/composite.frag}) upsamples it with depth-aware weights over the picture.</li>
+ *   <li>the composite ({@code clouds/composite.frag}) upsamples it over the picture, twice: over the sky's pixels
+ *       and over the surfaces' (the depth test picks them), each from the grid texels marched against the same.</li>
  * </ol>
  * With {@code clouds.mode=layer} it draws nothing and its shadow block says "no clouds"; the sky draws the layer.
  * The water's reflection and the environment map show the sky's layer of the same field at the volume's middle
@@ -179,9 +179,12 @@ public final class CloudVolumeSystem implements EngineSystem {
                 (float) c.tileSize(), threshold);
     }
 
-    /** The {@code uMotion} uniform: the wind's offset and the time phase ({@link CloudSettings#cloudMotion}). */
+    /**
+     * The {@code uMotion} uniform: the wind's offset and the time phase ({@link CloudSettings#cloudMotion}), and half a
+     * frame of the field's time axis (its texel centres).
+     */
     private Vector4f motion(CloudSettings c) {
-        return c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0);
+        return c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0.5f / c.frames());
     }
 
     @Override
@@ -198,23 +201,18 @@ public final class CloudVolumeSystem implements EngineSystem {
         glDisable(GL_DEPTH_TEST);
         glDepthMask(false);
 
-        // 1. the scene's depth, copied: it is read while the scene target is drawn into
         if (targets == null || !targets.fits(scene.width(), scene.height())) {
             targets = this.context.owned().replace("targets", targets, new CloudTargets(gl, scene.width(),
                     scene.height()));
             haveHistory = false;
         }
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, scene.id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.depth.id());
-        glBlitFramebuffer(0, 0, scene.width(), scene.height(), 0, 0, scene.width(), scene.height(),
-                GL_DEPTH_BUFFER_BIT, GL_NEAREST);
         // bound after the targets are made: making a texture binds it to the active unit
-        targets.depth.depth().bind(CloudPrograms.UNIT_SCENE_DEPTH);
+        scene.depth().bind(CloudPrograms.UNIT_SCENE_DEPTH); // read while another target is drawn into
         field.bind(CloudPrograms.UNIT_FIELD);
         detail.bind(CloudPrograms.UNIT_DETAIL);
         optics.bind(CloudPrograms.UNIT_OPTICS);
 
-        // 2. the march: the frame's slot of every 2 x 2 block, or every texel without a usable history
+        // 1. the march: the frame's slot of every 2 x 2 block, or every texel without a usable history
         boolean every = !haveHistory || !c.equals(historySettings) || jumped(context);
         int[] slot = SLOTS[(int) (frame % SLOTS.length)];
         targets.fresh.bind();
@@ -224,7 +222,7 @@ public final class CloudVolumeSystem implements EngineSystem {
         programs.useMarch(layer, motion, gw, gh, slot, every);
         fullScreen.draw(context.stats());
 
-        // 3. the resolve into the other history
+        // 2. the resolve into the other history
         int read = written;
         written = 1 - written;
         targets.history[written].bind();
@@ -234,18 +232,23 @@ public final class CloudVolumeSystem implements EngineSystem {
         programs.useResolve(previousViewProjection, gw, gh, slot, every);
         fullScreen.draw(context.stats());
 
-        // 4. the composite over the picture
+        // 3. the composite over the picture: the sky's pixels, then the surfaces', chosen by the depth test
         glBindFramebuffer(GL_FRAMEBUFFER, previousFramebuffer);
         glViewport(0, 0, scene.width(), scene.height());
         targets.historyLight[written].bind(CloudPrograms.UNIT_LIGHT);
         targets.historyDepth[written].bind(CloudPrograms.UNIT_DEPTH);
-        programs.useComposite(gw, gh);
+        glEnable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        programs.useComposite(gw, gh, true);
+        glDepthFunc(GL_LEQUAL);
         fullScreen.draw(context.stats());
+        programs.useComposite(gw, gh, false);
+        glDepthFunc(GL_GREATER);
+        fullScreen.draw(context.stats());
+        glDepthFunc(GL_LESS);
         glDisable(GL_BLEND);
         glDepthMask(true);
-        glEnable(GL_DEPTH_TEST);
 
         context.world().resource(Counters.class).put("clouds.full", every ? 1 : 0);
         remember(context);

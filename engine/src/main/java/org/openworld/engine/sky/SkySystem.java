@@ -21,6 +21,7 @@ import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
+import org.openworld.engine.environment.CloudShadow;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyIrradiance;
 import org.openworld.engine.environment.SkyMaps;
@@ -327,9 +328,10 @@ public final class SkySystem implements EngineSystem {
         panorama.clouds().bind(1);
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
-        // the volumetric clouds draw themselves over the picture; the reflection keeps the layer of the same field
+        // the volumetric clouds, where a system draws them (it publishes their shadow), draw themselves over the
+        // picture; the reflection keeps the layer of the same field
         boolean volumetric = context.world().resource(Settings.class).get(CloudSettings.class).mode()
-                == CloudSettings.Mode.VOLUMETRIC;
+                == CloudSettings.Mode.VOLUMETRIC && context.world().findResource(CloudShadow.class).isPresent();
         cloudLayer.set(pass == Pass.MAIN && volumetric ? 0 : 1);
         nightUniforms.set(night, panoramaScale);
         glEnable(GL_DEPTH_TEST);
