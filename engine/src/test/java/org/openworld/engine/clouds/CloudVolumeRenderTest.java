@@ -43,7 +43,7 @@ class CloudVolumeRenderTest {
     private static final double TURN = 1;
 
     private static Engine engine(int width, int height, List<String> settings) {
-        List<String> all = new ArrayList<>(List.of("clouds.wind-speed=0"));
+        List<String> all = new ArrayList<>(List.of("clouds.mode=volumetric", "clouds.wind-speed=0"));
         all.addAll(settings);
         return GlTestSupport.engine(GL.context(), width, height, all, new TestSceneSystem(), new SkySystem(),
                 new CloudVolumeSystem());
