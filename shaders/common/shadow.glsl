@@ -3,6 +3,8 @@
 //
 //   float sunVisibility(vec3 wsPos, vec3 wsNormal)   1 where the sun is seen from wsPos, 0 where it is hidden
 //
+// (times what the clouds let through, cloudShadow below).
+//
 // How: each cascade is an orthographic depth picture of the world seen from the sun. A point is looked up in the
 // finest cascade whose picture holds it; it is shadowed where the picture recorded something nearer the sun than
 // the point itself, by more than a bias:
@@ -32,6 +34,31 @@ layout(std140) uniform ShadowBlock {
 } shadow;
 
 uniform sampler2DArrayShadow shadowMap;
+
+// The clouds' shadow (engine: org.openworld.engine.clouds, environment.CloudShadow): the transmittance of the sun's
+// ray through the cloud volume, one texel per sample of the cloud field's tile, from the base upwards. A point is
+// carried along the sun's direction to the cloud base and looked up there, at the field's coordinates (the field
+// wraps, so the map does). Without volumetric clouds the engine binds a block of zeros: strength 0, all light through.
+layout(std140) uniform CloudShadowBlock {
+    vec4 cloudShadowPlace;    // x: the cloud base, metres above sea level; y: 1 / the field's tile (1/m);
+                              // zw: the wind's offset of the field, metres (world x, z)
+    vec4 cloudShadowStrength; // x: 1 with clouds, 0 without; yzw: 0
+} cloudShadowBlock;
+
+uniform sampler2D cloudShadowMap;
+
+// Lowest sun-elevation sine used to carry a point to the cloud base: 3 degrees, beyond which the shadow is far
+// away and spread thin anyway (the light crosses the volume over tens of kilometres).
+const float CLOUD_SHADOW_MIN_SINE = 0.05;
+
+// The share of the sun's light the clouds let through to wsPos: 1 in the open, near 0 under a thick cloud.
+float cloudShadow(vec3 wsPos) {
+    vec4 place = cloudShadowBlock.cloudShadowPlace;
+    vec3 toSun = sunDir();
+    vec2 atBase = wsPos.xz + toSun.xz * (max(place.x - wsPos.y, 0.0) / max(toSun.y, CLOUD_SHADOW_MIN_SINE));
+    float through = texture(cloudShadowMap, (atBase - place.zw) * place.y).r;
+    return mix(1.0, through, cloudShadowBlock.cloudShadowStrength.x);
+}
 
 // The point in cascade i's map: xy texture coordinates, z its depth less the biases.
 vec3 shadowCoords(int i, vec3 wsPos, vec3 wsNormal, float cosSun) {
@@ -85,10 +112,11 @@ float insideness(vec3 coords) {
 // rasteriser runs a loop's body at least once, masked, whatever its count: the cascade loop and its filter cost a
 // fifth of the terrain's pixel time on llvmpipe, for no shadow.
 float sunVisibility(vec3 wsPos, vec3 wsNormal) {
-    return 1.0;
+    return cloudShadow(wsPos);
 }
 #else
-float sunVisibility(vec3 wsPos, vec3 wsNormal) {
+// The shadow maps' part of sunVisibility: the relief, the trees and everything else that casts a depth shadow.
+float terrainShadow(vec3 wsPos, vec3 wsNormal) {
     int count = int(shadow.shadowParams.x);
     float distance = length(wsPos - shadow.viewerPos.xyz);
     float far = shadow.biasParams.w;
@@ -119,5 +147,9 @@ float sunVisibility(vec3 wsPos, vec3 wsNormal) {
         return far > 0.0 ? mix(lit, 1.0, smoothstep(shadow.biasParams.z, far, distance)) : lit;
     }
     return 1.0;
+}
+
+float sunVisibility(vec3 wsPos, vec3 wsNormal) {
+    return cloudShadow(wsPos) * terrainShadow(wsPos, wsNormal);
 }
 #endif

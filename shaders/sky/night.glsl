@@ -7,6 +7,8 @@
 
 uniform sampler2D skyPanorama;     // the sky behind the clouds, linear rgb; alpha: the cloud's density excess
 uniform sampler2D cloudPanorama;   // the clouds' colour, linear rgb; alpha: what the horizon fog leaves of them
+uniform float uCloudLayer;        // 1: the layer's clouds over the sky; 0: none (the volumetric clouds are drawn over
+                                   // the picture by engine.clouds)
 uniform float uPanoramaScale;      // both colours are stored times this (SkyPanorama.draw)
 uniform vec3 uNightSky;            // pi x the radiance of the moonless night sky (airglow), display units
 uniform vec3 uMoonDir;             // unit vector towards the moon, world space
@@ -24,7 +26,7 @@ vec3 skyBehind(vec3 wsDir, out float cloudAlpha) {
     vec2 uv = panoramaUv(wsDir, vec2(textureSize(skyPanorama, 0)));
     vec4 sky = textureLod(skyPanorama, uv, 0.0);
     vec4 cloud = textureLod(cloudPanorama, uv, 0.0);
-    cloudAlpha = cloudOpacity(sky.a, cloud.a);
+    cloudAlpha = cloudOpacity(sky.a, cloud.a) * uCloudLayer;
     return mix(sky.rgb / uPanoramaScale + uNightSky * step(0.0, wsDir.y), cloud.rgb / uPanoramaScale, cloudAlpha);
 }
 

@@ -2,6 +2,7 @@
 #include "common/frame.glsl"
 #include "common/fog.glsl"
 #include "common/color.glsl"
+#include "common/shadow.glsl"
 
 in vec3 wsPos;
 in vec3 wsNormal;
@@ -21,7 +22,7 @@ void main() {
     vec3 n = normalize(wsNormal);
     bool isGround = n.y > 0.99 && wsPos.y < 0.01;
     vec3 albedo = isGround ? mix(vec3(0.30, 0.34, 0.26), vec3(0.85), gridLine(wsPos.xz)) : vec3(0.70, 0.45, 0.30);
-    float diffuse = max(dot(n, sunDir()), 0.0);
+    float diffuse = max(dot(n, sunDir()), 0.0) * sunVisibility(wsPos, n);
     vec3 light = frame.sunColor.rgb * diffuse + frame.ambientColor.rgb * (0.5 + 0.5 * n.y);
     vec3 color = applyFog(albedo * light, wsPos);
     fragColor = vec4(displayColor(color), 1.0);

@@ -3,6 +3,7 @@ package org.openworld.demo;
 import java.util.List;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
+import org.openworld.engine.clouds.CloudVolumeSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.World;
@@ -46,6 +47,7 @@ final class DemoScene {
         return List.of(
                 new CameraSystem(),
                 new SkySystem(),
+                new CloudVolumeSystem(),
                 new CullingSystem(),
                 new TerrainSystem(line -> System.err.println(line)),
                 new ShadowSystem(),

@@ -105,21 +105,21 @@ final class FigureCatalogue {
         list.add(shot("5a", 5, "Sampling from the cloud texture with the skydome texture coordinates (spherical "
                 + "angles) directly results in a very non-open effect, as can be seen in figure 5a.",
                 "Spherical: one tile stretched over the dome, streaks at the horizon, a closed-in look.",
-                "11:00", CLOUDS_POSE, "clouds.mapping=spherical"));
+                "11:00", CLOUDS_POSE, "clouds.mode=layer", "clouds.mapping=spherical"));
         list.add(shot("5b", 5, "The problem clearly lies in the horizon, so a first approach could be to try to hide "
                 + "this effect with a fog, the result can be seen in figure 5b.",
                 "Spherical with fog: the horizon hidden, the error not.",
-                "11:00", CLOUDS_POSE, "clouds.mapping=spherical-fog"));
+                "11:00", CLOUDS_POSE, "clouds.mode=layer", "clouds.mapping=spherical-fog"));
         list.add(shot("5c", 5, "The problem is that the coordinates need to be perspective corrected, as can be seen "
                 + "in figure 5c.",
                 "Perspective: clouds shrink towards the horizon as they should, but the tile repeats and far texels "
                         + "alias.",
-                "11:00", CLOUDS_POSE, "clouds.mapping=perspective"));
+                "11:00", CLOUDS_POSE, "clouds.mode=layer", "clouds.mapping=perspective"));
         list.add(shot("5d", 5, "Now the problem is that we can see how the same texture is repeated over and over, so "
                 + "we again try to hide this with a fog effect, the result is quite pleasing and can be seen in "
                 + "figure 5d.",
-                "Perspective with fog (the default): the far layer fades into the sky's own horizon colour.",
-                "11:00", CLOUDS_POSE, "clouds.mapping=perspective-fog"));
+                "Perspective with fog (the layer's default): the far layer fades into the sky's own horizon colour.",
+                "11:00", CLOUDS_POSE, "clouds.mode=layer", "clouds.mapping=perspective-fog"));
 
         // Figure 6: the paper's flat grid of geomipmaps, coloured by level (paper 2.5)
         String levels = "Figure 6: Geomipmapping with various base resolution levels";

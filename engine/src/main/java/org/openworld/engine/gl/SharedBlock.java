@@ -18,7 +18,12 @@ public enum SharedBlock {
      * {@code ShadowBlock}: the sun's shadow cascades ({@code shaders/common/shadow.glsl}), std140: 4 matrices and 5
      * vectors, each a mat4 or vec4, so no padding. Its stand-in is zeros, whose cascade count 0 makes every point lit.
      */
-    SHADOW("ShadowBlock", 1, 4 * 64 + 5 * 16);
+    SHADOW("ShadowBlock", 1, 4 * 64 + 5 * 16),
+    /**
+     * {@code CloudShadowBlock}: where the cloud shadow map lies ({@code shaders/common/shadow.glsl}), std140: two
+     * vec4s. Its stand-in is zeros, whose strength 0 lets all the sunlight through.
+     */
+    CLOUD_SHADOW("CloudShadowBlock", 2, 2 * 16);
 
     private final String block;
     private final int binding;

@@ -11,7 +11,8 @@ import org.lwjgl.system.MemoryUtil;
  * ({@link TextureUnits}, from 0) never meet them.
  */
 public enum SharedTexture {
-
+    /** {@code sampler2D cloudShadowMap}: the sunlight the clouds let through ({@code shaders/common/shadow.glsl}). */
+    CLOUD_SHADOW_MAP("cloudShadowMap"),
     /** {@code sampler2DArrayShadow shadowMap}: the sun's shadow cascades ({@code shaders/common/shadow.glsl}). */
     SHADOW_MAP("shadowMap"),
     /** {@code samplerCube environmentMap}: the sky around the scene ({@code shaders/common/environment.glsl}). */
@@ -36,15 +37,28 @@ public enum SharedTexture {
 
     /**
      * A texture of one texel that stands in for this one where no shared resource binds it, and changes nothing:
-     * a shadow map at the far plane (everything lit), a uniform sky of {@link #NEUTRAL_SKY}, clear air (nothing
+     * a cloud shadow of transmittance 1, a shadow map at the far plane (everything lit), a uniform sky of {@link #NEUTRAL_SKY}, clear air (nothing
      * scattered in, everything transmitted).
      */
     public GlTexture standIn(GlContext gl) {
         return switch (this) {
+            case CLOUD_SHADOW_MAP -> sunThrough(gl);
             case SHADOW_MAP -> DepthTextureArray.empty(gl);
             case ENVIRONMENT -> CubeMapTexture.fromDirections(gl, 1, d -> new Vector3f(NEUTRAL_SKY));
             case AERIAL_PERSPECTIVE -> clearAir(gl);
         };
+    }
+
+    /** One texel of transmittance 1: every ray of sunlight through. */
+    private static Texture2D sunThrough(GlContext gl) {
+        FloatBuffer through = MemoryUtil.memAllocFloat(1).put(1).flip();
+        try {
+            Texture2D map = Texture2D.empty(gl, 1, 1, Format.R16F, Sampling.NEAREST_CLAMP);
+            map.upload(0, 0, 1, through);
+            return map;
+        } finally {
+            MemoryUtil.memFree(through);
+        }
     }
 
     private static Texture3D clearAir(GlContext gl) {

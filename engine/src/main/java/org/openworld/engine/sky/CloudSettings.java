@@ -11,6 +11,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * and one of time, {@link CloudField}), how much of the sky it covers, how it moves, and how the sky dome maps it
  * (paper 2.3, figure 5 a–d, {@code shaders/sky/clouds.glsl}).
  *
+ * @param mode          what draws the clouds: the paper's flat layer on the sky dome, or a volume ray-marched between
+ *                      two altitudes ({@code org.openworld.engine.clouds})
  * @param mapping       the sky-dome mapping, how a view direction finds its point in the field: spherical,
  *                      spherical-fog, perspective or perspective-fog, the four variants of figure 5
  * @param cover         fraction of the field's samples that are cloud: the density threshold is the field's
@@ -27,12 +29,18 @@ import org.openworld.engine.settings.SettingsGroup;
  *                      (the docs/design.md yaw convention: 0 north, 90 east)
  * @param resolution    samples of the field per side of a tile, a power of two
  * @param frames        samples of the field over one period, a power of two; the shader blends neighbouring frames
+ * @param base          altitude of the volume's base above sea level (volumetric mode)
+ * @param thickness     height from the volume's base to its top (volumetric mode)
+ * @param type          the clouds' height profile, 0 stratus (a thin sheet low in the layer) to 1 cumulus (rising
+ *                      through the whole layer): {@code clouds.CloudOptics#heightProfile}
  * @param horizonFog    fog distance on the cloud layer for the fog mappings: the e-folding distance of the horizon
  *                      fog along the cloud plane, in tiles: at a distance of
  *                      {@code horizonFog · tileSize} the fog variants keep 1/e of a cloud's opacity and colour. One
  *                      tile (the default) hides the repeats of figure 5c, which show from a few tiles away
  */
 public record CloudSettings(
+        @Setting(doc = "what draws the clouds: LAYER (a flat layer on the dome, the paper's) or VOLUMETRIC (ray-marched)")
+        Mode mode,
         @Setting(doc = "sky-dome mapping: spherical, spherical-fog, perspective or perspective-fog (figure 5 a-d)")
         Mapping mapping,
         @Setting(doc = "fraction of the sky covered by cloud", min = 0, max = 1) double cover,
@@ -47,8 +55,21 @@ public record CloudSettings(
         @Setting(doc = "field samples per tile side, a power of two", min = 32, max = 256, atStart = true)
         int resolution,
         @Setting(doc = "field samples over one period, a power of two", min = 4, max = 64, atStart = true) int frames,
+        @Setting(doc = "VOLUMETRIC: altitude of the cloud base above sea level", unit = "m", min = 200, max = 8000)
+        double base,
+        @Setting(doc = "VOLUMETRIC: height from the cloud base to the top", unit = "m", min = 100, max = 6000)
+        double thickness,
+        @Setting(doc = "VOLUMETRIC: height profile, 0 stratus .. 1 cumulus", min = 0, max = 1) double type,
         @Setting(doc = "fog distance on the layer for the *_FOG mappings", unit = "tiles", min = 0.05, max = 4)
         double horizonFog) {
+
+    /** What draws the clouds. */
+    public enum Mode {
+        /** The paper's: the field as a flat layer on the sky dome, through one of the {@link Mapping}s. */
+        LAYER,
+        /** A volume between {@code base} and {@code base + thickness}, ray-marched ({@code engine.clouds}). */
+        VOLUMETRIC
+    }
 
     /** The four ways of figure 5 to put the field on the sky dome; the shader's mode number is the ordinal. */
     public enum Mapping {
@@ -63,6 +84,7 @@ public record CloudSettings(
     }
 
     public static final CloudSettings DEFAULTS = new CloudSettings(
+            Mode.LAYER, // the volume costs more than the budget allows on the 2-core llvmpipe (docs/sky.md)
             Mapping.PERSPECTIVE_FOG, // the paper's final choice, figure 5d
             0.45,    // a bit under half the sky: broken cumulus with blue between
             2500,    // m: a low cumulus base over the eye
@@ -73,15 +95,21 @@ public record CloudSettings(
             60,      // deg: towards east-north-east
             128,     // samples: 94 m per texel on the default 12 km tile, 1 MiB of half floats with 16 frames
             16,      // frames: 15 s apart over the 240 s loop, blended linearly
+            1800,    // m: a fair-weather cumulus base over valleys a few hundred metres up
+            1500,    // m: cumulus a kilometre and a half tall, with room for the towers
+            0.8,     // mostly cumulus: rounded tops over flat, darker bases
             1);      // tiles: the fog's e-folding distance is one tile, hiding the repeats
+
+    /** Metres: the layer the reflections show stays this far over an eye in or above the volume (the setting's least). */
+    static final double MIN_LAYER_ABOVE_EYE = 500;
 
     public static final SettingsGroup<CloudSettings> SETTINGS =
             SettingsGroup.of("clouds", CloudSettings.class, DEFAULTS);
 
     /** Checks what single ranges cannot: the sample counts are powers of two, the mapping is given. */
     public CloudSettings {
-        if (mapping == null) {
-            throw new IllegalArgumentException("the cloud mapping is missing");
+        if (mode == null || mapping == null) {
+            throw new IllegalArgumentException("the cloud mode or mapping is missing");
         }
         if (Integer.bitCount(resolution) != 1) {
             throw new IllegalArgumentException("the cloud resolution must be a power of two (32, 64, 128, 256), got "
@@ -114,6 +142,19 @@ public record CloudSettings(
      */
     public Vector4f cloudParams(float threshold, Vector4f dest) {
         return dest.set(threshold, (float) altitude, (float) tileSize, (float) (horizonFog * tileSize));
+    }
+
+    /**
+     * {@link #cloudParams(float, Vector4f)} for an eye {@code eyeAltitude} metres above sea level: in the volumetric
+     * mode the layer (which the water's reflection and the environment map still show) lies at the volume's middle
+     * height, at least {@link #MIN_LAYER_ABOVE_EYE} above the eye.
+     */
+    public Vector4f cloudParams(float threshold, double eyeAltitude, Vector4f dest) {
+        cloudParams(threshold, dest);
+        if (mode == Mode.VOLUMETRIC) {
+            dest.y = (float) Math.max(base + thickness / 2 - eyeAltitude, MIN_LAYER_ABOVE_EYE);
+        }
+        return dest;
     }
 
     /**

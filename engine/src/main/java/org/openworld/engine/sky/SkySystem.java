@@ -24,6 +24,7 @@ import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
+import org.openworld.engine.environment.CloudShadow;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyIrradiance;
 import org.openworld.engine.environment.SkyMaps;
@@ -130,6 +131,7 @@ public final class SkySystem implements EngineSystem {
     private Uniform.Int cubeFace;
     private Uniform.Mat3 faceAxes;
     private Uniform.Float sunDisc;
+    private Uniform.Float cloudLayer;
     private Mesh fullScreen;
     private SkyPanorama panorama;
     private Texture2D skyView;
@@ -174,6 +176,7 @@ public final class SkySystem implements EngineSystem {
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
         sunDisc = program.float1("uSunDisc");
+        cloudLayer = program.float1("uCloudLayer");
         nightUniforms = new StarField.NightUniforms(program);
         stars = new StarField(context, StarCatalogue.generate(seed));
         panorama = new SkyPanorama(context);
@@ -190,7 +193,8 @@ public final class SkySystem implements EngineSystem {
         update(context.world(), 0);
     }
 
-    private static Texture3D upload(GlContext gl, CloudField field) {
+    /** The field as a 3D texture (s, t one tile, r one period; R16F, wrapping), as the sky and the clouds read it. */
+    public static Texture3D upload(GlContext gl, CloudField field) {
         FloatBuffer data = MemoryUtil.memAllocFloat(field.values().length).put(field.values()).flip();
         try {
             return Texture3D.of(gl, field.resolution(), field.resolution(), field.frames(), Format.R16F,
@@ -271,7 +275,7 @@ public final class SkySystem implements EngineSystem {
         Vector3f ground = new Vector3f(sun.color()).mul(Math.max(sun.direction().y(), 0)).add(sun.ambient());
         double light = Math.max(Adaptation.luminance(new Vector3d(ground)), Adaptation.MIN_LIGHT);
         panoramaScale = light < PANORAMA_SCALED_BELOW ? (float) (1 / light) : 1;
-        panorama.draw(sun, tables.altitude(), albedo, panoramaScale, c.cloudParams(threshold, new Vector4f()),
+        panorama.draw(sun, tables.altitude(), albedo, panoramaScale, c.cloudParams(threshold, tables.altitude(), new Vector4f()),
                 c.cloudMotion(simTime, new Vector4f()), fullScreen, updateDraws);
         // the environment map: the panorama into the six faces, linear and without the sun's disc (neither target
         // has a depth buffer, so the depth test passes whatever its state)
@@ -279,6 +283,7 @@ public final class SkySystem implements EngineSystem {
         panorama.sky().bind(SkyPanorama.SKY_PANORAMA.unit());
         panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(1);
+        cloudLayer.set(1);
         nightUniforms.set(night, panoramaScale);
         environment.render(face -> {
             faceAxes.set(CubeMapTexture.faceAxes(face));
@@ -337,6 +342,11 @@ public final class SkySystem implements EngineSystem {
         panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
+        // the volumetric clouds, where a system draws them (it publishes their shadow), draw themselves over the
+        // picture; the reflection keeps the layer of the same field
+        boolean volumetric = context.world().resource(Settings.class).get(CloudSettings.class).mode()
+                == CloudSettings.Mode.VOLUMETRIC && context.world().findResource(CloudShadow.class).isPresent();
+        cloudLayer.set(pass == Pass.MAIN && volumetric ? 0 : 1);
         nightUniforms.set(night, panoramaScale);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);

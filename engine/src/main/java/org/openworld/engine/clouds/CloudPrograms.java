@@ -1,0 +1,118 @@
+package org.openworld.engine.clouds;
+
+import org.joml.Matrix4fc;
+import org.joml.Vector3fc;
+import org.joml.Vector4fc;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Uniform;
+
+/**
+ * The clouds' four shader programs ({@code shaders/clouds/}) with their uniforms and texture units: the shadow map,
+ * the march, the resolve and the composite, each a full-screen triangle ({@code clouds/fullscreen.vert}).
+ */
+final class CloudPrograms {
+
+    /** Texture units: the field and the optics table (shadow, march), then each pass's own inputs. */
+    static final int UNIT_FIELD = 0;
+    static final int UNIT_OPTICS = 1;
+    static final int UNIT_SCENE_DEPTH = 2;
+    static final int UNIT_LIGHT = 3;
+    static final int UNIT_DEPTH = 4;
+    static final int UNIT_HISTORY = 5;
+    static final int UNIT_DETAIL = 6;
+
+    final ShaderProgram shadow;
+    final ShaderProgram march;
+    final ShaderProgram resolve;
+    final ShaderProgram composite;
+    private final Uniform.Vec4 shadowLayer;
+    private final Uniform.Vec4 shadowMotion;
+    private final Uniform.Vec2 shadowSize;
+    private final Uniform.Vec3 shadowEye;
+    private final Uniform.Vec3 shadowSun;
+    private final Uniform.Vec4 marchLayer;
+    private final Uniform.Vec4 marchMotion;
+    private final Uniform.Vec4 marchGrid;
+    private final Uniform.Float marchEvery;
+    private final Uniform.Mat4 resolvePrevious;
+    private final Uniform.Vec4 resolveGrid;
+    private final Uniform.Float resolveEvery;
+    private final Uniform.Vec2 compositeGrid;
+    private final Uniform.Float compositeSky;
+
+    CloudPrograms(EngineContext context) {
+        shadow = program(context, "shadowProgram", "clouds/shadow.frag");
+        shadow.sampler("cloudField", UNIT_FIELD);
+        shadow.sampler("cloudOptics", UNIT_OPTICS);
+        shadowLayer = shadow.vec4("uLayer");
+        shadowMotion = shadow.vec4("uMotion");
+        shadowSize = shadow.vec2("uSize");
+        shadowEye = shadow.vec3("uEye");
+        shadowSun = shadow.vec3("uSunDir");
+
+        march = program(context, "marchProgram", "clouds/march.frag");
+        march.sampler("cloudField", UNIT_FIELD);
+        march.sampler("cloudOptics", UNIT_OPTICS);
+        march.sampler("cloudDetail", UNIT_DETAIL);
+        march.sampler("sceneDepth", UNIT_SCENE_DEPTH);
+        marchLayer = march.vec4("uLayer");
+        marchMotion = march.vec4("uMotion");
+        marchGrid = march.vec4("uGrid");
+        marchEvery = march.float1("uEveryTexel");
+
+        resolve = program(context, "resolveProgram", "clouds/resolve.frag");
+        resolve.sampler("sceneDepth", UNIT_SCENE_DEPTH);
+        resolve.sampler("freshLight", UNIT_LIGHT);
+        resolve.sampler("freshDepth", UNIT_DEPTH);
+        resolve.sampler("historyLight", UNIT_HISTORY);
+        resolvePrevious = resolve.mat4("uPreviousViewProjection");
+        resolveGrid = resolve.vec4("uGrid");
+        resolveEvery = resolve.float1("uEveryTexel");
+
+        composite = program(context, "compositeProgram", "clouds/composite.frag");
+        composite.sampler("cloudLight", UNIT_LIGHT);
+        composite.sampler("cloudDepth", UNIT_DEPTH);
+        compositeGrid = composite.vec2("uGridSize");
+        compositeSky = composite.float1("uSky");
+    }
+
+    private static ShaderProgram program(EngineContext context, String role, String fragment) {
+        return context.own(role, context.shaders().program("clouds/fullscreen.vert", fragment));
+    }
+
+    /** The shadow map's program in use, for a layer ({@code uLayer}), a motion ({@code uMotion}), a map size, the eye
+     * and the direction towards the sun. */
+    void useShadow(Vector4fc layer, Vector4fc motion, int size, Vector3fc eye, Vector3fc toSun) {
+        shadow.use();
+        shadowEye.set(eye);
+        shadowSun.set(toSun);
+        shadowLayer.set(layer);
+        shadowMotion.set(motion);
+        shadowSize.set(size, size);
+    }
+
+    /** The march's program in use: the grid's size, this frame's slot, whether every texel is marched. */
+    void useMarch(Vector4fc layer, Vector4fc motion, int gridWidth, int gridHeight, int[] slot, boolean every) {
+        march.use();
+        marchLayer.set(layer);
+        marchMotion.set(motion);
+        marchGrid.set(gridWidth, gridHeight, slot[0], slot[1]);
+        marchEvery.set(every ? 1 : 0);
+    }
+
+    /** The resolve's program in use, with the previous frame's world-to-clip matrix. */
+    void useResolve(Matrix4fc previous, int gridWidth, int gridHeight, int[] slot, boolean every) {
+        resolve.use();
+        resolvePrevious.set(previous);
+        resolveGrid.set(gridWidth, gridHeight, slot[0], slot[1]);
+        resolveEvery.set(every ? 1 : 0);
+    }
+
+    /** The composite's program in use, for the sky's pixels or the surfaces'. */
+    void useComposite(int gridWidth, int gridHeight, boolean sky) {
+        composite.use();
+        compositeGrid.set(gridWidth, gridHeight);
+        compositeSky.set(sky ? 1 : 0);
+    }
+}

@@ -1,0 +1,305 @@
+package org.openworld.engine.clouds;
+
+import static org.lwjgl.opengl.GL30C.*;
+
+import java.nio.FloatBuffer;
+import java.util.List;
+import org.joml.Matrix4f;
+import org.joml.Vector2d;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+import org.lwjgl.system.MemoryUtil;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.core.Counter;
+import org.openworld.engine.core.Counters;
+import org.openworld.engine.core.EngineContext;
+import org.openworld.engine.core.EngineSystem;
+import org.openworld.engine.core.Layer;
+import org.openworld.engine.core.Pass;
+import org.openworld.engine.core.RenderContext;
+import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.World;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.environment.CloudShadow;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.gl.DrawStats;
+import org.openworld.engine.gl.Format;
+import org.openworld.engine.gl.Framebuffer;
+import org.openworld.engine.gl.GlContext;
+import org.openworld.engine.gl.Mesh;
+import org.openworld.engine.gl.Sampling;
+import org.openworld.engine.gl.SharedBlock;
+import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.Texture3D;
+import org.openworld.engine.settings.Settings;
+import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.sky.CloudField;
+import org.openworld.engine.sky.CloudSettings;
+import org.openworld.engine.sky.SkySystem;
+
+/**
+ * Volumetric clouds ({@code clouds.mode=volumetric}; the package's front page has the method): the sky's cloud field
+ * ray-marched as a volume over the picture, with its shadow on everything the sun lights. In the MAIN pass, after
+ * every other system but the transparent ones (it reads the finished depth). In the update, before the passes, the
+ * cloud shadow map is redrawn when the clouds evolved for {@link #SHADOW_REFRESH} s or the sun moved. Per frame:
+ * <ol>
+ *   <li>the march ({@code clouds/march.frag}) on a quarter grid, one texel of every 2 × 2 per frame, every texel when
+ *       there is no usable history ({@link #jumped});</li>
+ *   <li>the resolve ({@code clouds/resolve.frag}) fills the grid from the march and the reprojected history;</li>
+ *   <li>the composite ({@code clouds/composite.frag}) upsamples it over the picture, twice: over the sky's pixels
+ *       and over the surfaces' (the depth test picks them), each from the grid texels marched against the same.</li>
+ * </ol>
+ * With {@code clouds.mode=layer} it draws nothing and its shadow block says "no clouds"; the sky draws the layer.
+ * The water's reflection and the environment map show the sky's layer of the same field at the volume's middle
+ * height (the sky system's panorama), not the volume.
+ *
+ * <p>Counter: {@code clouds.full} (1 when every grid texel was marched this frame).
+ */
+public final class CloudVolumeSystem implements EngineSystem {
+    /** The counter: 1 on a frame that marched every texel of the grid (a cut or a shot's first frame), else 0. */
+    private static final Counter FULL = Counter.of("clouds", "full");
+
+    /** Texels of the cloud shadow map per side: one per field sample at the default 128² field (94 m). */
+    static final int SHADOW_SIZE = 128;
+    /** Simulation seconds after which the shadow map is redrawn for the field's evolution (the sky's own refresh). */
+    static final double SHADOW_REFRESH = 0.5;
+    /** Radians the sun may move before the shadow map is redrawn: 0.2°, a shadow 2 km below shifts 7 m. */
+    static final double SHADOW_SUN_STEP = Math.toRadians(0.2);
+    /**
+     * A camera that moved this far (metres) or turned this much (the cosine between view directions) since the last
+     * frame has cut, not moved: the history shows another place, and every texel is marched. 300 m/s at 30 frames a
+     * second is 10 m a frame, far below.
+     */
+    static final double CUT_DISTANCE = 200;
+    static final double CUT_COSINE = Math.cos(Math.toRadians(20));
+    /** The march's slot in each 2 × 2 block of the grid, frame after frame: every texel once in four frames. */
+    private static final int[][] SLOTS = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+    /**
+     * Spectral exponent of the base shape's field: power 1/f³, smoother than the sky's 1/f² so that a cloud's outline
+     * does not follow the texels of the field; drawn with the same seed, so its phases, and the places of the large
+     * clouds, are the layer's (which the reflections show). The sky's field, at {@code clouds.beta}, erodes it.
+     */
+    static final double BASE_BETA = 3;
+    /** Radius of the Earth, metres, as the atmosphere has it ({@code shaders/clouds/volume.glsl}, EARTH_RADIUS). */
+    private static final double EARTH_RADIUS = 6360e3;
+
+    private GlContext gl;
+    private EngineContext context;
+    private CloudPrograms programs;
+    private Mesh fullScreen;
+    private Texture3D field;
+    private Texture3D detail;
+    private CloudField cloudField;
+    private Texture2D optics;
+    private double opticsType = Double.NaN;
+    private float threshold;
+    private double thresholdCover = Double.NaN;
+    private CloudShadow shadow;
+    private Framebuffer shadowTarget;
+    private double shadowTime = Double.NEGATIVE_INFINITY;
+    private final Vector3f shadowSun = new Vector3f();
+    private CloudSettings shadowSettings;
+    private CloudTargets targets;
+    private int written;          // the history the last resolve wrote
+    private long frame;
+    private boolean haveHistory;
+    private CloudSettings historySettings;
+    private final Matrix4f previousViewProjection = new Matrix4f();
+    private final Vector3f previousEye = new Vector3f();
+    private final Vector3f previousForward = new Vector3f();
+    private double simTime;
+    /** The shadow map's draws, made in the update, outside any frame's counts (as the sky's panorama). */
+    private final DrawStats updateDraws = new DrawStats();
+
+    @Override
+    public SystemSpec spec() {
+        return SystemSpec.named("clouds").reads(Settings.class, Sun.class, Camera.class).publishes(CloudShadow.class)
+                .updatesOnGpu().layer(Layer.TRANSPARENT).draws(Pass.MAIN);
+    }
+
+    @Override
+    public List<SettingsGroup<?>> settings() {
+        return List.of();
+    }
+
+    @Override
+    public void init(EngineContext context) {
+        this.context = context;
+        gl = context.gl();
+        Settings settings = context.settings();
+        CloudSettings c = settings.get(CloudSettings.class);
+        int seed = settings.get(EngineSettings.class).seed();
+        cloudField = CloudField.generate(c.resolution(), c.frames(), BASE_BETA, seed);
+        field = context.own("field", SkySystem.upload(gl, cloudField));
+        detail = context.own("detail", SkySystem.upload(gl, CloudField.generate(c.resolution(), c.frames(), c.beta(),
+                seed)));
+        optics = context.own("optics", Texture2D.empty(gl, CloudOptics.SIZE, 1, Format.RGBA16F,
+                Sampling.LINEAR_CLAMP));
+        programs = new CloudPrograms(context);
+        fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
+        Texture2D map = context.own("shadowMap", Texture2D.empty(gl, SHADOW_SIZE, SHADOW_SIZE, Format.R16F,
+                Sampling.LINEAR_REPEAT));
+        shadowTarget = context.own("shadowTarget", Framebuffer.onTextures(gl, map));
+        shadow = new CloudShadow(map, context.own("shadowBlock", SharedBlock.CLOUD_SHADOW.standIn(gl)));
+        context.world().setResource(shadow);
+    }
+
+    @Override
+    public void update(World world, double step) {
+        simTime += step;
+        CloudSettings c = world.resource(Settings.class).get(CloudSettings.class);
+        Vector2d wind = c.windOffset(simTime, new Vector2d());
+        boolean volumetric = c.mode() == CloudSettings.Mode.VOLUMETRIC;
+        shadow.write((float) c.base(), (float) c.tileSize(), (float) wind.x, (float) wind.y, volumetric ? 1 : 0);
+        if (!volumetric) {
+            return;
+        }
+        prepareTables(c);
+        // the shadow map, before the passes that read it, when the clouds evolved or the sun moved
+        Sun sun = world.resource(Sun.class);
+        if (simTime - shadowTime >= SHADOW_REFRESH || sun.direction().angle(shadowSun) >= SHADOW_SUN_STEP
+                || !c.equals(shadowSettings)) {
+            int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+            int[] viewport = new int[4];
+            glGetIntegerv(GL_VIEWPORT, viewport);
+            field.bind(CloudPrograms.UNIT_FIELD);
+            optics.bind(CloudPrograms.UNIT_OPTICS);
+            shadowTarget.bind();
+            CameraPose pose = world.resource(Camera.class).pose();
+            Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
+            programs.useShadow(layer(c), motion(c), SHADOW_SIZE, eye, sun.direction());
+            fullScreen.draw(updateDraws);
+            glBindFramebuffer(GL_FRAMEBUFFER, previous);
+            glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+            shadowTime = simTime;
+            shadowSun.set(sun.direction());
+            shadowSettings = c;
+        }
+    }
+
+    /** The {@code uLayer} uniform: the base's and the top's radii, the tile, the cover's density threshold. */
+    private Vector4f layer(CloudSettings c) {
+        return new Vector4f((float) (EARTH_RADIUS + c.base()), (float) (EARTH_RADIUS + c.base() + c.thickness()),
+                (float) c.tileSize(), threshold);
+    }
+
+    /**
+     * The {@code uMotion} uniform: the wind's offset and the time phase ({@link CloudSettings#cloudMotion}), and half a
+     * frame of the field's time axis (its texel centres).
+     */
+    private Vector4f motion(CloudSettings c) {
+        return c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0.5f / c.frames());
+    }
+
+    @Override
+    public void render(Pass pass, RenderContext context) {
+        CloudSettings c = context.world().resource(Settings.class).get(CloudSettings.class);
+        if (c.mode() != CloudSettings.Mode.VOLUMETRIC) {
+            haveHistory = false;
+            return;
+        }
+        Framebuffer scene = context.target();
+        int previousFramebuffer = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+        Vector4f layer = layer(c);
+        Vector4f motion = motion(c);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(false);
+
+        if (targets == null || !targets.fits(scene.width(), scene.height())) {
+            targets = this.context.owned().replace("targets", targets, new CloudTargets(gl, scene.width(),
+                    scene.height()));
+            haveHistory = false;
+        }
+        // bound after the targets are made: making a texture binds it to the active unit
+        scene.depth().bind(CloudPrograms.UNIT_SCENE_DEPTH); // read while another target is drawn into
+        field.bind(CloudPrograms.UNIT_FIELD);
+        detail.bind(CloudPrograms.UNIT_DETAIL);
+        optics.bind(CloudPrograms.UNIT_OPTICS);
+
+        // 1. the march: the frame's slot of every 2 x 2 block, or every texel without a usable history
+        boolean every = !haveHistory || !c.equals(historySettings) || jumped(context);
+        int[] slot = SLOTS[(int) (frame % SLOTS.length)];
+        targets.fresh.bind();
+        int gw = targets.gridWidth;
+        int gh = targets.gridHeight;
+        glViewport(0, 0, every ? gw : (gw + 1) / 2, every ? gh : (gh + 1) / 2);
+        programs.useMarch(layer, motion, gw, gh, slot, every);
+        fullScreen.draw(context.stats());
+
+        // 2. the resolve into the other history
+        int read = written;
+        written = 1 - written;
+        targets.history[written].bind();
+        targets.freshLight.bind(CloudPrograms.UNIT_LIGHT);
+        targets.freshDepth.bind(CloudPrograms.UNIT_DEPTH);
+        targets.historyLight[read].bind(CloudPrograms.UNIT_HISTORY);
+        programs.useResolve(previousViewProjection, gw, gh, slot, every);
+        fullScreen.draw(context.stats());
+
+        // 3. the composite over the picture: the sky's pixels, then the surfaces', chosen by the depth test
+        glBindFramebuffer(GL_FRAMEBUFFER, previousFramebuffer);
+        glViewport(0, 0, scene.width(), scene.height());
+        targets.historyLight[written].bind(CloudPrograms.UNIT_LIGHT);
+        targets.historyDepth[written].bind(CloudPrograms.UNIT_DEPTH);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        programs.useComposite(gw, gh, true);
+        glDepthFunc(GL_LEQUAL);
+        fullScreen.draw(context.stats());
+        programs.useComposite(gw, gh, false);
+        glDepthFunc(GL_GREATER);
+        fullScreen.draw(context.stats());
+        glDepthFunc(GL_LESS);
+        glDisable(GL_BLEND);
+        glDepthMask(true);
+
+        context.world().resource(Counters.class).put(FULL, every ? 1 : 0);
+        remember(context);
+        haveHistory = true;
+        historySettings = c;
+        frame++;
+    }
+
+    /** The optics table for the cloud type and the density threshold for the cover, when they changed. */
+    private void prepareTables(CloudSettings c) {
+        if (c.type() != opticsType) {
+            float[] table = CloudOptics.table(c.type());
+            FloatBuffer data = MemoryUtil.memAllocFloat(table.length).put(table).flip();
+            try {
+                optics.upload(0, 0, 1, data);
+            } finally {
+                MemoryUtil.memFree(data);
+            }
+            opticsType = c.type();
+        }
+        if (c.cover() != thresholdCover) {
+            threshold = CloudField.coverageThreshold(cloudField, c.cover());
+            thresholdCover = c.cover();
+        }
+    }
+
+    /** Whether the camera cut since the last frame: moved {@link #CUT_DISTANCE} or turned past {@link #CUT_COSINE}. */
+    private boolean jumped(RenderContext context) {
+        Vector3f forward = forward(context, new Vector3f());
+        return context.camera().position().distance(previousEye) > CUT_DISTANCE
+                || forward.dot(previousForward) < CUT_COSINE;
+    }
+
+    private void remember(RenderContext context) {
+        previousViewProjection.set(context.camera().viewProjection());
+        previousEye.set(context.camera().position());
+        forward(context, previousForward);
+    }
+
+    /** The view direction, world space: the view matrix's third row, negated. */
+    private static Vector3f forward(RenderContext context, Vector3f dest) {
+        return context.camera().view().positiveZ(dest).negate();
+    }
+
+    /** The GL objects were handed to {@code context.own} (the targets to its {@code replace}); nothing else to free. */
+    @Override
+    public void close() {
+    }
+}

@@ -1,0 +1,205 @@
+package org.openworld.engine.clouds;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.openworld.engine.Engine;
+import org.openworld.engine.EngineSettings;
+import org.openworld.engine.GlTest;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.colour.ImageComparison;
+import org.openworld.engine.environment.Sun;
+import org.openworld.engine.environment.TimeOfDay;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.sky.CloudField;
+import org.openworld.engine.sky.CloudSettings;
+import org.openworld.engine.sky.SkySystem;
+import org.openworld.engine.testscene.TestSceneSystem;
+
+/**
+ * The volumetric clouds on a real GL context: their shadow on the ground, where the field says a cloud is and not
+ * beside it; and the amortised march, whose reprojected frame in fast flight must match a frame marched whole.
+ * (Every GL test also checks that no GL object is left after the engine closes.)
+ */
+@GlTest
+class CloudVolumeRenderTest {
+
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
+
+    /** The cover strength's spread in standard deviations of the field ({@code clouds/volume.glsl}, COVER_SPREAD). */
+    private static final double COVER_SPREAD = 1.5;
+
+    /** Degrees the camera turns per frame in the flight. */
+    private static final double TURN = 1;
+
+    private static Engine engine(int width, int height, List<String> settings) {
+        List<String> all = new ArrayList<>(List.of("clouds.mode=volumetric", "clouds.wind-speed=0"));
+        all.addAll(settings);
+        return GlTestSupport.engine(GL.context(), width, height, all, new TestSceneSystem(), new SkySystem(),
+                new CloudVolumeSystem());
+    }
+
+    private static Image render(Engine engine, CameraPose pose) {
+        engine.world().resource(Camera.class).setPose(pose);
+        engine.update();
+        engine.render();
+        return engine.readImage();
+    }
+
+    /**
+     * Looking straight down from below a thin cloud layer at noon: ground pixels whose sun ray crosses thick cloud
+     * (by the base field on the CPU) are darker with the volume's shadow than with the layer (which casts none);
+     * pixels whose sun ray meets no cloud are unchanged. Fails with the shadow left out of sunVisibility (every
+     * ratio 1).
+     */
+    @Test
+    void theShadowMapDarkensTheGroundUnderACloudAndNotBesideIt() {
+        int size = 96;
+        List<String> settings = List.of("clouds.tile-size=3000", "clouds.thickness=300", "clouds.cover=0.5",
+                "clouds.type=1");
+        CameraPose pose = new CameraPose(0, 1500, 0, 0, -89.9, 90);
+        Image shadowed;
+        Image open;
+        Sun sun;
+        Matrix4f inverse;
+        CloudSettings c;
+        int seed;
+        try (Engine engine = engine(size, size, settings)) {
+            engine.world().setResource(new TimeOfDay(12, 0));
+            shadowed = render(engine, pose);
+            sun = engine.world().resource(Sun.class);
+            inverse = new Matrix4f(engine.world().resource(Camera.class).view(1).viewProjection()).invert();
+            c = engine.settings().get(CloudSettings.class);
+            seed = engine.settings().get(EngineSettings.class).seed();
+        }
+        List<String> layer = new ArrayList<>(settings);
+        layer.add("clouds.mode=layer");
+        try (Engine engine = engine(size, size, layer)) {
+            engine.world().setResource(new TimeOfDay(12, 0));
+            open = render(engine, pose);
+        }
+        CloudField field = CloudField.generate(c.resolution(), c.frames(), CloudVolumeSystem.BASE_BETA, seed);
+        float threshold = CloudField.coverageThreshold(field, c.cover());
+        double under = 0;
+        double underOpen = 0;
+        double beside = 0;
+        double besideOpen = 0;
+        int underCount = 0;
+        int besideCount = 0;
+        Vector3f toSun = new Vector3f(sun.direction());
+        for (int y = 0; y < size; y++) {
+            for (int x = 0; x < size; x++) {
+                Vector3f ground = groundPoint(inverse, pose, x, y, size);
+                if (ground == null || ground.length() < 300) {
+                    continue; // the ring of boxes stands within 220 m of the origin
+                }
+                double least = Double.MAX_VALUE;
+                double most = -Double.MAX_VALUE;
+                for (int k = 0; k <= 4; k++) { // the sun's ray from the base to the top
+                    double up = c.base() + k * c.thickness() / 4;
+                    double f = sample(field, (ground.x + toSun.x / toSun.y * up) / c.tileSize(),
+                            (ground.z + toSun.z / toSun.y * up) / c.tileSize());
+                    least = Math.min(least, f);
+                    most = Math.max(most, f);
+                }
+                int row = size - 1 - y; // readImage's rows run from the top
+                if ((least - threshold) / COVER_SPREAD >= 0.5) {
+                    under += shadowed.luma(x, row);
+                    underOpen += open.luma(x, row);
+                    underCount++;
+                } else if (most < threshold - 0.3) {
+                    beside += shadowed.luma(x, row);
+                    besideOpen += open.luma(x, row);
+                    besideCount++;
+                }
+            }
+        }
+        assertTrue(underCount > 50 && besideCount > 50, "the view holds both: " + underCount + " pixels under a "
+                + "thick cloud, " + besideCount + " beside every cloud");
+        double underRatio = under / underOpen;
+        double besideRatio = beside / besideOpen;
+        // Under: the cover strength >= 0.5 along the whole ray is a column of optical depth >= 0.04/m x 0.5^2/2 x
+        // 300 m = 1.5, so at least 78 % of the direct sun is gone; at noon the sun is most of the light on level
+        // ground (the sky's ambient the rest), and through the tone curve and sRGB's 1/2.4 power a loss of half the
+        // light still leaves the luma below 0.85 of the open ground's.
+        assertTrue(underRatio < 0.85, "under a cloud the ground keeps " + underRatio + " of its brightness");
+        // Beside: the same light, the same picture, up to the rounding of 8-bit colour (1 in a luma of 100 or more).
+        assertTrue(Math.abs(besideRatio - 1) < 0.01, "beside the clouds the ground changes by " + besideRatio);
+    }
+
+    /**
+     * Flying at 300 m/s (5 m per 1/60 s step) 600 m under the cloud base towards the clouds, turning by
+     * {@link #TURN}° a frame, for 12 frames, each marching a quarter of the grid and reprojecting the rest: the last frame against the same pose marched whole (a fresh engine's first frame).
+     * Bound: the just noticeable difference, a ΔE00 of 1 (Sharma et al. 2005), plus the march's own noise: each texel
+     * starts its steps at a fixed jitter of its own (1/24 of its span), and a reprojected texel carries a
+     * neighbour's, so even a perfect reprojection differs from the full march by that noise, measured 0.47 in
+     * straight flight, taken as 0.5. Below 1.5, the motion adds less than a noticeable difference to it. Without
+     * the reprojection and its clamp (the history read where the texel was on the screen) the clouds smear and the
+     * mean is above it.
+     */
+    @Test
+    void aReprojectedFrameMatchesAFullyMarchedOneInFastFlight() {
+        int width = 160;
+        int height = 90;
+        List<String> settings = List.of("clouds.cover=0.6");
+        double speed = 300;
+        double step = EngineSettings.DEFAULTS.step();
+        int frames = 12;
+        CameraPose last = null;
+        Image amortised;
+        try (Engine engine = engine(width, height, settings)) {
+            engine.world().setResource(new TimeOfDay(15, 0));
+            Image frame = null;
+            for (int i = 0; i < frames; i++) {
+                double yaw = 20 + TURN * i;
+                last = new CameraPose(0, 1200, 2000 - speed * step * i, yaw, 12, 60);
+                frame = render(engine, last);
+            }
+            amortised = frame;
+        }
+        Image full;
+        try (Engine engine = engine(width, height, settings)) {
+            engine.world().setResource(new TimeOfDay(15, 0));
+            for (int i = 0; i < frames - 1; i++) {
+                engine.update(); // the same simulation time, so the clouds have evolved alike
+            }
+            full = render(engine, last);
+        }
+        double mean = ImageComparison.of(amortised, full).meanDeltaE();
+        assertTrue(mean < 1.5, "mean ΔE00 between the reprojected and the full frame " + mean);
+    }
+
+    /** Where the view ray through pixel (x, y) (y from the bottom) meets the ground plane y = 0, or null. */
+    private static Vector3f groundPoint(Matrix4f inverse, CameraPose pose, int x, int y, int size) {
+        Vector4f far = inverse.transform(new Vector4f((x + 0.5f) / size * 2 - 1, (y + 0.5f) / size * 2 - 1, 1, 1));
+        Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
+        Vector3f d = new Vector3f(far.x / far.w, far.y / far.w, far.z / far.w).sub(eye).normalize();
+        if (d.y >= 0) {
+            return null;
+        }
+        return eye.add(d.mul(-eye.y / d.y));
+    }
+
+    /** The field at (s, t) tiles, frame 0, bilinear with wrapping as the GPU's LINEAR_REPEAT reads it. */
+    private static double sample(CloudField field, double s, double t) {
+        int n = field.resolution();
+        double u = s * n - 0.5;
+        double v = t * n - 0.5;
+        int x = (int) Math.floor(u);
+        int y = (int) Math.floor(v);
+        double fx = u - x;
+        double fy = v - y;
+        return (1 - fy) * ((1 - fx) * field.density(x, y, 0) + fx * field.density(x + 1, y, 0))
+                + fy * ((1 - fx) * field.density(x, y + 1, 0) + fx * field.density(x + 1, y + 1, 0));
+    }
+}
