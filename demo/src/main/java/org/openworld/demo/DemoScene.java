@@ -3,7 +3,7 @@ package org.openworld.demo;
 import java.util.List;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.camera.CameraSystem;
-import org.openworld.engine.clouds.CloudVolumeSystem;
+import org.openworld.engine.sky.clouds.CloudVolumeSystem;
 import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.World;

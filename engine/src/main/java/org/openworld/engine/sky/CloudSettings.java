@@ -12,7 +12,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * (paper 2.3, figure 5 a–d, {@code shaders/sky/clouds.glsl}).
  *
  * @param mode          what draws the clouds: the paper's flat layer on the sky dome, or a volume ray-marched between
- *                      two altitudes ({@code org.openworld.engine.clouds})
+ *                      two altitudes ({@code org.openworld.engine.sky.clouds})
  * @param mapping       the sky-dome mapping, how a view direction finds its point in the field: spherical,
  *                      spherical-fog, perspective or perspective-fog, the four variants of figure 5
  * @param cover         fraction of the field's samples that are cloud: the density threshold is the field's

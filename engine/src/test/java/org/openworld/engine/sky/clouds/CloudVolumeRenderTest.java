@@ -1,4 +1,4 @@
-package org.openworld.engine.clouds;
+package org.openworld.engine.sky.clouds;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

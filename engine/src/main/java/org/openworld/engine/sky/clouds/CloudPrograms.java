@@ -1,4 +1,4 @@
-package org.openworld.engine.clouds;
+package org.openworld.engine.sky.clouds;
 
 import org.joml.Matrix4fc;
 import org.joml.Vector3fc;

@@ -1,4 +1,4 @@
-package org.openworld.engine.clouds;
+package org.openworld.engine.sky.clouds;
 
 /**
  * The two curves the cloud shader looks up rather than computes (GL-free, so they are tested against their

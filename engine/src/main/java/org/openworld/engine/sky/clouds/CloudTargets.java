@@ -1,4 +1,4 @@
-package org.openworld.engine.clouds;
+package org.openworld.engine.sky.clouds;
 
 import org.openworld.engine.core.Owned;
 import org.openworld.engine.gl.Format;

@@ -28,7 +28,7 @@
  *   S = π E_sun Σ_{i=0..2} 0.5^i p_i(μ) e^(−0.5^i τ) + mix(E_sky(down), E_sky(up), h)
  * </pre>
  * E_sun the sun's light at the eye (the atmosphere's transmittance table, {@code frame.sunColor}), p_i the dual-lobe
- * Henyey–Greenstein phase with its anisotropy times 0.5^i ({@link org.openworld.engine.clouds.CloudOptics}: the
+ * Henyey–Greenstein phase with its anisotropy times 0.5^i ({@link org.openworld.engine.sky.clouds.CloudOptics}: the
  * octaves of multiple scattering, Wrenninge et al. 2013), and E_sky the sky's irradiance from its harmonics (the
  * ground's bounce from below at the base, the sky from above at the top). The air between the eye and the cloud's
  * mean distance is added from the aerial-perspective table ({@code common/fog.glsl}).
@@ -58,4 +58,4 @@
  * so a cloud between two ridges is drawn over both. The cloud shadow takes the layer flat and the ground's point
  * carried to the base along the sun, at most 20 km away (the sun at least 3° up).
  */
-package org.openworld.engine.clouds;
+package org.openworld.engine.sky.clouds;
