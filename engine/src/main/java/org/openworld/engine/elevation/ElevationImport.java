@@ -91,16 +91,24 @@ public final class ElevationImport {
     private static final double GIB = 1024.0 * 1024 * 1024;
 
     /**
-     * The settings the snow map reads a true-scale tile with: its own range as the relief, so the snow map's
-     * normalised height n = h / relief + seaFraction is 0 at the lowest sample and 1 at the highest, as for a
-     * normalised map ({@code terrain.snow-base} and {@code snow-full} stay fractions of the map's range).
+     * The metres a true-scale map's normalised height n spans, from the file's 0 m: n = (h + seaLevel) / 5000 m, so
+     * the fractions {@code terrain.snow-base} and {@code snow-full} (0.35 and 0.60 by default) put speckled snow
+     * from 1750 m and closed snow fields from 3000 m, the Alps' permanent snow line, and the materials' grass line
+     * (0.45 ± 0.06) gives way to rock between 1950 and 2550 m, about the Alps' tree line. A real place's snow and rock
+     * lie by altitude, whatever its own range: no snow on hills that top out at 1000 m.
      */
-    public static TerrainSettings rangeOf(TerrainSettings s, HeightMap map) {
-        double relief = map.max() - map.min();
-        return new TerrainSettings(s.size(), s.spacing(), relief, -map.min() / relief, s.beta(), s.minWavelength(),
-                s.maxWavelength(), s.importFile(), s.snowBase(), s.snowFull(), s.snowMorphology(), s.world(),
-                s.memoryBudget(), s.importScale(), s.seaLevel(), s.importDetail(), s.erosion(), s.erosionTalus(),
-                s.ranges());
+    public static final double TRUE_SCALE_RELIEF = 5000;
+
+    /**
+     * The settings the snow map reads a true-scale tile with: relief {@link #TRUE_SCALE_RELIEF} and the sea-level
+     * height as its sea fraction, so the snow map's n = h / relief + seaFraction = (h + seaLevel) / 5000 m counts from
+     * the file's 0 m, whatever {@code terrain.sea-level} floods.
+     */
+    public static TerrainSettings trueScale(TerrainSettings s) {
+        return new TerrainSettings(s.size(), s.spacing(), TRUE_SCALE_RELIEF, s.seaLevel() / TRUE_SCALE_RELIEF,
+                s.beta(), s.minWavelength(), s.maxWavelength(), s.importFile(), s.snowBase(), s.snowFull(),
+                s.snowMorphology(), s.world(), s.memoryBudget(), s.importScale(), s.seaLevel(), s.importDetail(),
+                s.erosion(), s.erosionTalus(), s.ranges());
     }
 
     /** The heap not yet used: the most the JVM may grow to, less what is in use now. */

@@ -11,8 +11,9 @@
  * centred on the origin, fades its surroundings into a plain, subtracts {@code terrain.sea-level} and adds
  * {@link org.openworld.engine.elevation.DetailBands}. The tile is an ordinary
  * {@link org.openworld.engine.terrain.HeightMap}: the pyramid, LOD, materials, snow, water (at height 0) and shadows
- * work on it unchanged; the snow map reads it over its own range
- * ({@link org.openworld.engine.elevation.ElevationImport#rangeOf}). Files this package does not take (a PNG or raw
+ * work on it unchanged; the snow map and the materials read it by altitude in metres, normalised height
+ * n = (h + seaLevel) / 5000 m ({@link org.openworld.engine.elevation.ElevationImport#trueScale}), so the fractions
+ * {@code terrain.snow-base} and {@code snow-full} put snow from 1750 m and closed fields from 3000 m. Files this package does not take (a PNG or raw
  * file without a sidecar) go to {@link org.openworld.engine.terrain.HeightImport}, square and normalised.
  *
  * <p><b>Detail: formula.</b> The model's power spectrum is fitted as P(f) = 10^c f^s over its trusted octaves; the

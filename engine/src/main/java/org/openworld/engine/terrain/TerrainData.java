@@ -21,8 +21,12 @@ import org.openworld.engine.terrain.material.SnowMap;
  * @param pyramid the heights at every power-of-two resolution, level 0 the full map
  * @param snow    where snow lies
  * @param sky     the share of the sky the relief leaves each place, for the light in the shadows
+ * @param lowest  the height, metres, that the materials and the snow read as normalised 0: the map's lowest sample,
+ *                or the file's 0 m for a map at true scale
+ * @param highest the height read as normalised 1: the map's highest sample, or
+ *                {@link ElevationImport#TRUE_SCALE_RELIEF} above the file's 0 m
  */
-public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky) {
+public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky, double lowest, double highest) {
 
     /** Stage names as {@link StageTimes} records them. */
     public static final String SYNTHESIS = "synthesis";
@@ -52,8 +56,13 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
                 ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed) : HeightImport.read(file, s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
         HeightMap base = s.erosion() ? times.time(EROSION, () -> TileErosion.erode(made, s.erosionTalus())) : made;
-        // a map at true scale lays its snow over its own height range in metres
-        return of(base, real && s.importScale() ? ElevationImport.rangeOf(s, base) : s, seed, times);
+        if (!(real && s.importScale())) {
+            return of(base, s, seed, times);
+        }
+        // a map at true scale lays its snow and rock by altitude in metres, not over its own range
+        TerrainSettings metres = ElevationImport.trueScale(s);
+        double lowest = -metres.seaFraction() * metres.relief();
+        return of(base, metres, seed, times, lowest, lowest + metres.relief());
     }
 
     /**
@@ -69,10 +78,16 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
         return of(base, s, seed, times);
     }
 
+    /** A normalised map: the snow and the materials read it over its own range. */
     private static TerrainData of(HeightMap base, TerrainSettings s, int seed, StageTimes times) {
+        return of(base, s, seed, times, base.min(), base.max());
+    }
+
+    private static TerrainData of(HeightMap base, TerrainSettings s, int seed, StageTimes times, double lowest,
+                                  double highest) {
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
         SkyVisibility sky = times.time(SKY_VISIBILITY, () -> SkyVisibility.of(pyramid));
-        return new TerrainData(pyramid, snow, sky);
+        return new TerrainData(pyramid, snow, sky, lowest, highest);
     }
 }

@@ -102,7 +102,8 @@ final class TerrainShading {
     static TerrainShading baked(EngineContext context, PatchLayout layout, HeightMap base, int seed, int unitHeights,
                                 StageTimes times) {
         return new TerrainShading(context, layout, seed, unitHeights, times,
-                shading -> shading.new Baked(new FarMaterial(context, base, unitHeights)));
+                shading -> shading.new Baked(new FarMaterial(context, base, layout.lowest(), layout.highest(),
+                        unitHeights)));
     }
 
     /**

@@ -39,7 +39,7 @@ public final class TileGround implements Ground {
         this.data = data;
         HeightMap base = data.pyramid().base();
         tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
-        layout = PatchLayout.tile(base, cells);
+        layout = PatchLayout.tile(base, cells, data.lowest(), data.highest());
         maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
         shading = TerrainShading.baked(context, layout, base, seed, unitHeights, times);
         bind(unitHeights, unitGradients, unitSnow);

@@ -20,8 +20,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                       of synthesis (see {@link HeightImport}), or a real elevation model (a GeoTIFF, or a PNG or
  *                       raw file with a sidecar: {@link org.openworld.engine.elevation.ElevationImport}); empty
  *                       generates one. The spectral settings are then ignored
- * @param snowBase       normalised height (0 lowest, 1 highest sample) where the snow probability starts to rise
- *                       from 0
+ * @param snowBase       normalised height (0 lowest, 1 highest sample; for a map imported at true scale 0 m and
+ *                       {@link org.openworld.engine.elevation.ElevationImport#TRUE_SCALE_RELIEF} 5000 m) where the
+ *                       snow probability starts to rise from 0
  * @param snowFull       normalised height at which snow is certain; p(h) = clamp((h − base)/(full − base), 0, 1)
  * @param snowMorphology radius of the opening and the closing that clean up the random snow map, in snow map pixels
  * @param world          {@link World#UNBOUNDED} (the default): the heights made per level ({@link BandedHeights}) and

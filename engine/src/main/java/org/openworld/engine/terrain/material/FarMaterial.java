@@ -63,10 +63,13 @@ public final class FarMaterial {
      * system's owner ({@code terrain.far-material.colour}, {@code terrain.far-material.slope}, {@code terrain.bake},
      * {@code terrain.bake.quilted}, {@code terrain.bake.stochastic}); nothing is baked until {@link #refresh}.
      *
+     * @param lowest        the height, metres, the materials read as normalised 0 (the map's lowest, or 0 m at true
+     *                      scale)
+     * @param highest       the height read as normalised 1
      * @param unitHeights   texture unit the caller binds the height pyramid to before a refresh; then the gradients
      *                      and the snow map on the next two units
      */
-    public FarMaterial(EngineContext context, HeightMap base, int unitHeights) {
+    public FarMaterial(EngineContext context, HeightMap base, float lowest, float highest, int unitHeights) {
         this.gl = context.gl();
         int size = Math.min(base.size(), MAX_SIZE);
         texelMetres = base.extent() / size;
@@ -77,12 +80,12 @@ public final class FarMaterial {
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             ShaderProgram program = context.own("bake" + tiling.roleSuffix(),
                     context.shaders().program(tiling.defines(), "terrain/bake.vert", "terrain/bake.frag"));
-            bakes.put(tiling, bakeUniforms(program, base, size, unitHeights));
+            bakes.put(tiling, bakeUniforms(program, base, lowest, highest, size, unitHeights));
         }
     }
 
-    private static TerrainMaterials.Uniforms bakeUniforms(ShaderProgram program, HeightMap base, int size,
-                                                          int unitHeights) {
+    private static TerrainMaterials.Uniforms bakeUniforms(ShaderProgram program, HeightMap base, float lowest,
+                                                          float highest, int size, int unitHeights) {
         program.use();
         program.sampler("heights", unitHeights);
         program.sampler("gradients", unitHeights + 1);
@@ -91,7 +94,7 @@ public final class FarMaterial {
         program.float1("spacing").set((float) base.spacing());
         program.int1("periodic").set(base.periodic() ? 1 : 0);
         program.float1("extent").set((float) base.extent());
-        program.vec2("heightRange").set(base.min(), 1f / Math.max(1e-3f, base.max() - base.min()));
+        program.vec2("heightRange").set(lowest, 1f / Math.max(1e-3f, highest - lowest));
         program.int1("bakeLevel").set(Integer.numberOfTrailingZeros(base.size() / size));
         program.vec2("bakeSize").set(size, size);
         return TerrainMaterials.layerUniforms(program);

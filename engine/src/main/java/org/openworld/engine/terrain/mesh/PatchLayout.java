@@ -22,9 +22,10 @@ import org.openworld.engine.terrain.lod.TerrainQuadtree;
 public record PatchLayout(int mapSize, double spacing, int cells, boolean periodic, int clipSize, float lowest,
                    float highest) {
 
-    /** A tile's pyramid, its heights normalised over the map's range. */
-    public static PatchLayout tile(HeightMap base, int cells) {
-        return new PatchLayout(base.size(), base.spacing(), cells, base.periodic(), 0, base.min(), base.max());
+    /** A tile's pyramid, its heights normalised from {@code lowest} to {@code highest} metres. */
+    public static PatchLayout tile(HeightMap base, int cells, double lowest, double highest) {
+        return new PatchLayout(base.size(), base.spacing(), cells, base.periodic(), 0, (float) lowest,
+                (float) highest);
     }
 
     /**
