@@ -92,6 +92,7 @@ class ShadowStatisticsTest {
         assertEquals(0, between.fraction());
         // the tested pixels of even columns of the tested grid at 0.49 (shadowed), the others at 0.5 (lit)
         ShadowStatistics.Acne half = acne(plain(0, (x, y) -> x % 8 == 0 ? 0.49f : 0.5f), HeightField.FLAT);
+        // doubles: shares and norms of exact counts, equal to round-off (1e-12; 1e-6 where float pixels are averaged)
         assertEquals(0.5, half.fraction(), 1e-12);
     }
 
