@@ -33,6 +33,7 @@ class SkyIrradianceTest {
 
     static double grey(SkyIrradiance sh, Vector3d n) {
         Vector3d e = sh.irradiance(new Vector3d(n).normalize(), new Vector3d());
+        // doubles: equal inputs in every channel give equal sums, to round-off
         assertEquals(e.x, e.z, 1e-9, "a grey sky gives grey light");
         return e.y;
     }
@@ -49,6 +50,8 @@ class SkyIrradianceTest {
             return sum;
         });
         for (int i = 0; i < SkyIrradiance.COUNT; i++) {
+            // 1e-3: the coefficients are integrated over the sky view's finite texels (a quadrature), not in closed
+            // form; 1e-5 to 1e-6 where only float rounding is left
             assertEquals(weights[i], sh.coefficient(i, new Vector3d()).y, 1e-3, "coefficient " + i);
         }
     }

@@ -10,6 +10,7 @@ class TimeOfDayTest {
 
     @Test
     void parsesHoursAndMinutes() {
+        // doubles: hours from minutes / 60, exact to round-off (1e-12; 1e-9 after sums of steps)
         assertEquals(6.5, TimeOfDay.parseHours("06:30"), 1e-12);
         assertEquals(19.5, TimeOfDay.parseHours(" 19:30 "), 1e-12);
         assertEquals(0, TimeOfDay.parseHours("0:00"), 1e-12);

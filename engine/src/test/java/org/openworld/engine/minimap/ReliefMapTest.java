@@ -20,6 +20,7 @@ class ReliefMapTest {
         double facing = ReliefMap.hillshade(Math.sqrt(0.5), Math.sqrt(0.5));
         double flat = ReliefMap.hillshade(0, 0);
         double away = ReliefMap.hillshade(-2, -2);
+        // doubles: hillshade and texture coordinates are exact expressions, equal to round-off
         assertEquals(1, facing, 1e-9);
         assertTrue(facing > flat && flat > away, facing + " > " + flat + " > " + away);
         assertEquals(0, away, "a slope turned from the light gets none");
