@@ -13,6 +13,8 @@ import org.junit.jupiter.api.Test;
 
 /** Fly mode: inertia, terminal speed, glide, frame-rate independence. */
 class CameraFlyTest {
+    // Tolerances here: poses in double: set or closed-form values to 1e-9, sums over many steps to 1e-6; the bands on
+    // speeds follow from the exponential damping (see each)
 
     private static final double FLY_SPEED = CameraSettings.DEFAULTS.flySpeed();
 

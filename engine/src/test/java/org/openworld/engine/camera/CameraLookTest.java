@@ -9,6 +9,8 @@ import org.junit.jupiter.api.Test;
 
 /** Mouse and arrow-key look: smoothing, clamping, wrapping. */
 class CameraLookTest {
+    // Tolerances here: angles in double: sums of mouse steps times the sensitivity to 1e-9 to 1e-6; 1e-3° where an
+    // exponential smoothing must have converged
 
     private static final double SENSITIVITY = CameraSettings.DEFAULTS.mouseSensitivity();
 

@@ -8,6 +8,8 @@ import org.openworld.engine.core.HeightField;
 
 /** The paths shipped in assets/paths/ parse from the classpath and do what their headers promise. */
 class CameraPathAssetsTest {
+    // Tolerances here: poses in double: exact keys and sums to 1e-9, sums over many samples to 1e-6; bands on the
+    // paths' heights and speeds are the assets' own design, asserted
 
     /** Half the world's width, metres. */
     private static final double WORLD_HALF_WIDTH = 2048;

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 
 class TimeOfDayTest {
+    // Tolerances here: doubles: hours from minutes and sums of steps, exact to round-off (1e-12, 1e-9 after sums)
 
     @Test
     void parsesHoursAndMinutes() {

@@ -22,6 +22,8 @@ import org.openworld.engine.core.ViewCamera;
  * under test): the slice's corners, the clip cube, the texel grid. Cameras, slices and suns are random but seeded.
  */
 class LightFitTest {
+    // Tolerances here: float sun directions and matrices (24-bit mantissa, 6e-8) make rotations orthonormal to 1e-6 and
+    // rigid to 1e-5; the clip cube's slack is CLIP_SLACK below; radii in double to 1e-6 to 1e-4
 
     /** Deterministic: every run tests the same cameras, slices and suns. */
     private static final long SEED = 2017;

@@ -15,6 +15,8 @@ import org.openworld.engine.core.HeightField;
  * of the ground, so the expected counts follow from the layout, not from the code under test.
  */
 class ShadowStatisticsTest {
+    // Tolerances here: doubles: shares and norms of exact counts, to round-off (1e-12); 1e-6 where float pixels are
+    // averaged
 
     /** Pixels per row and rows: multiples of the acne stride, so every 4th pixel is an exact count. */
     private static final int W = 32;

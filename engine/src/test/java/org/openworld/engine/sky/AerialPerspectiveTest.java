@@ -11,6 +11,8 @@ import org.openworld.engine.sky.AtmosphereSettings.Component;
 import org.openworld.engine.sky.AtmosphereSettings.Scattering;
 
 class AerialPerspectiveTest {
+    // Tolerances here: the table's texels are floats (24-bit mantissa): 1e-6 on values up to 1, 1e-5 on products;
+    // distances in double to 1e-9; 1e-3 where a short view's optical depth is near zero
 
     private static AtmosphereTables multiple;
     private static AtmosphereTables single;

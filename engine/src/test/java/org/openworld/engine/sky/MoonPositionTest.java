@@ -9,6 +9,8 @@ import org.junit.jupiter.api.Test;
 
 /** The moon's place and phase and the stars' sphere (no GL), against facts of the real sky. */
 class MoonPositionTest {
+    // Tolerances here: float directions (24-bit mantissa) through a few rotations: 1e-5 on unit vectors, angles and
+    // determinants; elevations in degrees (asin of a float) to 1e-3; exact doubles (the lit fraction) to 1e-12
 
     static final double LATITUDE = SkySettings.DEFAULTS.latitude();
     static final double DECLINATION = SkySettings.DEFAULTS.declination();

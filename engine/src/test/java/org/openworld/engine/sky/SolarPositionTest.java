@@ -9,6 +9,9 @@ import org.junit.jupiter.api.Test;
 
 /** Solar position (no GL): directions in docs/design.md's axes, X east, Y up, Z south. */
 class SolarPositionTest {
+    // Tolerances here: float directions (24-bit mantissa): 1e-5 on unit vectors; elevations in degrees (asin of a
+    // float) to 1e-3; a search over hours in double to 1e-9. Bands such as x > 0.5 (30° off the meridian) say where the
+    // sun is, with margin
 
     /** The default observer: mid-northern latitude in early summer. */
     static final double LATITUDE = SkySettings.DEFAULTS.latitude();

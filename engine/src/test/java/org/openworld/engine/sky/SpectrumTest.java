@@ -12,6 +12,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 class SpectrumTest {
+    // Tolerances here: doubles to round-off (1e-9, 1e-12); the CIE tables' 7 places to 1e-6
 
     @ParameterizedTest
     @ValueSource(ints = {3, 6, 8, 15, 16})

@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Test;
 
 /** The rock's tileable Voronoi diagram against brute force over every point and its copies in the tiles around. */
 class PeriodicCellsTest {
+    // Tolerances here: doubles: distances in cell units computed two ways agree to round-off; 1e-9 is loose
 
     private static final int N = 256;
     private static final int COUNT = 5;

@@ -12,6 +12,7 @@ import org.openworld.engine.terrain.material.MaterialSettings.SnowMode;
 
 /** The snow rules' normalised heights in metres, over height maps whose range is known. */
 class SnowLinesTest {
+    // Tolerances here: snow lines in metres from normalised heights in double: 1e-3 m is round-off
 
     /** 800 m of relief, 15 % below sea level; snow from 35 % to 60 % of it. */
     static final TerrainSettings S = TestTerrain.settings("terrain.relief=800", "terrain.sea-fraction=0.15",

@@ -18,6 +18,8 @@ import org.openworld.engine.terrain.material.TerrainTextures.Material;
  * them. Each texture is also written to {@code target/test-images/} as 2 × 2 tiles, so a seam would show.
  */
 class TerrainTexturesTest {
+    // Tolerances here: colours are linear albedo shares from 8-bit sRGB texels; the bands are real surfaces' albedos
+    // and visible hue differences, explained beside them
 
     static final int SEED = 7;
     static TerrainTextures textures;
