@@ -76,6 +76,8 @@ class SkyIrradianceTest {
         SkyIrradiance sh = project(d -> Math.max(d.dot(a), 0));
         Vector3d across = new Vector3d(a).cross(0, 0, 1).normalize();
         double peak = 2 * Math.PI / 3;
+        // 1 % of the peak: the cosine kernel leaves little beyond order 2 (its coefficients fall as 1/l², Ramamoorthi
+        // and Hanrahan), the bound the Javadoc states
         assertEquals(peak, grey(sh, a), 0.01 * peak, "facing the lobe");
         assertEquals(2.0 / 3, grey(sh, across), 0.01 * peak, "across it");
         assertEquals(0, grey(sh, new Vector3d(a).negate()), 0.01 * peak, "facing away");
