@@ -43,6 +43,8 @@ class CommandLineTest {
         assertEquals(90, image.height());
         // The default view shows blue sky above and green-grey ground below.
         assertTrue(blueness(image, 0, 20) > 15, "sky at the top should be blue");
+        // blue minus red in 8-bit levels: a clear sky's is tens of levels (over 15), a lit ground's near zero or
+        // negative (under 5)
         assertTrue(blueness(image, 70, 90) < 5, "ground at the bottom should not be blue");
         assertTrue(console.stdout().contains("llvmpipe") || console.stdout().contains("wrote"), console.stdout());
     }
@@ -64,6 +66,7 @@ class CommandLineTest {
                 changed += a.channel(x, y, 0) != b.channel(x, y, 0) ? 1 : 0;
             }
         }
+        // over half of the 80 × 70 pixels under the opaque panel change; text and frame may leave some equal
         assertTrue(changed > 0.5 * 80 * 70, "the panel covers the top left: " + changed);
     }
 
@@ -86,6 +89,7 @@ class CommandLineTest {
                 "0,1500,400,0,-60", "--set", chosen));
         // Looking up sees only sky; looking down sees only ground.
         assertTrue(blueness(Image.read(up), 0, 54) > 15, "looking up should see blue sky");
+        // as above: over 15 for a sky, under 5 for ground
         assertTrue(blueness(Image.read(down), 0, 54) < 5, "looking down should see the ground");
     }
 

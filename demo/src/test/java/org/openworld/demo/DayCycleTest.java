@@ -12,6 +12,7 @@ class DayCycleTest {
     @Test
     void scrubbingWrapsRoundMidnightAndKeepsTheSpeed() {
         TimeOfDay t = day.scrub(new TimeOfDay(23.9, 60), 1);
+        // doubles: hours stepped by exact amounts and wrapped, equal to round-off
         assertEquals(0.15, t.hours(), 1e-9);
         assertEquals(60, t.daySpeed());
         assertEquals(23.9, day.scrub(t, -1).hours(), 1e-9);

@@ -65,6 +65,7 @@ class DiffCommandTest {
 
         double toWhite = DeltaE.ciede2000(Lab.fromSrgb(100, 100, 100), Lab.fromSrgb(255, 255, 255));
         double toBluish = DeltaE.ciede2000(Lab.fromSrgb(100, 100, 100), Lab.fromSrgb(100, 100, 101));
+        // ΔE00 1, the diff command's default threshold: a just-noticeable difference
         assertTrue(toBluish < 1 && toWhite > 1, "one edit below the default threshold, one above");
         String text = console.stdout();
         assertTrue(text.contains(": 8x6, they differ"), text);

@@ -49,6 +49,8 @@ class FigureSevenTest {
             references.add(line.group(1));
             String[] panels = line.group(2).split(", ");
             assertEquals(line.group(1).equals("32") ? 5 : 4, panels.length, line.group());
+            // ΔE00 2: about where a difference between two pictures of smooth sky becomes noticeable (1 is the JND
+            // between flat patches side by side); the coarsest panel must exceed it, the finest stay under
             assertTrue(deltaE(panels[0]) > 2 && deltaE(panels[panels.length - 1]) < 2, line.group());
         }
         assertEquals(List.of("32", "64", "32", "64"), references, "noon's two strips, then sunset's");

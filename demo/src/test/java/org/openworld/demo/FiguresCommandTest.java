@@ -101,6 +101,8 @@ class FiguresCommandTest {
         Image gloss = Image.read(out.resolve("3c.png"));
         ImageComparison comparison = ImageComparison.of(bare, gloss);
         double share = (double) comparison.pixelsAbove(1) / comparison.pixels();
+        // a tenth of the pixels beyond ΔE00 1 (a just-noticeable difference): the gloss shows over the lit ground, not
+        // in a stray pixel
         assertTrue(share > 0.1, "gloss panel against the bare one: " + share);
         Image drawn = Image.read(out.resolve("3c-diff.png"));
         assertEquals(0, meanDifference(comparison.differenceImage(1), drawn), "3c-diff is 3a against 3c");
@@ -124,6 +126,7 @@ class FiguresCommandTest {
         assertEquals(expected, pngsUnder(out));
         assertTrue(Files.mismatch(out.resolve("2/height.png"), out.resolve("2-paper/height.png")) >= 0,
                 "the paper's spectrum makes another height map");
+        // 5 levels of mean difference: plainly another picture, where a preset that changed nothing gives 0
         assertTrue(meanDifference(Image.read(out.resolve("12.png")), Image.read(out.resolve("12-paper.png"))) > 5,
                 "the preset changes the shot");
 
@@ -195,6 +198,8 @@ class FiguresCommandTest {
                 colours.add(image.channel(x, y, 0) << 16 | image.channel(x, y, 1) << 8 | image.channel(x, y, 2));
             }
         }
+        // not blank: a luma span of 40 levels and over 200 distinct colours; a flat fill or a blank gives 1 or a
+        // handful
         assertTrue(max - min > 40, id + ": luma from " + min + " to " + max);
         assertTrue(colours.size() > 200, id + ": only " + colours.size() + " colours");
     }

@@ -83,6 +83,9 @@ class GuiRenderTest {
         assertEquals(W, both.width());
         double panel = changed(both, 20, 40, 150, 200);
         double hud = changed(both, W - 60, 15, W - 15, 40);
+        // shares of pixels changed: the panel is an opaque box over most of its region (over half); the HUD's and the
+        // controls' text changes a smaller share of theirs (glyphs on a band: over 20–30 %); luma 60 of 255 is a drawn
+        // sky, not black
         assertTrue(panel > 0.5, "the panel covers its corner: " + panel);
         assertTrue(hud > 0.2, "the HUD shows at the top right: " + hud);
         assertEquals(0, changed(both, 0, H - 40, 200, H), "the bottom left stays the world's");

@@ -64,6 +64,7 @@ class HeightmapCommandTest {
                 worst = Math.max(worst, Math.abs(a.getSample(x, z, 0) - b.getSample(x, z, 0)));
             }
         }
+        // one 16-bit step: the heights go through float and back, so a sample may round to its neighbouring step
         assertTrue(worst <= 1, "largest difference in 16-bit steps: " + worst);
     }
 
@@ -81,6 +82,7 @@ class HeightmapCommandTest {
             assertTrue(console.stdout().contains(line), "missing '" + line + "' in\n" + console.stdout());
         }
         double theta = Double.parseDouble(console.stdout().replaceAll("(?s).*concavity theta\\s+(-?[0-9.]+).*", "$1"));
+        // the concavity of real channels, 0.3–0.6 (see the Javadoc and DrainageStatsTest)
         assertTrue(theta > 0.3 && theta < 0.6, console.stdout());
         Image picture = Image.read(dir.resolve(DrainageReport.DRAINAGE_PNG));
         assertEquals(512, picture.width());
@@ -173,6 +175,7 @@ class HeightmapCommandTest {
             darkest = Math.min(darkest, relief.luma(i, i));
             brightest = Math.max(brightest, relief.luma(i, i));
         }
+        // 80 levels: a hillshade spans sunlit and shaded slopes, a flat tint a few levels
         assertTrue(brightest - darkest > 80, "luma along the diagonal: " + darkest + " .. " + brightest);
         for (String line : new String[] {"pyramid level 4", "64 km across", "( 50 %)", "(100 %)", "peak heap"}) {
             assertTrue(console.stdout().contains(line), "missing '" + line + "' in\n" + console.stdout());

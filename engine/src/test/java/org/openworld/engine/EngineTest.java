@@ -531,6 +531,7 @@ class EngineTest {
             assertEquals(1, stepsOf(engine, counting, 0.005), "two halves make a step");
             assertEquals(0, stepsOf(engine, counting, 0.0049));
             assertEquals(2, stepsOf(engine, counting, 0.0151), "0.0049 s carried + 0.0151 s = 2 steps");
+            // doubles: twelve sums of 0.01, off by a few ε only
             assertEquals(12 * 0.01, engine.simTime(), 1e-9, "simulation time is whole steps");
         }
     }

@@ -28,6 +28,7 @@ class FixedStepClockTest {
         for (int i = 0; i < 100; i++) {
             clock.stepped(0.01);
         }
+        // doubles: a sum of exact steps, equal to round-off
         assertEquals(1.0, clock.simTime(), 1e-12);
     }
 }

@@ -84,6 +84,8 @@ class SystemsOwnershipTest {
             live = GL.context().objects().live();
         }
         assertEquals(0, GL.context().objects().live(), "left alive: " + GL.context().objects());
+        // a full engine makes dozens of GL objects (95 after SoakTest's first frame): 40 only says the systems made
+        // theirs
         assertTrue(live > 40, "the systems made their objects: " + live);
     }
 

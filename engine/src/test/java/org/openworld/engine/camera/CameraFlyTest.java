@@ -13,6 +13,8 @@ import org.junit.jupiter.api.Test;
 
 /** Fly mode: inertia, terminal speed, glide, frame-rate independence. */
 class CameraFlyTest {
+    // Tolerances here: poses in double: set or closed-form values to 1e-9, sums over many steps to 1e-6; the bands on
+    // speeds follow from the exponential damping (see each)
 
     private static final double FLY_SPEED = CameraSettings.DEFAULTS.flySpeed();
 
@@ -22,6 +24,7 @@ class CameraFlyTest {
         rig.input.keyDown(GLFW_KEY_W);
         rig.run(1.0 / 60);
         double first = rig.speed();
+        // one 1/60 s step of the acceleration reaches a small share of the fly speed: 20 % tells "some" from "all"
         assertTrue(first > 0 && first < 0.2 * FLY_SPEED, "one step gives some speed, not all of it: " + first);
 
         double previous = first;
@@ -34,6 +37,7 @@ class CameraFlyTest {
         assertEquals(FLY_SPEED, rig.speed(), 0.01 * FLY_SPEED, "terminal speed");
         Vector3d direction = new Vector3d(rig.system.controller().velocity()).normalize();
         Vector3d forward = CameraMath.forward(90, 20);
+        // doubles: unit vectors from the same angles, equal to round-off
         assertEquals(1, direction.dot(forward), 1e-9, "moving along the view, " + direction);
         assertTrue(rig.pose().x() > 100 && rig.pose().y() > 100, "flew east and up: " + rig.pose());
     }
@@ -67,6 +71,8 @@ class CameraFlyTest {
         double cruising = rig.speed();
         rig.input.keyUp(GLFW_KEY_W);
         rig.run(1.0 / 60);
+        // one 1/60 s step of exponential damping keeps e^(-damping/60) of the speed, over 0.9; after five seconds e^(-5
+        // damping), under 0.01 m/s; the closed form holds to 1e-6 (double steps)
         assertTrue(rig.speed() > 0.9 * cruising, "inertia: still moving after one step, " + rig.speed());
         double z = rig.pose().z();
         rig.run(1);
@@ -85,6 +91,8 @@ class CameraFlyTest {
         assertTrue(distance > 100, "the flight went somewhere: " + at60);
         double gap = Math.sqrt(Math.pow(at60.x() - at120.x(), 2) + Math.pow(at60.y() - at120.y(), 2)
                 + Math.pow(at60.z() - at120.z(), 2));
+        // the integrator's error is first order in the step: halving it moves a turning flight by a fraction of a
+        // percent of its length; 0.5 % and 0.5° are the bounds chosen for "the same path"
         assertTrue(gap < 0.005 * distance, "positions differ by " + gap + " m over " + distance + " m");
         assertEquals(at60.yaw(), at120.yaw(), 0.5);
     }
@@ -93,6 +101,7 @@ class CameraFlyTest {
     void aStraightFlightIsExactlyFrameRateIndependent() {
         CameraPose at60 = straightFlight(1.0 / 60);
         CameraPose at120 = straightFlight(1.0 / 120);
+        // doubles: a straight flight's closed form, equal to round-off over ~100 m
         assertEquals(at60.z(), at120.z(), 1e-6);
     }
 
@@ -122,6 +131,7 @@ class CameraFlyTest {
         CameraRig rig = new CameraRig().at(0, 20, 0, 0, -60).ground((x, z) -> 5);
         rig.input.keyDown(GLFW_KEY_W);
         rig.run(5);
+        // doubles: positions set exactly, equal to round-off
         assertEquals(5 + CameraController.MIN_CLEARANCE, rig.pose().y(), 1e-9);
         assertTrue(rig.system.controller().velocity().y() >= 0, "no speed into the ground is kept");
     }

@@ -9,6 +9,8 @@ import org.junit.jupiter.api.Test;
 
 /** Mouse and arrow-key look: smoothing, clamping, wrapping. */
 class CameraLookTest {
+    // Tolerances here: angles in double: sums of mouse steps times the sensitivity to 1e-9 to 1e-6; 1e-3° where an
+    // exponential smoothing must have converged
 
     private static final double SENSITIVITY = CameraSettings.DEFAULTS.mouseSensitivity();
 
@@ -21,6 +23,8 @@ class CameraLookTest {
         rig.run(1.0 / 60);
         double aimYaw = 250 * SENSITIVITY;
         double aimPitch = 100 * SENSITIVITY;
+        // one 1/60 s step of the exponential smoothing covers well under half the way; after 30 more steps what is left
+        // of the gap is under 1e-3°
         assertTrue(rig.pose().yaw() > 0 && rig.pose().yaw() < 0.5 * aimYaw, "smoothed, not at once: " + rig.pose());
         double previousGap = aimYaw - rig.pose().yaw();
         for (int i = 0; i < 30; i++) {
@@ -60,6 +64,8 @@ class CameraLookTest {
         rig.input.setLooking(true);
         rig.input.mouseMoved(0, -10_000);   // far up
         rig.run(2);
+        // doubles: sums of whole-degree inputs times the sensitivity, equal to round-off (1e-6 to 1e-9); 1e-3° where a
+        // smoothing must have converged
         assertEquals(89, rig.pose().pitch(), 1e-6);
         rig.input.mouseMoved(0, 30_000);    // far down
         rig.run(2);
@@ -85,6 +91,7 @@ class CameraLookTest {
             rig.run(1.0 / 60);
             double yaw = rig.pose().yaw();
             assertTrue(yaw >= 0 && yaw < 360, "yaw in [0, 360): " + yaw);
+            // the short way from 350° to 10° stays within that 20° arc; 0.001° for round-off at its ends
             assertTrue(yaw >= 349.999 || yaw <= 10.001, "turned the short way: " + yaw);
         }
         assertEquals(10, rig.pose().yaw(), 1e-3);

@@ -52,6 +52,7 @@ class CameraMathTest {
         Vector3d f = CameraMath.forward(pose.yaw(), pose.pitch());
         Matrix4f view = new Matrix4f(ViewCamera.perspective(pose, 1, 0.5f, 100).view());
         Vector3f inView = view.transformDirection(new Vector3f((float) f.x, (float) f.y, (float) f.z));
+        // float matrices (24-bit mantissa): 1e-6 on unit vectors; the angles in double to 1e-9
         assertEquals(0, inView.x, 1e-6);
         assertEquals(0, inView.y, 1e-6);
         assertEquals(-1, inView.z, 1e-6);

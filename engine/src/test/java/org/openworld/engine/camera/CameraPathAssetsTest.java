@@ -8,6 +8,8 @@ import org.openworld.engine.core.HeightField;
 
 /** The paths shipped in assets/paths/ parse from the classpath and do what their headers promise. */
 class CameraPathAssetsTest {
+    // Tolerances here: poses in double: exact keys and sums to 1e-9, sums over many samples to 1e-6; bands on the
+    // paths' heights and speeds are the assets' own design, asserted
 
     /** Half the world's width, metres. */
     private static final double WORLD_HALF_WIDTH = 2048;
@@ -21,6 +23,8 @@ class CameraPathAssetsTest {
         for (double t = 0; t <= valley.duration(); t += 0.1) {
             CameraPose pose = valley.sample(t, hills);
             double above = pose.y() - hills.heightAt(pose.x(), pose.z());
+            // the valley path's keys are 60–200 m above the ground and within 1.5 km of the centre: the path's own
+            // design, asserted
             assertTrue(above >= 60 && above <= 200, "height above ground " + above + " at t=" + t);
             assertTrue(Math.abs(pose.x()) <= 1500 && Math.abs(pose.z()) <= 1500, pose + " at t=" + t);
         }
@@ -35,6 +39,8 @@ class CameraPathAssetsTest {
             CameraPose pose = drift.sample(t, HeightField.FLAT);
             double moved = Math.hypot(Math.hypot(pose.x() - previous.x(), pose.y() - previous.y()),
                     pose.z() - previous.z());
+            // a slow drift for flicker measures: under 10 cm and 0.05° a frame at 60 frames a second (6 m/s, 3°/s);
+            // bounds chosen, not derived
             assertTrue(moved < 0.1, "moved " + moved + " m in one frame at t=" + t);
             assertTrue(Math.abs(pose.yaw() - previous.yaw()) < 0.05, "turned too fast at t=" + t);
             previous = pose;
@@ -50,11 +56,14 @@ class CameraPathAssetsTest {
         CameraPose previous = walk.sample(0, hills);
         for (double t = 0.01; t <= walk.duration(); t += 0.01) {
             CameraPose pose = walk.sample(t, hills);
+            // doubles: the ground height plus the 1.7 m eye height, equal to round-off
             assertEquals(hills.heightAt(pose.x(), pose.z()) + 1.7, pose.y(), 1e-9);
             length += Math.hypot(pose.x() - previous.x(), pose.z() - previous.z());
             previous = pose;
         }
         assertEquals(45, length, 1);
+        // 1.5 m/s, a walking pace; 45 m to a metre and 0.05 m/s: the 0.01 s sampling of a curved path shortens it a
+        // little
         assertEquals(1.5, length / walk.duration(), 0.05);
     }
 
@@ -80,6 +89,7 @@ class CameraPathAssetsTest {
             turned += CameraPathTest.signedTurn(previousBearing, bearing);
             previousBearing = bearing;
         }
+        // doubles: angles summed over the orbit's samples, to round-off (1e-6 to 1e-9)
         assertEquals(360, turned, 1e-6);
     }
 

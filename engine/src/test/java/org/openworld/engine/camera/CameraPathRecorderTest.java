@@ -29,6 +29,7 @@ class CameraPathRecorderTest {
         List<Keyframe> keys = recorder.toPath().keys();
         assertEquals(9, keys.size()); // 0, 0.25, ..., 2.0 s
         for (int i = 0; i < keys.size(); i++) {
+            // doubles: times of exact steps, to round-off
             assertEquals(i * 0.25, keys.get(i).time(), 1e-9);
             assertEquals(i * 15, keys.get(i).x(), 1e-9); // the pose of step 15 i
         }

@@ -73,6 +73,8 @@ class CameraPathTest {
         for (double t = STEP; t <= TURNS.duration(); t += STEP) {
             CameraPose pose = TURNS.sample(t, HeightField.FLAT);
             assertTrue(pose.yaw() >= 0 && pose.yaw() < 360, "yaw " + pose.yaw() + " outside [0, 360)");
+            // under 1° a sample step: the paths turn by a few degrees a second, so a flip (180°) or wrap error (360°)
+            // stands far out
             assertTrue(angleBetween(previous.yaw(), pose.yaw()) < 1, "yaw jumped at t=" + t);
             assertTrue(Math.abs(pose.pitch() - previous.pitch()) < 1, "pitch jumped at t=" + t);
             assertTrue(Math.abs(pose.fov() - previous.fov()) < 1, "fov jumped at t=" + t);
@@ -113,6 +115,7 @@ class CameraPathTest {
                 assertTrue(Double.isFinite(v), "t=" + t + " gave " + pose);
             }
         }
+        // doubles: linear interpolation between keys, to round-off
         assertEquals(5, hover.sample(1.5, HeightField.FLAT).x(), 1e-6);
         assertEquals(25, hover.sample(3.5, HeightField.FLAT).x(), 1e-6);
     }

@@ -41,6 +41,7 @@ class CameraWalkTest {
         rig.run(1.0 / 60);
         assertTrue(rig.pose().y() < 300 && rig.pose().y() > 10 + EYE, "on its way down: " + rig.pose().y());
         rig.run(2);
+        // 1e-3 m: the eased eye height has converged after two seconds; speeds to 1e-3 m/s likewise
         assertEquals(10 + EYE, rig.pose().y(), 1e-3);
     }
 
@@ -55,11 +56,14 @@ class CameraWalkTest {
             double ground = SLOPE.heightAt(p.x(), p.z());
             assertTrue(p.y() >= ground, "never below the ground");
             if (i > 60) {
+                // 5 cm: the eased eye trails a rising slope by its lag at walking pace, a few centimetres, well under a
+                // step
                 assertEquals(ground + EYE, p.y(), 0.05, "eye height at x = " + p.x());
             }
         }
         CameraPose p = rig.pose();
         assertEquals(10 * WALK, p.x(), 0.05 * 10 * WALK, "walked east at walking speed, not along the 30° view");
+        // doubles: no sideways component at all, equal to round-off
         assertEquals(0, p.z(), 1e-9);
         assertEquals(WALK, rig.speed(), 1e-3);
         assertEquals(0, rig.system.controller().velocity().y(), 0);
@@ -80,6 +84,7 @@ class CameraWalkTest {
             biggestRise = Math.max(biggestRise, p.y() - previous);
             previous = p.y();
         }
+        // eased, not a jump: no update rises by more than half the 1 m step
         assertTrue(biggestRise < 0.5, "the 1 m step is eased in, largest rise per update " + biggestRise);
         assertEquals(1 + EYE, rig.pose().y(), 1e-3);
         assertEquals(WALK * CameraSettings.DEFAULTS.runFactor(), rig.speed(), 1e-3, "Shift runs");
@@ -92,6 +97,7 @@ class CameraWalkTest {
         rig.run(2);
         rig.input.keyUp(GLFW_KEY_W);
         rig.run(1.5);
+        // 1 % of walking speed: a stop, left to the exponential's tail after 1.5 s
         assertTrue(rig.speed() < 0.01 * WALK, "stopped: " + rig.speed());
     }
 

@@ -53,6 +53,8 @@ class RepetitionTest {
     void noiseDoesNotRepeat() {
         int[] v = noise(2, W * H);
         double peak = Repetition.peak(grey((x, y) -> v[y * W + x]), 8);
+        // noise: r at one shift has σ ≈ 1/√(overlap) ≈ 0.016 at the smallest overlap (a quarter of 160 × 96); the
+        // largest of ~15 000 shifts is ~4σ ≈ 0.07, so 0.15 is twice the expected maximum
         assertTrue(peak < 0.15, "independent pixels: " + peak);
     }
 
@@ -62,6 +64,8 @@ class RepetitionTest {
         int[] tile = noise(3, 32 * 32);
         int[] v = noise(4, W * H);
         double peak = Repetition.peak(grey((x, y) -> (tile[(y % 32) * 32 + x % 32] + v[y * W + x]) / 2), 8);
+        // 0.5 ± 0.1: the two variances are equal only in expectation (each drawn from 256 levels), plus the ~0.07
+        // maximum of pure noise over all shifts (see noiseDoesNotRepeat)
         assertEquals(0.5, peak, 0.1);
     }
 
@@ -79,6 +83,9 @@ class RepetitionTest {
                 }
             }
         }
+        // a 9-wide box blur: a one-sample shift keeps 8/9 of the box in common (r ≈ 0.89 before the high-pass); 20
+        // samples is more than twice the box width, so only the noise floor (~0.07) is left, 0.25 allows for the blur's
+        // fewer independent samples
         assertTrue(Repetition.peak(blurred, W, H, 1) > 0.8, "a one-sample shift of smooth noise");
         assertTrue(Repetition.peak(blurred, W, H, 20) < 0.25, "twenty samples away");
     }
@@ -100,6 +107,9 @@ class RepetitionTest {
                 luma[y * W + x] = picture.luma(x, y);
             }
         }
+        // the swell's amplitude is 4× the noise's (variance 16:1): a short shift of the raw luma correlates near 16/17
+        // ≈ 0.94, 0.6 only has to show it is large; the high-passed detail is plain noise, held to noiseDoesNotRepeat's
+        // 0.15
         assertTrue(Repetition.peak(luma, W, H, 8) > 0.6, "the swell fools the raw autocorrelation");
         assertTrue(Repetition.peak(picture, 8) < 0.15, "the detail does not repeat: " + Repetition.peak(picture, 8));
     }
@@ -108,6 +118,8 @@ class RepetitionTest {
     void aTileUnderASmoothVariationStillRepeats() {
         int[] tile = noise(7, 24 * 24);
         Image picture = grey((x, y) -> 128 + swell(x, y) + (tile[(y % 24) * 24 + x % 24] - 128) / 5);
+        // the detail is the tile alone (the swell is removed by the box high-pass): about 1 at the 24-pixel period,
+        // less the swell's leak through the 17-pixel box
         assertTrue(Repetition.peak(picture, 8) > 0.9, "a 24-pixel tile: " + Repetition.peak(picture, 8));
     }
 

@@ -48,6 +48,7 @@ class ViewCameraTest {
         assertEquals((float) (FAR.z() - OZ), eye.z);
         // the view from the origin takes the eye from the origin to view space's origin
         Vector4f inView = camera.viewFrom(OX, OZ).transform(new Vector4f(eye, 1));
+        // float (24-bit mantissa): a millimetre over the few kilometres left, as above
         assertEquals(0, new Vector3f(inView.x, inView.y, inView.z).length(), 1e-3);
     }
 }

@@ -56,6 +56,7 @@ class FlowNetworkTest {
         h[2] = 5;
         FlowNetwork net = FlowNetwork.open(h, n, n, 1, 1);
         assertTrue(net.raised(2 * n + 2), "the pit is raised");
+        // the rim is at 10 m: filled strictly above it (by the fill's small epsilon) so water can leave
         assertTrue(net.filled()[2 * n + 2] > 10, "to just above its rim");
         double interior = 0;
         for (int c = 0; c < n * n; c++) {

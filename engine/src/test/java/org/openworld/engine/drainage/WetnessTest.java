@@ -29,9 +29,12 @@ class WetnessTest {
         double floorX = -extent / 2 + 0.5 * spacing;
         double crestX = floorX + n / 2 * spacing;
         double z = -extent / 2 + (n / 2 + 0.5) * spacing;
+        // wetness runs 0 (a crest: area of one cell) to 1 (the tile's largest area); 0.8 and 0.2 keep the floor and
+        // crest well apart from the middle, where a mis-routed tile would land
         assertTrue(wet.wetness(floorX, z) > 0.8, "valley floor " + wet.wetness(floorX, z));
         assertTrue(wet.wetness(crestX, z) < 0.2, "crest " + wet.wetness(crestX, z));
         // every cell of the tile drains to the sea cell: its area is the whole tile
+        // 1e-6 m² on an exact sum of n² cell areas (integers in m², exact in double)
         assertEquals(n * n * spacing * spacing, wet.drainageArea(floorX, -extent / 2 + 0.5 * spacing), 1e-6);
     }
 }

@@ -9,6 +9,8 @@ import org.joml.Vector3fc;
 import org.junit.jupiter.api.Test;
 
 class SkyIrradianceTest {
+    // Tolerances here: 1e-3 where the sky is integrated over its view's finite texels (a quadrature); 1e-5 to 1e-6
+    // where float rounding is all that is left; 1e-9 for doubles
 
     /** Midpoint-rule steps over θ (0..π) for projecting a function of direction. */
     private static final int STEPS = 180;
@@ -33,6 +35,7 @@ class SkyIrradianceTest {
 
     static double grey(SkyIrradiance sh, Vector3d n) {
         Vector3d e = sh.irradiance(new Vector3d(n).normalize(), new Vector3d());
+        // doubles: equal inputs in every channel give equal sums, to round-off
         assertEquals(e.x, e.z, 1e-9, "a grey sky gives grey light");
         return e.y;
     }
@@ -49,6 +52,8 @@ class SkyIrradianceTest {
             return sum;
         });
         for (int i = 0; i < SkyIrradiance.COUNT; i++) {
+            // 1e-3: the coefficients are integrated over the sky view's finite texels (a quadrature), not in closed
+            // form; 1e-5 to 1e-6 where only float rounding is left
             assertEquals(weights[i], sh.coefficient(i, new Vector3d()).y, 1e-3, "coefficient " + i);
         }
     }
@@ -71,6 +76,8 @@ class SkyIrradianceTest {
         SkyIrradiance sh = project(d -> Math.max(d.dot(a), 0));
         Vector3d across = new Vector3d(a).cross(0, 0, 1).normalize();
         double peak = 2 * Math.PI / 3;
+        // 1 % of the peak: the cosine kernel leaves little beyond order 2 (its coefficients fall as 1/l², Ramamoorthi
+        // and Hanrahan), the bound the Javadoc states
         assertEquals(peak, grey(sh, a), 0.01 * peak, "facing the lobe");
         assertEquals(2.0 / 3, grey(sh, across), 0.01 * peak, "across it");
         assertEquals(0, grey(sh, new Vector3d(a).negate()), 0.01 * peak, "facing away");

@@ -7,9 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 
 class TimeOfDayTest {
+    // Tolerances here: doubles: hours from minutes and sums of steps, exact to round-off (1e-12, 1e-9 after sums)
 
     @Test
     void parsesHoursAndMinutes() {
+        // doubles: hours from minutes / 60, exact to round-off (1e-12; 1e-9 after sums of steps)
         assertEquals(6.5, TimeOfDay.parseHours("06:30"), 1e-12);
         assertEquals(19.5, TimeOfDay.parseHours(" 19:30 "), 1e-12);
         assertEquals(0, TimeOfDay.parseHours("0:00"), 1e-12);

@@ -124,6 +124,7 @@ class FrameUniformsTest {
             engine.render(); // frame 1: the one read back
             image = engine.readImage();
             simTime = updates * engine.settings().get(EngineSettings.class).step();
+            // doubles: the same sum read back, equal to round-off
             assertEquals(simTime, engine.simTime(), 1e-12);
         }
 

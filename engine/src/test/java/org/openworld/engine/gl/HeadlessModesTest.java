@@ -68,6 +68,7 @@ class HeadlessModesTest {
         assertTrue(pictures.containsKey(GlContext.Mode.HEADLESS_EGL_DEVICE), "modes that drew: " + pictures.keySet());
         assertTrue(pictures.size() >= 2, "at least two modes to compare: " + pictures.keySet());
         Image first = pictures.get(GlContext.Mode.HEADLESS_EGL_DEVICE);
+        // 20 of 255: any drawn scene is far brighter, an undrawn one black
         assertTrue(first.meanLuma(0, 0, WIDTH, HEIGHT) > 20, "the device mode drew a picture, not black");
         pictures.forEach((mode, picture) -> {
             double mean = ImageComparison.of(first, picture).meanDeltaE();

@@ -9,6 +9,8 @@ import org.openworld.engine.core.HeightField;
 
 /** The minimap's picture without GL: the hillshade, where the world lands on the map, when it is built again. */
 class ReliefMapTest {
+    // Tolerances here: doubles: hillshade and texture coordinates are exact expressions, equal to round-off (1e-9,
+    // 1e-12)
 
     static final double RANGE = 4000;
     /** Rolling ground, 40 m hills 700 m apart: a field whose every texel differs. */
@@ -20,6 +22,7 @@ class ReliefMapTest {
         double facing = ReliefMap.hillshade(Math.sqrt(0.5), Math.sqrt(0.5));
         double flat = ReliefMap.hillshade(0, 0);
         double away = ReliefMap.hillshade(-2, -2);
+        // doubles: hillshade and texture coordinates are exact expressions, equal to round-off
         assertEquals(1, facing, 1e-9);
         assertTrue(facing > flat && flat > away, facing + " > " + flat + " > " + away);
         assertEquals(0, away, "a slope turned from the light gets none");

@@ -22,6 +22,7 @@ class MaterialOriginTest {
         MaterialOrigin.split(83_353.6, -12_345.25, out, 0);
         assertEquals(3353, out[0]);
         assertEquals(7654, out[1], "floor(-12345.25) = -12346, which is 7654 modulo 10000");
+        // float outputs (24-bit mantissa): 1e-6 on values under 1
         assertEquals(0.6, out[2], 1e-6);
         assertEquals(0.75, out[3], 1e-6);
     }
@@ -70,6 +71,8 @@ class MaterialOriginTest {
         // plane xz, fine tile: the texture repeats every unit, so the place in the tile is all that must agree
         float fine = (float) (wx - OX) / (float) scale + origin[2];
         double worldFine = wx / scale;
+        // 1e-4 of a tile: the shader's float fractions of coordinates reduced near the origin (24-bit mantissa over a
+        // few thousand tiles)
         assertEquals(worldFine - Math.floor(worldFine), fine - Math.floor(fine), 1e-4, "fine tile, x");
         // the coarse tile, turned: its u mixes x and z
         float fx = (float) (wx - OX) / (float) scale;
@@ -86,6 +89,8 @@ class MaterialOriginTest {
     private static void assertCell(double world, double cell, double place, String what) {
         double shader = cell + place;
         double difference = RenderOrigin.reduce(world - shader + 0.5, MaterialOrigin.HASH_PERIOD) - 0.5;
+        // 1e-3 of a cell: float (as in the shader) against double; far from the origin, unreduced, it would be whole
+        // cells
         assertTrue(Math.abs(difference) < 1e-3, what + ": the world at " + world + ", the shader at cell " + cell
                 + " + " + place + " (" + difference + " cells apart)");
     }

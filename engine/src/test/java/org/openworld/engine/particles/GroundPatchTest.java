@@ -27,6 +27,7 @@ class GroundPatchTest {
         GroundPatch patch = GroundPatch.sample(bump, 0, 0, 8, 5); // spacing 2, samples at -4 .. 4
         assertEquals(-4, patch.originX(), 0);
         assertEquals(2, patch.spacing(), 0);
+        // float heights (24-bit mantissa): 1e-6 to 1e-5 on values of a few metres
         assertEquals(1 * 1, patch.heightAt(1, 1), 1e-6, "bilinear reproduces x z inside a cell");
         assertEquals(patch.heightAt(4, 4), patch.heightAt(9, 7), 0, "beyond the grid: the edge sample");
     }

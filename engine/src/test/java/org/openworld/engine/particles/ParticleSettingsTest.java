@@ -14,6 +14,7 @@ class ParticleSettingsTest {
     @Test
     void gravityIsWhatDragBalancesAtTheFallSpeed() {
         ParticleSettings s = new ParticleSettings(10, 1.4, 3, 0.2, 0.02, 40, 0.3);
+        // doubles: quotients of the settings, equal to round-off
         assertEquals(1.4, SnowMotion.terminalVelocity(s.gravity(), s.drag()), 1e-12);
         assertEquals(0.2, s.brownian() / Math.sqrt(2 * s.drag()), 1e-12, "the small-step spread is the turbulence");
     }

@@ -64,6 +64,7 @@ class ParticleShadowTest {
     void flakesInTheWallsShadowLoseTheSun() {
         double sunlit = brightestFlake(new CameraPose(60, 0, 0, 90, 0, 60));    // east of the wall, looking east
         double shaded = brightestFlake(new CameraPose(-60, 0, 0, 270, 0, 60)); // in its shadow, looking west
+        // 40 and 30 levels of luma, as in ParticleSystemTest: the sun's share lost in shade, the sky's kept
         assertTrue(shaded < sunlit - 40, "shaded " + shaded + " against sunlit " + sunlit);
         assertTrue(shaded > 30, "the sky still lights them: " + shaded);
     }

@@ -75,6 +75,7 @@ class ParticleSystemTest {
                     wrapped += cpu[i] > before[i] + 5 ? 1 : 0;
                 }
             }
+            // over 100 of each: both rare paths (landing, wrapping) are compared many times, not once or twice
             assertTrue(landed > 100 && wrapped > 100, "the run must exercise both: " + landed + " landed, "
                     + wrapped + " wrapped");
             float[] gpu = snow.readState();
@@ -89,6 +90,8 @@ class ParticleSystemTest {
                 }
             }
             assertTrue(apart <= cpu.length / 1000, apart + " of " + cpu.length + " values differ");
+            // GPU and CPU both step in float (24-bit mantissa); positions of tens of metres round at ~4e-6 m a step, so
+            // 1e-3 m holds many steps' drift apart
             assertTrue(worst < 1e-3, "largest difference " + worst);
         }
     }
@@ -107,6 +110,8 @@ class ParticleSystemTest {
             CameraPose eye = pose(engine);
             float[] state = snow.readState();
             for (int i = 0; i < state.length; i += SnowMotion.FLOATS) {
+                // half the 30 m cube, plus 1 mm for float positions (24-bit mantissa, ~2e-6 m at tens of metres); the
+                // ground by 1 cm likewise
                 assertTrue(Math.abs(state[i] - eye.x()) <= 15.001 && Math.abs(state[i + 1] - eye.y()) <= 15.001
                         && Math.abs(state[i + 2] - eye.z()) <= 15.001, "flake " + i / SnowMotion.FLOATS
                         + " left the cube");
@@ -126,6 +131,7 @@ class ParticleSystemTest {
             assertEquals(1, snow.builds(), "the buffers are kept");
             float[] state = snow.readState();
             for (int i = 0; i < state.length; i += SnowMotion.FLOATS) {
+                // the cube's half-side (15 m, then 5 m after the resize): every flake respawned inside it
                 assertTrue(Math.abs(state[i] - 2000) <= 15 && Math.abs(state[i + 1] - 620) <= 15,
                         "around the new eye");
                 assertTrue(state[i + 1] >= SLOPE.heightAt(state[i], state[i + 2]) - 0.01, "in its air");
@@ -188,6 +194,8 @@ class ParticleSystemTest {
     void snowAddsSmallRoundBrightSpotsWithSoftRimsFainterWithDistance() {
         Image[] images = withAndWithout(Sun.NOON);
         List<Spot> spots = Spot.find(images[0], images[1]);
+        // spot counts chosen to have a few of each kind to judge (10 spots, 3 near and 3 far); a flake covers under 1 %
+        // of the picture
         assertTrue(spots.size() >= 10, spots.size() + " spots");
         List<Spot> near = new ArrayList<>();
         List<Spot> far = new ArrayList<>();
@@ -201,6 +209,8 @@ class ParticleSystemTest {
         }
         assertTrue(near.size() >= 3 && far.size() >= 3, near.size() + " near flakes, " + far.size() + " far");
         for (Spot spot : near) {
+            // luma 150 of 255: a sunlit white flake is near white; a rim under 60 % of the peak is a visible falloff;
+            // 25 % on the aspect covers odd pixel counts of a small disc (7 px: 7/6 = 1.17)
             assertTrue(spot.peak() > 150, "bright: " + spot);
             // a disc fills pi/4 = 0.79 of its bounding square, a square billboard all of it
             assertEquals(Math.PI / 4, spot.fill(), 0.12, "round: " + spot);
@@ -210,6 +220,8 @@ class ParticleSystemTest {
         // under a pixel's size a flake stays a pixel big and gives the light it would cover: it fades
         double nearPeak = near.stream().mapToDouble(Spot::peak).average().orElseThrow();
         double farPeak = far.stream().mapToDouble(Spot::peak).average().orElseThrow();
+        // a flake under a pixel covers a share of it: far ones must be plainly fainter, 30 % or more; the same 150
+        // bounds the brightest pixel-sized flake
         assertTrue(farPeak < 0.7 * nearPeak, "far flakes fainter: " + farPeak + " against " + nearPeak);
     }
 
@@ -232,6 +244,7 @@ class ParticleSystemTest {
         double sunlit = Spot.find(lit[0], lit[1]).stream().mapToDouble(Spot::peak).max().orElseThrow();
         Image[] shaded = withAndWithout(skyOnly);
         double bySky = Spot.find(shaded[0], shaded[1]).stream().mapToDouble(Spot::peak).max().orElseThrow();
+        // 30 levels: clearly above the dark background; the sun adds 40 more, the share of direct light at noon
         assertTrue(bySky > 30, "the sky alone lights them: " + bySky);
         assertTrue(sunlit > bySky + 40, "the sun adds its share: " + sunlit + " against " + bySky);
     }

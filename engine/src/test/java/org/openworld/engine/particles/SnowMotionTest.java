@@ -12,6 +12,8 @@ import org.openworld.engine.core.HeightField;
 
 /** The update rule against its analysis: terminal velocity, the wind, the Brownian spread, the cube and the ground. */
 class SnowMotionTest {
+    // Tolerances here: float state (24-bit mantissa, ~6e-8 relative) on positions of tens of metres rounds at ~4e-6 m a
+    // step, so 1e-4 to 1e-3 m; velocities of a few m/s to 1e-6; the cube's half-side (20 m) bounds a flake exactly
 
     static final float DT = 1f / 60;
     /** Ground far below the cube, so nothing lands. */

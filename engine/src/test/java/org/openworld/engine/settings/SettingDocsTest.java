@@ -86,6 +86,7 @@ class SettingDocsTest {
     @Test
     void theMeasureTellsAShortenedLabelFromAnotherSetting() {
         assertEquals(1.0, shared("fly speed factor while Shift is held", "factor on the fly speed while Shift is held"));
+        // under half the words shared: two different settings, where a shortened label shares all of them (1.0)
         assertTrue(shared("walking speed", "eye above the ground in walk mode") < 0.5);
     }
 

@@ -34,6 +34,7 @@ class CascadeSplitsTest {
         for (int i = 1; i < d.length; i++) {
             assertEquals(ratio, d[i] / d[i - 1], ratio * RELATIVE, "ratio " + i);
         }
+        // 0.5 · 2400^(1/4) = 3.4996 m: 0.01 m covers writing it as 3.5
         assertEquals(3.5, d[1], 0.01, "the first log slice is thin: 0.5 m · 2400^(1/4)");
     }
 

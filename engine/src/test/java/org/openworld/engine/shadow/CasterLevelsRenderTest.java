@@ -110,6 +110,7 @@ class CasterLevelsRenderTest {
             String series = "sun " + elevations[i] + "°: full resolution " + reference[i] + ", screen error "
                     + screenError[i];
             System.out.println("caster levels, " + series);
+            // 0.02 % of the picture: about 26 pixels of 480 × 270, a shadow that is there at all
             assertTrue(reference[i] > 0.0002, "the mountains cast shadows at all: " + series);
             assertEquals(reference[i], screenError[i], TOLERANCE, "shadowed fraction of the picture, " + series);
         }
@@ -130,6 +131,7 @@ class CasterLevelsRenderTest {
                 ground -> new CameraPose(-9000, ground.heightAt(-9000, 0) + 300, 0, 90, -10, 60), 54, 10);
         String series = "unbounded world: sun 54° " + fractions[0] + ", 10° " + fractions[1];
         System.out.println("caster levels, " + series);
+        // measured 17.0 % and 0.4 % (above): 5 % and a 3-point gap hold the long low-sun shadows with a wide margin
         assertTrue(fractions[1] > 0.05 && fractions[1] > fractions[0] + 0.03, series);
     }
 }

@@ -22,6 +22,8 @@ import org.openworld.engine.core.ViewCamera;
  * under test): the slice's corners, the clip cube, the texel grid. Cameras, slices and suns are random but seeded.
  */
 class LightFitTest {
+    // Tolerances here: float sun directions and matrices (24-bit mantissa, 6e-8) make rotations orthonormal to 1e-6 and
+    // rigid to 1e-5; the clip cube's slack is CLIP_SLACK below; radii in double to 1e-6 to 1e-4
 
     /** Deterministic: every run tests the same cameras, slices and suns. */
     private static final long SEED = 2017;
@@ -119,6 +121,8 @@ class LightFitTest {
         }
         // The covering box is tight: some corner or caster lies on its boundary.
         assertEquals(1, worstCovering, CLIP_SLACK);
+        // the stable box is a sphere's bounding box: some corner must reach 90 % of its half-width, or the box is
+        // needlessly loose (the sphere costs at most √3 over a tight cube)
         assertTrue(worstStable > 0.9, "the stable box is not much larger than needed: " + worstStable);
     }
 
@@ -168,6 +172,7 @@ class LightFitTest {
     void sliceRadiusOfHandWorkedFrusta() {
         // 90° square frustum: P00 = P11 = 1, k = sqrt(2); z* = 3·(1 + 3)/2 = 6 > 3, so the far square sets it: 3·sqrt(2).
         Matrix4f square90 = new Matrix4f().perspective((float) Math.toRadians(90), 1, 0.1f, 100);
+        // doubles: 1e-6 and 1e-4 on radii of a few to tens of metres, far above round-off (the 1e-4 on √1275 ≈ 35.7)
         assertEquals(3 * Math.sqrt(2), LightFit.sliceRadius(square90, 1, 3), 1e-6);
         // P00 = P11 = 2 (tan 26.57° = 0.5), k² = 0.5; 10..50 m: z* = 1.5·60/2 = 45 < 50, r = sqrt(35² + 0.5·10²).
         Matrix4f narrow = new Matrix4f().perspective((float) (2 * Math.atan(0.5)), 1, 0.1f, 100);
@@ -205,6 +210,7 @@ class LightFitTest {
                 coveringChanged++;
             }
         }
+        // a random turn changes the tight box's size almost always: 90 of 100 allows for turns that happen to keep it
         assertTrue(coveringChanged > 90, "the covering box changes size as the camera turns, in "
                 + coveringChanged + " of 100 trials");
     }
@@ -293,6 +299,8 @@ class LightFitTest {
             Matrix3d product = new Matrix3d(m).mul(new Matrix3d(m).transpose());
             for (int col = 0; col < 3; col++) {
                 for (int row = 0; row < 3; row++) {
+                    // float vectors in, double matrices out: 1e-6 covers the float sun direction's rounding (24-bit
+                    // mantissa, 6e-8)
                     assertEquals(col == row ? 1 : 0, product.get(col, row), 1e-6, "R·Rᵀ for " + toSun);
                 }
             }
@@ -339,6 +347,7 @@ class LightFitTest {
                 assertEquals(width, box.texelSize() * (double) resolution, tolerance, "trial " + trial);
                 assertEquals(near.distance(far), box.depthRange(), tolerance, "trial " + trial);
                 Vector3d sunward = new Vector3d(near).sub(far).normalize();
+                // float inputs (24-bit mantissa): 1e-5 on unit-length quantities
                 assertEquals(1, sunward.dot(toSun.x, toSun.y, toSun.z), 1e-5, "near face towards the sun");
                 Vector3f eye = box.sunwardCentre();
                 assertTrue(near.distance(eye.x, eye.y, eye.z) <= tolerance, "sunward centre " + eye + " vs " + near);

@@ -152,6 +152,7 @@ class LightInShadowTest {
             Vector3d sun = light.sun().mul(n.dot(toSun.x, toSun.y, toSun.z));
             // the terrain that hides the sky: the open ground's light with half the sun's (half of it faces the sun)
             Vector3d hidden = light.sun().mul(toSun.y / 2).add(light.ambient()).mul(albedo);
+            // the scene's set-up: the sun more than 17° east of the meridian and within 37° of the slope's normal
             assertTrue(toSun.x > 0.3 && n.dot(toSun.x, toSun.y, toSun.z) > 0.8, "a morning sun in the east, on the slope");
             return new Light(inShadow, sun, hidden, toSun);
         }
@@ -221,7 +222,11 @@ class LightInShadowTest {
         String numbers = "shadow / sunlit over " + pixels.size() + " pixels: measured " + measured + ", predicted "
                 + predicted + " (scene luminance); darkest pixel " + darkest + " of its prediction, "
                 + darkestLuma + " of the sunlit pixel's display luma";
+        // 20 %: the prediction inverts the tone curve and sRGB from 8-bit pixels and takes the sky's light from the
+        // shared tables, not the shader's per-pixel sum; the band is chosen, not derived from measured noise
         assertEquals(predicted, measured, 0.2 * predicted, numbers);
+        // a pixel at 80 % of its prediction is the worst the 20 % mean band above allows; darker is a hole (a shadow-
+        // map or occlusion error), not the model's spread
         assertTrue(darkest > 0.8, "no dark holes: " + numbers);
     }
 
@@ -252,6 +257,7 @@ class LightInShadowTest {
         // the wall and the slope hide a third of the sky, and the terrain's light differs enough from the sky's
         // that taking it in shows (here it is brighter: the sky it hides is the slope's low eastern sky)
         assertTrue(visible < 0.8, "the wall hides a good share of the sky: " + numbers);
+        // the change must stand three times clear of the 0.01 agreement asserted next
         assertTrue(Math.abs(predicted - 1) > 0.03, "the occlusion changes the light: " + numbers);
         assertEquals(predicted, measured, 0.01, numbers);
     }

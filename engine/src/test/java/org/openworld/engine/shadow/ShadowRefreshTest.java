@@ -211,9 +211,14 @@ class ShadowRefreshTest {
     void staggeredMapsFlickerNoMoreThanMapsRedrawnEveryFrame() {
         double[] always = flickerAlongAPath("ALWAYS");
         double[] staggered = flickerAlongAPath("STAGGERED");
+        // doubles: a mean of whole counts, exact to round-off
         assertEquals(3, always[1], 1e-9, "ALWAYS redraws every map every frame");
+        // 3 maps: the nearest every frame, the others every 2nd and 4th (1 + 1/2 + 1/4 = 1.75 a frame); 2.5 sits
+        // between that and ALWAYS's 3
         assertTrue(staggered[1] < 2.5, "staggered: " + staggered[1] + " maps redrawn a frame");
         assertTrue(always[0] > 0, "the path moves some shadow between cascades");
+        // 20 %: a redraw skipped moves an edge by at most a frame's worth of its shift, a small share of the flicker;
+        // the band tells "no more" from "a lot more", not measured noise
         assertTrue(staggered[0] <= 1.2 * always[0], "flicker " + staggered[0] + " staggered, " + always[0]
                 + " redrawn every frame");
     }

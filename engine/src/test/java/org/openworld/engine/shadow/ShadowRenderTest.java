@@ -125,10 +125,14 @@ class ShadowRenderTest {
         double shadowed = groundLuma(image, -130, -40);
         double litWest = groundLuma(image, -240, -190);
         double litEast = groundLuma(image, 50, 120); // clear of the wall's top, which leans out of the picture
+        // in shadow the ground keeps the sky's light only (10–20 % of the sun's at noon, see SkyLightTest): under 60 %
+        // of the lit luma leaves room for the tone curve; the two lit sides agree within 15 % (their slopes differ a
+        // little)
         assertTrue(shadowed < 0.6 * litWest && shadowed < 0.6 * litEast, "in the wall's shadow " + shadowed
                 + ", lit west of it " + litWest + ", east of it " + litEast);
         assertEquals(litWest, litEast, 0.15 * litEast, "lit ground on both sides alike");
         Image none = unshadowed();
+        // the same 15 % as the lit sides above: the two patches' slopes differ a little
         assertEquals(groundLuma(none, -130, -40), groundLuma(none, -240, -190), 0.15 * litWest,
                 "without the shadow system the same ground is lit alike");
     }
@@ -149,6 +153,8 @@ class ShadowRenderTest {
         // the wall stands 80 m out of the water: its shadow on the surface reaches 114 m west, to x = -130 m
         double shadowed = groundLuma(image, -110, -40);
         double lit = groundLuma(image, -240, -190);
+        // water shows the sky's reflection in shadow and in sun alike, so the shadow darkens it less than the ground:
+        // 20 % darker is still a plain shadow
         assertTrue(shadowed < 0.8 * lit, "water in the wall's shadow " + shadowed + ", in the sun " + lit);
     }
 
@@ -173,6 +179,8 @@ class ShadowRenderTest {
     void theShadowEdgeWidensWithTheFilterKernel() {
         int sharp = edgeWidth(render("shadow.method=PAPER", "shadow.margin=0.01", "shadow.kernel=1"));
         int soft = edgeWidth(render("shadow.method=PAPER", "shadow.margin=0.01", "shadow.kernel=7"));
+        // a 7×7 filter spreads the edge over 6 more map texels than 1×1; on screen that is several pixels: at least 4
+        // more, and twice as wide
         assertTrue(soft >= sharp + 4 && soft >= 2 * sharp, "edge " + sharp + " px at 1×1, " + soft + " px at 7×7");
     }
 
@@ -207,6 +215,8 @@ class ShadowRenderTest {
                     "shadow.depth=" + depth, "shadow.margin=" + margins[i]), reference);
         }
         String series = java.util.Arrays.toString(acne);
+        // without a margin the ground compares its depth against itself and rounds either way: acne is widespread
+        // (over 20 %); with 0.01 or more it is a few pixels (under 1 %), an order of magnitude apart
         assertTrue(acne[0] > 0.2, "no margin: the ground shadows itself " + series);
         assertTrue(acne[0] > acne[1] && acne[1] > acne[2], "acne falls with the margin " + series);
         assertTrue(acne[2] < 0.01 && acne[3] < 0.01, "0.01 and above: no acne " + series);
@@ -239,6 +249,7 @@ class ShadowRenderTest {
                 }
             }
         }
+        // enough depths that a 0.1 % share (see below) is one whole pixel
         assertTrue(near > 1000, "only " + near + " depths below 1/4 to look at");
         return (double) on / near;
     }
@@ -260,6 +271,8 @@ class ShadowRenderTest {
             SunShadow fixed = engine.world().resource(SunShadow.class);
             assertArrayEquals(new int[] {GL_DEPTH_COMPONENT24, 24}, formatOf(fixed), "the paper's 24 bits");
             double fixedSteps = onTwentyFourBitSteps(fixed.map().read());
+            // an on-step test passes a random depth with probability 1/4 (±1/8 of a step): a float map's share is near
+            // 0.25, under 0.5; a 24-bit map's is 1, less a rounding or two
             assertTrue(fixedSteps > 0.999 && floatSteps < 0.5, "depths on 24-bit steps: " + fixedSteps
                     + " of the 24-bit map's, " + floatSteps + " of the float map's");
         }
@@ -334,6 +347,8 @@ class ShadowRenderTest {
     void aSubTexelSidewaysMoveLeavesSnappedCascadesUnchangedButMovesThePapersMap() {
         double snapped = changeUnderSmallMove("shadow.cascades=2", "shadow.resolution=256");
         double paper = changeUnderSmallMove("shadow.method=PAPER", "shadow.resolution=256");
+        // snapping makes a sub-texel move change nothing (0, less a stray texel's rounding: 0.1 %); the paper's refit
+        // moves every edge by a third of a texel, which changes ≥ 5 % of the texels
         assertTrue(snapped < 0.001, "snapped cascades changed at " + snapped + " of their texels");
         assertTrue(paper > 0.05, "the paper's map, refitted, changed at only " + paper + " of its texels");
     }
@@ -379,6 +394,7 @@ class ShadowRenderTest {
         Image off = render(settings(world), overTheGround.andThen(engine -> engine.setEnabled("shadow", false)));
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
+                // the same pixels must come out: luma of equal bytes, equal to round-off
                 assertEquals(off.luma(x, y), night.luma(x, y), 1e-9, "no map, no shadow: (" + x + ", " + y + ")");
             }
         }

@@ -15,6 +15,8 @@ import org.openworld.engine.core.HeightField;
  * of the ground, so the expected counts follow from the layout, not from the code under test.
  */
 class ShadowStatisticsTest {
+    // Tolerances here: doubles: shares and norms of exact counts, to round-off (1e-12); 1e-6 where float pixels are
+    // averaged
 
     /** Pixels per row and rows: multiples of the acne stride, so every 4th pixel is an exact count. */
     private static final int W = 32;
@@ -92,6 +94,7 @@ class ShadowStatisticsTest {
         assertEquals(0, between.fraction());
         // the tested pixels of even columns of the tested grid at 0.49 (shadowed), the others at 0.5 (lit)
         ShadowStatistics.Acne half = acne(plain(0, (x, y) -> x % 8 == 0 ? 0.49f : 0.5f), HeightField.FLAT);
+        // doubles: shares and norms of exact counts, equal to round-off (1e-12; 1e-6 where float pixels are averaged)
         assertEquals(0.5, half.fraction(), 1e-12);
     }
 

@@ -25,6 +25,8 @@ class AdaptationTest {
         for (double e : new double[] {1, 0.15, 0.008, 1.001 * MEET}) {
             assertEquals(1 / Math.sqrt(e), Adaptation.exposure(e, 0), 1e-12 / Math.sqrt(e), "E = " + e);
         }
+        // 0.008: the sun on the horizon (above) must still be day; 1e-3: the floor must take over within the civil
+        // twilight (3e-4 at -4.6°)
         assertTrue(MEET < 0.008 && MEET > 1e-3, "the floor takes over after sunset: " + MEET);
     }
 
@@ -33,11 +35,13 @@ class AdaptationTest {
         // the light of the night falls 10 decades from sunset to a moonless night (the sky tables: 3e-4 at -4.6
         // degrees, 5e-7 at -10; the airglow 6e-9): a white surface is shown dimmer by 10^-k a decade, no faster
         for (double e = 0.999 * MEET; e > 1e-11; e /= 10) {
+            // doubles: ratios of powers, exact to ~1e-15; 1e-9 and 1e-12 are loose round-off bands
             assertEquals(Math.pow(10, -Adaptation.NIGHT_SLOPE), shown(e / 10) / shown(e), 1e-9, "E = " + e);
         }
         // a ground of albedo 0.2 under a moonless sky is shown at 0.2 B; the tone curve's toe maps that to 0.21 of
         // it, and one 8-bit level of sRGB is 1/255/12.92 = 3e-4 of linear light: the ground must stay above a few
         double ground = 0.2 * shown(NightLight.SKY) * 0.21;
+        // three 8-bit levels: the darkest a surface may be and still read as ground, not black
         assertTrue(ground > 3 * 3.04e-4, "moonless ground, linear display light " + ground);
         // and never brighter than the day's picture of the same light would be at dusk
         assertTrue(shown(MEET) > shown(1e-9), "the night stays darker than dusk");
@@ -57,6 +61,7 @@ class AdaptationTest {
     void compensationCountsStops() {
         assertEquals(2 * Adaptation.exposure(1e-6, 0), Adaptation.exposure(1e-6, 1), 1e-9);
         Exposure fixed = SkySystem.exposure(new SkySettings(46, 10, 2, false, 3), new Vector3d(1e-7));
+        // float scale (24-bit mantissa): 1e-6 relative
         assertEquals(4, fixed.scale(), 1e-6, "auto-exposure off: noon's, times two stops");
         assertEquals(0, fixed.scotopic(), "and no night vision");
     }

@@ -11,6 +11,8 @@ import org.openworld.engine.sky.AtmosphereSettings.Component;
 import org.openworld.engine.sky.AtmosphereSettings.Scattering;
 
 class AerialPerspectiveTest {
+    // Tolerances here: the table's texels are floats (24-bit mantissa): 1e-6 on values up to 1, 1e-5 on products;
+    // distances in double to 1e-9; 1e-3 where a short view's optical depth is near zero
 
     private static AtmosphereTables multiple;
     private static AtmosphereTables single;
@@ -40,6 +42,8 @@ class AerialPerspectiveTest {
             }
             // A level view 64 km through the lowest air: clearly hazy.
             Vector4d far = ap.sample(Math.PI / 2, 0.001, AerialPerspective.MAX_DISTANCE, new Vector4d());
+            // 64 km of sea-level air: Rayleigh optical depth at 550 nm ≈ 0.1 per 8 km scale height × 8 ≈ 0.8, T ≈
+            // e^-0.8 ≈ 0.45 before the haze, so T < 0.6; 0.05 catches a missing inscatter
             assertTrue(far.w < 0.6 && far.y > 0.05, t.settings().scattering() + ": " + far);
         }
     }
@@ -57,6 +61,7 @@ class AerialPerspectiveTest {
 
     @Test
     void slicesEndOnASquareLaw() {
+        // doubles: 1e-9 m on distances of at most 64 km, far above rounding (ε 2.2e-16 × 6.4e4 ≈ 1e-11)
         assertEquals(AerialPerspective.MAX_DISTANCE, AerialPerspective.sliceEnd(AerialPerspective.DEPTH - 1), 1e-9);
         assertEquals(AerialPerspective.MAX_DISTANCE / 4, AerialPerspective.sliceEnd(AerialPerspective.DEPTH / 2 - 1),
                 1e-9);
@@ -78,6 +83,7 @@ class AerialPerspectiveTest {
                 double transmittance = Math.exp(-AerialPerspective.sliceEnd(z) / fogDistance);
                 for (int y = 0; y < AerialPerspective.HEIGHT; y += 7) {
                     int i = index(x, y, z);
+                    // the texels are floats (24-bit mantissa): 1e-6 on values ≤ 1, 1e-5 on the inscatter's products
                     assertEquals(transmittance, rgba[i + 3], 1e-6, "e^(-d/D) at " + x + "," + y + "," + z);
                     assertEquals(horizon.x * (1 - transmittance), rgba[i], 1e-5, "red at " + x + "," + y + "," + z);
                     assertEquals(horizon.y * (1 - transmittance), rgba[i + 1], 1e-5);
@@ -88,6 +94,7 @@ class AerialPerspectiveTest {
         // Towards the low sun the fog takes the redder horizon there, not one colour all round.
         int toSun = index(0, 0, AerialPerspective.DEPTH - 1);
         int away = index(AerialPerspective.WIDTH - 1, 0, AerialPerspective.DEPTH - 1);
+        // a low sun's horizon is orange towards it and blue-grey opposite: red/blue differs by far more than 1.5×
         assertTrue(rgba[toSun] / rgba[toSun + 2] > 1.5 * rgba[away] / rgba[away + 2], "fog redder towards the sun");
     }
 

@@ -163,6 +163,10 @@ class SkyPanoramaTest {
             // nearer the horizon the direct evaluation itself aliases (the field has no mip levels), differently
             double[] upper = difference(panorama, reference, 0, HEIGHT / 2);
             double[] whole = difference(panorama, reference, 0, HEIGHT);
+            // the panorama is a resampling of the direct evaluation: the upper half agrees within one 8-bit level on
+            // average and 2.5 % of channels beyond 12 levels (~5 % of the range, a plainly visible step); the whole
+            // band allows 2.5 levels and 6.5 % for the direct evaluation's own aliasing near the horizon (see above).
+            // Bands set above the measured differences, not derived
             assertTrue(upper[0] < 1.0 && upper[1] < 0.025, "40°-70° up: mean difference " + upper[0]
                     + " levels of 255, " + upper[1] * 100 + " % of channels more than 12 levels apart");
             assertTrue(whole[0] < 2.5 && whole[1] < 0.065, "10°-70° up: mean difference " + whole[0]

@@ -27,6 +27,7 @@ class SkyTimingTest {
             }
             System.out.printf("sky, %d wavelengths, %d cores: tables %.0f ms, sky view %.1f ms, aerial perspective"
                     + " %.1f ms%n", wavelengths, Runtime.getRuntime().availableProcessors(), tables, view, aerial);
+            // loose ceilings (ms), two orders above the printed times: only a runaway fails, not a loaded machine
             assertTrue(view < 1000 && aerial < 1000 && tables < 10_000, "far too slow to follow the sun");
         }
     }

@@ -9,6 +9,9 @@ import org.junit.jupiter.api.Test;
 
 /** Solar position (no GL): directions in docs/design.md's axes, X east, Y up, Z south. */
 class SolarPositionTest {
+    // Tolerances here: float directions (24-bit mantissa): 1e-5 on unit vectors; elevations in degrees (asin of a
+    // float) to 1e-3; a search over hours in double to 1e-9. Bands such as x > 0.5 (30° off the meridian) say where the
+    // sun is, with margin
 
     /** The default observer: mid-northern latitude in early summer. */
     static final double LATITUDE = SkySettings.DEFAULTS.latitude();
@@ -25,6 +28,7 @@ class SolarPositionTest {
     @Test
     void directionIsAUnitVector() {
         for (double h = 0; h < 24; h += 1.5) {
+            // float vectors (24-bit mantissa): lengths and components to 1e-5, elevations (asin, in degrees) to 1e-3
             assertEquals(1, sunAt(h).length(), 1e-5, "at " + h + " h");
         }
     }
@@ -35,6 +39,7 @@ class SolarPositionTest {
         Vector3f noon = sunAt(12);
         Vector3f evening = sunAt(16);
 
+        // x > 0.5: more than 30° towards the east from the meridian, true for any sun 3 h or more from noon
         assertTrue(morning.x > 0.5 && morning.y > 0, "morning sun east and up: " + morning);
         assertTrue(noon.z > 0 && Math.abs(noon.x) < 1e-5, "noon sun due south: " + noon);
         assertTrue(evening.x < -0.5 && evening.y > 0, "evening sun west and up: " + evening);

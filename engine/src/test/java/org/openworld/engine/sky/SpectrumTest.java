@@ -12,6 +12,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 class SpectrumTest {
+    // Tolerances here: doubles to round-off (1e-9, 1e-12); the CIE tables' 7 places to 1e-6
 
     @ParameterizedTest
     @ValueSource(ints = {3, 6, 8, 15, 16})
@@ -20,6 +21,8 @@ class SpectrumTest {
         double[] flat = new double[count];
         Arrays.fill(flat, 0.37);
         Vector3d rgb = spectrum.toRgb(flat, new Vector3d());
+        // doubles: a flat spectrum through the normalised matching functions gives the same value to round-off (1e-9,
+        // 1e-12)
         assertEquals(0.37, rgb.x, 1e-9);
         assertEquals(0.37, rgb.y, 1e-9);
         assertEquals(0.37, rgb.z, 1e-9);
@@ -35,6 +38,7 @@ class SpectrumTest {
 
     @Test
     void colourMatchingReadsTheCieTable() {
+        // the CIE 1931 tables to 7 places: 1e-6 is a unit of the last place (the 600 nm row is a table point, exact)
         assertArrayEquals(new double[] {0.4334499, 0.9949501, 0.0087500}, Spectrum.colourMatching(550), 1e-6);
         assertArrayEquals(new double[] {1.0622, 0.631, 0.0008}, Spectrum.colourMatching(600), 1e-9);
         // Halfway between 550 and 555 nm is the mean of the two rows.

@@ -46,6 +46,8 @@ class StarCatalogueTest {
             float x = STARS.directions()[3 * i];
             float y = STARS.directions()[3 * i + 1];
             float z = STARS.directions()[3 * i + 2];
+            // float directions: 24-bit mantissa, a unit vector's squared length rounds to a few 1e-7; 1e-5 is far
+            // outside that
             assertEquals(1, x * x + y * y + z * z, 1e-5, "unit direction");
             north += z > 0 ? 1 : 0;
             sumX += x;

@@ -38,8 +38,10 @@ class TwilightTest {
                     sunDeg, d, n, n / d, p, p / d);
         }
         double d = zenith(defaults, -4);
+        // 4×: the normalised tables' flaw (a twilight too bright) must be a large factor, two stops, not a nuance
         assertTrue(zenith(paper, -4) > 4 * d, "the normalised twilight zenith at -4 deg against the default's");
         double p = zenith(physical, -4);
+        // "about the default's": within one photographic stop either way
         assertTrue(p > 0.5 * d && p < 2 * d, "with physical constants the same sums give about the default's");
     }
 
@@ -57,6 +59,7 @@ class TwilightTest {
                     SkyPicture.EYE_ALTITUDE_M);
             System.out.printf(Locale.ROOT, "twilight shown: sun %.0f deg, paper at noon's exposure %.3g, default "
                     + "adapted %.3g (%.2f times)%n", sunDeg, shown, adapted, shown / adapted);
+            // one stop darker or more: a plainly darker picture, not an exposure nuance
             assertTrue(shown < 0.5 * adapted, "sun " + sunDeg + " deg: the paper's zenith shows " + shown
                     + ", the default's " + adapted);
             // and the paper's adapted too would not be dark: the darkness is the fixed exposure's
@@ -73,8 +76,11 @@ class TwilightTest {
         // O'Neil's K_R with the same sun: about half the default's noon (0.48), one stop the exposure takes up.
         assertTrue(n > d / 4 && n < d, "noon zenith " + n + " against the default's " + d);
         Vector3d up = sky(paper, 90, 54);
+        // Rayleigh's λ⁻⁴: blue (450 nm) scatters (550/450)⁴ ≈ 2.2× green; 1.5× leaves room for the ozone and the sun's
+        // spectrum
         assertTrue(up.z > 1.5 * up.y && up.y > up.x, "blue noon zenith " + up);
         Vector3d sunset = sky(paper, 2, 0);
+        // orange: red > green > blue with blue under half of red (a hue of 30°-ish, not a pale yellow)
         assertTrue(sunset.x > sunset.y && sunset.y > sunset.z && sunset.z < 0.5 * sunset.x,
                 "orange horizon under the setting sun " + sunset);
     }

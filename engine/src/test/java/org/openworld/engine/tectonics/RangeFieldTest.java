@@ -40,8 +40,11 @@ class RangeFieldTest {
             high = Math.max(high, a);
             change += Math.abs(field.amplitude(x + 2000, z) - a);
         }
+        // doubles: 1e-9 for round-off at the clamped ends
         assertTrue(low <= RangeField.PLAIN_RELIEF + 1e-9, "plains: " + low);
         assertTrue(high >= 1 - 1e-9, "ranges: " + high);
+        // ranges are tens of km wide: over 2 km the amplitude changes by a small share of its span; a quarter is the
+        // bound chosen, not derived
         assertTrue(change / samples < 0.25 * (1 - RangeField.PLAIN_RELIEF), "mean change over 2 km "
                 + change / samples);
     }

@@ -60,6 +60,7 @@ class EyeUnderTheGroundTest {
                 new CameraSystem(), new TerrainSystem(), new CullingSystem(), reader)) {
             HeightField ground = engine.world().resource(HeightField.class);
             double below = ground.heightAt(INSIDE_THE_HILL.x(), INSIDE_THE_HILL.z()) - INSIDE_THE_HILL.y();
+            // 10 m under the surface: far more than the near plane's distance, so the lift is not a rounding
             assertTrue(below > 10, "the pose is inside the hill: " + below + " m under its surface");
             engine.world().setResource(CameraDirection.class, CameraDirection.fixed(INSIDE_THE_HILL));
             engine.update();
@@ -88,6 +89,7 @@ class EyeUnderTheGroundTest {
 
             // the director's floor, and its report
             double floor = ground.heightAt(eye.x(), eye.z()) + CameraController.MIN_CLEARANCE;
+            // doubles: the same sum computed twice, equal to round-off
             assertEquals(floor, eye.y(), 1e-9, "the eye lifted to the near plane's distance above the ground");
             assertEquals(floor - INSIDE_THE_HILL.y(), records.get(0).counters().get(CameraSystem.LIFTED.name()), 1e-9);
         }

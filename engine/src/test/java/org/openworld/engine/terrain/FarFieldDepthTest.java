@@ -49,6 +49,8 @@ class FarFieldDepthTest {
         // single precision loses about a step near depth 1 (its spacing there is 2^-24), so of the four at least
         // one must be left: a depth that rounds to 1 fails the test against the cleared buffer
         double single = (1 - floatDepth(end)) / step;
+        // one whole depth step: the float result falls short by at least one representable step, the failure the test
+        // shows
         assertTrue(single >= 1, "in single precision the end lies " + single + " steps short of depth 1");
         // and the map keeps the patches' range: the end lies beyond 95 % of the far plane (38 km of 40)
         assertTrue(end > 0.95 * Camera.FAR && end < Camera.FAR, "the end at " + end + " m");

@@ -82,6 +82,9 @@ class FarMaterialRenderTest {
                     blocks++;
                 }
             }
+            // ΔE00 ≈ 1 is a just-noticeable difference between flat patches, 2–3 between textured ones: a mean of 2.5
+            // over the block means is at the edge of notice; 8 bounds the worst block, where the far mip's average and
+            // the near texels differ most (a band chosen, not a measured value with its noise)
             assertTrue(blocks > 100, "the view shows ground in most blocks: " + blocks);
             assertTrue(sum / blocks < 2.5, "mean ΔE00 of the block means, far against near: " + sum / blocks);
             assertTrue(worst < 8, "largest ΔE00 of a block mean, far against near: " + worst);
@@ -112,6 +115,7 @@ class FarMaterialRenderTest {
                     }
                 }
             }
+            // a difference that must show: above the 2.5 agreement band the far/near test accepts
             assertTrue(sum / blocks > 3, "mean ΔE00 of the block means, bands against the snow map: " + sum / blocks);
         }
     }
@@ -154,6 +158,8 @@ class FarMaterialRenderTest {
                     }
                 }
             }
+            // per pixel the tilings differ (above a JND of 1), yet their block means agree within the same 2.5 as far
+            // against near
             assertTrue(pixels / ground > 1, "mean ΔE00 per pixel, stochastic against repeat: " + pixels / ground);
             assertTrue(sum / blocks < 2.5, "mean ΔE00 of the block means, stochastic against repeat: " + sum / blocks);
         }
@@ -182,6 +188,8 @@ class FarMaterialRenderTest {
             double near = glossGain(engine, name + "-near");
             engine.settings().set("materials.far-texels", "0");
             double far = glossGain(engine, name + "-far");
+            // 0.5 L*: half a just-noticeable lightness step, enough to show the gloss adds light; far and near agree
+            // within 20 % (the Javadoc's per-vertex against per-pixel sky reads)
             assertTrue(near > 0.5, "the gloss maps add lightness (L*) to the near ground: " + near);
             assertTrue(Math.abs(far - near) < 0.2 * near, "light the gloss maps add, far " + far + " against near "
                     + near);

@@ -82,10 +82,12 @@ class GeomorphTest {
             double distance = tree.bounds().distance(patches.node(i), (float) copyX, (float) copyZ, eye);
             double end = b * Math.pow(2, level + 1);
             double band = QuadtreeLod.MORPH_SHARE * (end - b * Math.pow(2, level));
+            // float distances (24-bit mantissa) over hundreds of metres: k to 1e-5
             assertEquals(Math.max(0, Math.min(1, (distance - end + band) / band)), k, 1e-5, "k of a level-" + level
                     + " patch " + distance + " m away");
             between += k > 0 && k < 1 ? 1 : 0;
         }
+        // a handful of patches in their morph bands shows the bands are exercised; 10 is a count chosen, not measured
         assertTrue(between > 10, "patches part way through their morph: " + between);
     }
 
@@ -153,6 +155,8 @@ class GeomorphTest {
 
     private static void assertSmooth(String world, Approach on, Approach off) {
         assertTrue(on.levelChanges > 20 && off.levelChanges > 20, "level changes seen: " + on.levelChanges);
+        // half a pixel: a vertex that moves less than that between frames lands on the same or the next pixel, no
+        // visible pop; over 20 level changes make sure the approach saw some
         assertTrue(on.largestJump <= 0.5, world + ": largest jump with morphing " + on.largestJump + " px");
         assertTrue(off.largestJump > 0.5, world + ": largest jump without morphing " + off.largestJump + " px");
         System.out.printf("geomorph %s: largest jump %.3f px with morphing, %.3f px without (%d level changes)%n",
@@ -309,6 +313,7 @@ class GeomorphTest {
                         }
                         Drawn vertex = drawn.computeIfAbsent(gx << 32 ^ (gz & 0xFFFF_FFFFL), key -> new Drawn());
                         if (vertex.frame == frame) {
+                            // 1e-3 m: float heights of a few hundred metres round at ~3e-5 m; a crack would be metres
                             assertEquals(vertex.height, h, 1e-3, "patches sharing a vertex agree (no crack)");
                             continue;
                         }

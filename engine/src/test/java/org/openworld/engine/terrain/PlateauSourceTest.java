@@ -46,6 +46,7 @@ class PlateauSourceTest {
         // 3 · 2 · 16 m further: all on the top, whose heights the binomial weights (sums of 1/16) keep exact
         assertEquals(0, tree.error(centre), "a flat node is drawn coarse at no cost");
         int rim = tree.node(level, (SIZE / 2 + (int) ((RADIUS + RIM / 2) / SPACING)) / side, SIZE / 2 / side);
+        // 1 m: the level-2 error must be a real loss of shape, far above the heights' float rounding
         assertTrue(tree.error(rim) > 1, "the rim's curve is lost at level 2: " + tree.error(rim) + " m");
         assertTrue(tile.snow().size() == SIZE && tile.pyramid().levelCount() == 9, "snow and pyramid follow");
     }

@@ -33,6 +33,7 @@ class TerrainDataTest {
         assertEquals(expected, times.stages().stream().map(StageTimes.Stage::name).toList());
         assertEquals(expected, heard, "the listener hears each stage as it ends");
         assertTrue(times.stages().stream().allMatch(s -> s.ms() >= 0));
+        // doubles: the same sum of stage times, equal to round-off
         assertEquals(times.stages().stream().mapToDouble(StageTimes.Stage::ms).sum(), times.totalMs(), 1e-9);
         assertEquals(256, data.pyramid().base().size());
         assertEquals(9, data.pyramid().levelCount());

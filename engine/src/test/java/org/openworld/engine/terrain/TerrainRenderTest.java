@@ -111,6 +111,7 @@ class TerrainRenderTest {
             double range = base != null ? base.max() - base.min() : s.relief();
             // at init, before any update: the snow map's 40 % to 70 % of the way up
             SnowLine line = engine.world().resource(SnowLine.class);
+            // 1e-3 m: the snow line from normalised heights in double, exact to round-off
             assertEquals(lowest + 0.4 * range, line.start(), 1e-3);
             assertEquals(lowest + 0.7 * range, line.full(), 1e-3);
             // the rule switched while running: the next update publishes the altitude band's line

@@ -105,6 +105,7 @@ class TestSceneRenderTest {
         double b = mean(morning, 2, 0, BAND);
         double luma = morning.meanLuma(0, 0, WIDTH, BAND);
 
+        // 20 levels of blue over red: a hue a viewer calls blue; luma 90 of 255: a daytime sky, not dusk
         assertTrue(b > r + 20, "sky blue " + b + " vs red " + r);
         assertTrue(luma > 90, "sky luma " + luma);
     }
@@ -145,6 +146,8 @@ class TestSceneRenderTest {
             }
         }
 
+        // a variance of 10 (a σ of 3 levels): the grid's texture is there, a flat fill gives 0; three lines a row at
+        // least, from the grid's spacing
         assertTrue(variance > 10, "luma variance along row " + y + ": " + variance);
         assertTrue(lines >= 3, lines + " grid lines crossed by row " + y);
         assertTrue(linePixels < WIDTH / 10, "lines are thin: " + linePixels + " of " + WIDTH + " pixels");
@@ -173,6 +176,8 @@ class TestSceneRenderTest {
         double lowRedOverBlue = (double) lowSun.channel(x, y, 0) / lowSun.channel(x, y, 2);
         double highRedOverBlue = (double) highSun.channel(x, y, 0) / highSun.channel(x, y, 2);
 
+        // 40 levels of red over blue: plainly warm; the red/blue ratio 1.5× the morning's, the long path's Rayleigh
+        // loss of blue (see TwilightTest)
         assertTrue(lowSun.channel(x, y, 0) > lowSun.channel(x, y, 2) + 40, "glow of the setting sun is warm: "
                 + lowSun.channel(x, y, 0) + "," + lowSun.channel(x, y, 1) + "," + lowSun.channel(x, y, 2));
         assertTrue(lowRedOverBlue > 1.5 * highRedOverBlue, "red/blue at 18:30 " + lowRedOverBlue

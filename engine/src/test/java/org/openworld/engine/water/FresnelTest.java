@@ -21,6 +21,8 @@ class FresnelTest {
         // tan θB = n: θB = 53.1232°, cos θB = 0.600136, and θt = 90° − θB, so cos θt = sin θB = 0.799898;
         // rs = (0.600136 − 1.333 · 0.799898) / (0.600136 + 1.333 · 0.799898) = −0.279760, rp = 0, R = rs² / 2
         double cosBrewster = Math.cos(Math.atan(N));
+        // the reference to 7 places: 1e-6 is a unit of the last; the table is float (1e-6 below), the exact cases
+        // double (1e-12)
         assertEquals(0.0391355, Fresnel.reflectance(cosBrewster, 1, N), 1e-6);
     }
 
@@ -42,6 +44,7 @@ class FresnelTest {
         // sin θc = 1 / 1.333: θc = 48.6066°
         double critical = Math.toRadians(48.6066);
         assertEquals(1, Fresnel.reflectance(Math.cos(critical + 1e-3), N, 1), 0);
+        // 0.05 rad (3°) inside the critical angle the reflectance is already well down from total (1)
         assertTrue(Fresnel.reflectance(Math.cos(critical - 0.05), N, 1) < 0.5);
         // straight up from below reflects as much as straight down from above
         assertEquals(0.0203732, Fresnel.reflectance(1, N, 1), 1e-6);

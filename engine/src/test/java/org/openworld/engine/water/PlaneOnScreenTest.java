@@ -70,11 +70,14 @@ class PlaneOnScreenTest {
                 if (ndcDepth < 1) { // beyond the far plane the depth is clamped, whatever the plane says
                     double windowDepth = ndcDepth * 0.5 + 0.5;
                     double planeDepth = dot(plane.depth(), x, y) * 0.5 + 0.5;
+                    // float depth (24-bit mantissa): the error of 1 − d grows as the depth nears 1, so the band is
+                    // relative to 1 − d, plus 1e-6 absolute
                     assertEquals(windowDepth, planeDepth, 2e-4 * (1 - windowDepth) + 1e-6,
                             "depth at (" + x + ", " + y + ")");
                 }
             }
         }
+        // 10 000 of the sampled pixels on each side: a picture split by the horizon, not one side grazed
         assertTrue(water > 10000 && sky > 10000, "both sides are covered: " + water + " water, " + sky + " sky");
     }
 

@@ -51,6 +51,7 @@ class RippleFieldTest {
             double d = half.slopes()[i] - f.frame(0).slopes()[i];
             sum += d * d;
         }
+        // two independent fields of RMS σ differ by √2 σ: half of σ is far below it, a frozen field gives 0
         assertTrue(Math.sqrt(sum / (32 * 32)) > 0.5 * RMS, "the field moves within the period");
     }
 
@@ -70,6 +71,8 @@ class RippleFieldTest {
             }
         }
         double factor = num / den;
+        // each synthesis normalises over its own frames (4 or 8 samples of the variance): 5 % covers that sampling
+        // difference
         assertEquals(1, factor, 0.05, "amplitude factor between the two loops");
         for (int k = 0; k < 4; k++) {
             float[] a = four.frame(k).slopes();
@@ -138,6 +141,8 @@ class RippleFieldTest {
                 }
             }
         }
+        // the directional factor |k̂·ŵ|² of the spectrum weights slope variance along : across as ⟨cos⁴⟩ : ⟨cos² sin²⟩
+        // = 3 : 1; 2 is under that
         assertTrue(along > 2 * across, "along " + along + " vs across " + across);
         if (windDegrees == 0) {
             assertTrue(varZ > 2 * varX, "wind towards north: var(sz) " + varZ + " vs var(sx) " + varX);
@@ -184,6 +189,7 @@ class RippleFieldTest {
         double across = Math.abs(-bestX * windZ + bestZ * windX);
         String shift = "pattern shifted by (" + bestX + ", " + bestZ + ") texels";
         assertTrue(along >= 1, shift + ": at least one texel downwind");
+        // within tan⁻¹ 0.6 ≈ 31° of the wind
         assertTrue(across <= 0.6 * along, shift + ": mostly along the wind");
     }
 

@@ -47,6 +47,7 @@ class RippleSpectrumTest {
         for (int i = 0; i < start.length; i++) {
             moved += Math.abs(half[i] - start[i]);
         }
+        // 0.1 summed over all coefficients: any real motion is orders above it, a frozen spectrum gives 0 exactly
         assertTrue(moved > 0.1, "within the period the waves move: " + moved);
     }
 
@@ -60,6 +61,7 @@ class RippleSpectrumTest {
                 for (int c = 0; c < SIZE; c++) {
                     int i = r * SIZE + c;
                     int j = ((SIZE - r) % SIZE) * SIZE + (SIZE - c) % SIZE;
+                    // doubles: conjugate pairs built from the same numbers, equal to round-off
                     assertEquals(h[2 * i], h[2 * j], 1e-12, "real parts of k and −k");
                     assertEquals(h[2 * i + 1], -h[2 * j + 1], 1e-12, "imaginary parts of k and −k");
                 }

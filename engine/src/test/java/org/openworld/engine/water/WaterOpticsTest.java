@@ -12,6 +12,7 @@ class WaterOpticsTest {
     void extinctionIsPureWaterPlusTheClarityTerm() {
         // clarity 10 m: matter adds 0.1/10 absorption and 0.9/10 scattering, 0.1 per metre in all
         WaterOptics optics = WaterOptics.of(10);
+        // float components (24-bit mantissa): 1e-6 on values under 1
         assertEquals(0.35 + 0.1, optics.extinction().x, 1e-6);
         assertEquals(0.057 + 0.1, optics.extinction().y, 1e-6);
         assertEquals(0.0145 + 0.1, optics.extinction().z, 1e-6);

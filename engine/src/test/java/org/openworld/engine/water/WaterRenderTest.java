@@ -122,6 +122,8 @@ class WaterRenderTest {
             towerAgainstSky += difference(picture, column, waterline + k, picture, beside, waterline + k);
             rows++;
         }
+        // 12 levels (of 255, mean of R, G, B) for the mirror against > 40 for the sky beside it: the reflection matches
+        // the tower three times better than anything else there; the water's own tint takes the rest
         assertTrue(mirrorError / rows < 12, "the tower's rows and their mirror rows differ by " + mirrorError / rows);
         assertTrue(towerAgainstSky / rows > 40, "the tower's reflection is not told from the sky's: "
                 + towerAgainstSky / rows);
@@ -148,10 +150,12 @@ class WaterRenderTest {
         int farFromTower = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
+                // one 8-bit level: blending with alpha 0 may round the last bit, no more
                 assertTrue(difference(dry.picture(), x, y, clear.picture(), x, y) <= 1,
                         "alpha 0 changed (" + x + ", " + y + ")");
                 if (y > waterline + 2 && Math.abs(x - W / 2) > 45) {
                     farFromTower++;
+                    // two levels: the reflection texture sampled back through the blend, rounded twice
                     assertTrue(difference(mirror.picture(), x, y, mirror.reflection(), x, y) <= 2,
                             "alpha 1 is not the reflection at (" + x + ", " + y + ")");
                 }
@@ -159,6 +163,7 @@ class WaterRenderTest {
         }
         assertTrue(farFromTower > W * H / 4);
         // and the water is not simply invisible: the mirror's picture differs from the dry one below the waterline
+        // 10 levels of mean luma: plainly visible, far above the one-level rounding above
         assertTrue(Math.abs(mirror.picture().meanLuma(0, waterline + 3, W, H) - dry.picture().meanLuma(0,
                 waterline + 3, W, H)) > 10);
     }
@@ -176,6 +181,7 @@ class WaterRenderTest {
         Frame unclipped = render(settings(bank, "water.method=STENCIL"), OVER_THE_BANK);
         Frame unclippedEmpty = render(settings(bank, "water.method=STENCIL"), OVER_THE_BANK,
                 e -> e.setEnabled("terrain", false));
+        // the bed's ground against empty sky: dozens of levels; 30 is far above the clipped case's 1
         assertTrue(maxDifference(unclipped.reflection(), unclippedEmpty.reflection()) > 30);
     }
 
@@ -191,6 +197,8 @@ class WaterRenderTest {
                 }
             }
             double deviation = Math.sqrt(variance / (W * H / 2.0));
+            // 20 of 255: darker than any lit water or sky reflection, near black; a deviation under 3 levels is a flat
+            // fill (the 8-bit step is 1)
             assertTrue(mean > 20, method + ": water too dark, mean luma " + mean);
             assertTrue(deviation > 3, method + ": water uniform, deviation " + deviation);
         }
@@ -226,6 +234,7 @@ class WaterRenderTest {
         }
         assertEquals(0, sameSeed, "the same seed, the same water");
         assertEquals(0, dry, "without the water the seeds draw the same picture");
+        // 1 level of mean difference: the same seed gives exactly 0, so any real change of ripples shows
         assertTrue(otherSeed > 1, "another seed, other ripples: mean difference " + otherSeed + " levels");
     }
 
@@ -240,6 +249,7 @@ class WaterRenderTest {
         double seenBank = wetBank.meanLuma(W / 4, H / 4, 3 * W / 4, 3 * H / 4);
         double seenBed = wetBed.meanLuma(W / 4, H / 4, 3 * W / 4, 3 * H / 4);
         double dry = dryBank.meanLuma(W / 4, H / 4, 3 * W / 4, 3 * H / 4);
+        // 10 and 5 levels of mean luma (of 255): chosen as plainly visible differences, not measured
         assertTrue(seenBank > seenBed + 10, "the bank " + seenBank + " should show brighter than the deep bed "
                 + seenBed);
         assertTrue(dry - seenBank > 5, "the water should dim the bank a little: dry " + dry + ", wet " + seenBank);
@@ -291,6 +301,8 @@ class WaterRenderTest {
                 blue += picture.channel(x, y, 2);
             }
         }
+        // the extinction set in WaterOpticsTest: red 0.35/m against blue 0.0145/m, so a few metres of water leave far
+        // under 1/1.5 of the red; 15 levels of mean luma is "not black"
         assertTrue(blue > 1.5 * red, "under the water red is absorbed first: red " + red + ", blue " + blue);
         assertTrue(picture.meanLuma(0, 0, W, H) > 15, "not black");
         assertFalse(records.get(0).passGpuMs().containsKey("reflection.terrain"), records.get(0).passGpuMs().keySet()
@@ -350,6 +362,7 @@ class WaterRenderTest {
                 }
             }
         }
+        // 3 levels off the mean of its neighbours 3 px away: the horizon's real gradient gives 1–2, a dot dozens
         assertTrue(worst < 3, "a dot on the horizon: " + worst + " levels off its neighbours at " + where);
     }
 
@@ -358,6 +371,7 @@ class WaterRenderTest {
         // 40 degrees up with a 60 degree field: the picture's lowest row looks 10 degrees above the horizon
         Frame frame = render(settings(tower), new CameraPose(0, 10, 150, 0, 40, 60));
         assertNull(frame.reflection(), "a reflection pass ran with no water in sight");
+        // 20 of 255: a drawn sky is far brighter, an undrawn one is black
         assertTrue(frame.picture().meanLuma(0, 0, W, H) > 20, "the sky is drawn");
     }
 

@@ -50,6 +50,8 @@ class HeightPyramidTest {
         }
         double plain = amplitude(new HeightMap(N / 2, 4, decimated, true));
         double filtered = amplitude(HeightPyramid.build(fine).level(1));
+        // every other sample of a pure wave keeps its amplitude (1) as an alias, less the samples' phase: over 0.9; the
+        // filter's cos⁴ response gives 0.013, under 0.03
         assertTrue(plain > 0.9, "plain decimation keeps the wave as an alias of amplitude " + plain);
         // the binomial response cos⁴(π · 0.39) is 0.013
         assertTrue(filtered < 0.03, "the pyramid attenuates it to " + filtered);
@@ -59,6 +61,7 @@ class HeightPyramidTest {
     void waveWellBelowTheNewNyquistPasses() {
         // 10 cycles per 256 samples: response cos⁴(π · 10/256) = 0.970
         double filtered = amplitude(HeightPyramid.build(wave(10)).level(1));
+        // cos⁴(π · 10/256) = 0.97025: 0.003 covers writing it as 0.970 and the float heights, ten times over
         assertEquals(0.970, filtered, 0.003);
     }
 
@@ -84,6 +87,7 @@ class HeightPyramidTest {
         }
         HeightMap periodic = HeightPyramid.build(new HeightMap(N, 1, h.clone(), true)).level(1);
         HeightMap clamped = HeightPyramid.build(new HeightMap(N, 1, h.clone(), false)).level(1);
+        // float heights of a few hundred: 1e-3 is a few float roundings (24-bit mantissa, 3e-5 at 255)
         assertEquals((254 + 4 * 255 + 6 * 0 + 4 * 1 + 2) / 16.0, periodic.sample(0, 5), 1e-3, "wrapped neighbours");
         assertEquals((0 + 4 * 0 + 6 * 0 + 4 * 1 + 2) / 16.0, clamped.sample(0, 5), 1e-3, "clamped neighbours");
         assertEquals(20, clamped.sample(10, 5), 1e-3, "a ramp stays a ramp inside");

@@ -26,8 +26,11 @@ class PowerSpectrumTest {
         List<PowerSpectrum.Bin> bins = PowerSpectrum.of(new HeightMap(N, SPACING, h, true)).bins();
         PowerSpectrum.Bin ring10 = bins.get(9);
         PowerSpectrum.Bin ring20 = bins.get(19);
+        // doubles: an exact quotient, equal to round-off
         assertEquals(10 / (N * SPACING), ring10.frequency(), 1e-12);
         double total = bins.stream().mapToDouble(PowerSpectrum.Bin::power).sum();
+        // 0.1 % left to the float heights' rounding spread over the other rings; the amplitude ratio 3² = 9 holds to
+        // 1e-3 for the same reason
         assertTrue(ring10.power() + ring20.power() > 0.999 * total, "all power in the two rings");
         // Each wave puts |A|² n⁴ / 4 into one coefficient of the half plane; a ring's mean divides by its size.
         double ratio = (ring10.power() * ringSize(10)) / (ring20.power() * ringSize(20));
@@ -60,6 +63,8 @@ class PowerSpectrumTest {
         }
         PowerSpectrum spectrum = PowerSpectrum.of(new HeightMap(N, SPACING, h, true));
         PowerSpectrum.Fit fit = spectrum.fit(1 / 200.0, 1 / 5.0);
+        // each ring's power is a χ² sample of a few dozen coefficients: a log-log fit over 1.6 decades scatters by
+        // about 0.05; 0.15 is the band every spectral-slope test here uses
         assertEquals(0, fit.slope(), 0.15, "white noise has a flat spectrum");
         assertThrows(IllegalArgumentException.class, () -> spectrum.fit(1 / 100.0, 1 / 99.0));
     }

@@ -18,6 +18,8 @@ class SpectralSynthesisTest {
         TerrainSettings s = TestTerrain.settings("terrain.size=256", "terrain.beta=" + beta);
         HeightMap map = SpectralSynthesis.generate(s, 7);
         PowerSpectrum.Fit fit = PowerSpectrum.of(map).fit(s);
+        // 0.15: one 256² realisation, each ring's power a χ² sample, scatters the fitted slope (the band
+        // PowerSpectrumTest uses for white noise)
         assertEquals(-2 * beta, fit.slope(), 0.15, "fitted log-log slope of the power spectrum");
     }
 
@@ -38,6 +40,8 @@ class SpectralSynthesisTest {
             }
         }
         assertTrue(inside > 0);
+        // the synthesis sets the coefficients outside the band to zero: only the float heights' rounding (about 1e-7
+        // relative, squared in power far lower) is left, 1e-6 is far above it
         assertTrue(outside < 1e-6 * inside, "power outside the band " + outside + " vs inside " + inside);
     }
 
@@ -49,6 +53,7 @@ class SpectralSynthesisTest {
         assertEquals(256, map.size());
         assertEquals(3, map.spacing());
         assertTrue(map.periodic());
+        // float metres (24-bit mantissa, 3e-5 m at 400 m): 1e-3 m
         assertEquals(-100, map.min(), 1e-3);
         assertEquals(400, map.max(), 1e-3);
     }

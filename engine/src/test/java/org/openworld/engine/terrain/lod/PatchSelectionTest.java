@@ -235,6 +235,7 @@ class PatchSelectionTest {
         TerrainQuadtree tree = TerrainQuadtree.uniform(256, 2, 8, errors, -100, 700);
         TerrainQuadtree tile = new TerrainQuadtree(TestPyramids.hills(256, 2), 8);
         assertEquals(tile.nodeCount(), tree.nodeCount());
+        // doubles: an exact product, equal to round-off
         assertEquals(512, tree.extent(), 1e-9);
         float[] boxes = tree.bounds().boxes();
         float[] tileBoxes = tile.bounds().boxes();
@@ -501,6 +502,8 @@ class PatchSelectionTest {
             assertTrue(Math.abs(step - firstStep) <= firstStep / 4, "the same increment per doubling: " + counts);
             assertEquals(4 * flat[k - 1], flat[k], "the flat grid pays the area");
         }
+        // a quadtree's patch count grows with the log of the world's extent, not its area: 64× the area adds about 3
+        // levels of patches, far under 4×
         assertTrue(quadtree[3] < 4 * quadtree[0], "64 times the area, under 4 times the patches: " + counts);
     }
 

@@ -74,6 +74,7 @@ class TerrainQuadtreeTest {
             int level = tree.level(node);
             int span = CELLS << level;
             int b = 6 * node;
+            // float boxes (24-bit mantissa) over hundreds of metres: 1e-4 m
             assertEquals((tree.sampleX(node) - SIZE / 2.0) * SPACING, boxes[b], 1e-4);
             assertEquals((tree.sampleZ(node) - SIZE / 2.0) * SPACING, boxes[b + 2], 1e-4);
             assertEquals((tree.sampleX(node) + span - SIZE / 2.0) * SPACING, boxes[b + 3], 1e-4);
@@ -95,6 +96,7 @@ class TerrainQuadtreeTest {
                 }
             }
         }
+        // 50 m of the test hills' relief: a real range, not a flat box
         assertTrue(boxes[4] - boxes[1] > 50, "the hills give the root a real height range");
     }
 

@@ -36,6 +36,7 @@ class ImageQuiltingTest {
             for (int l = 1; l < length; l++) {
                 assertTrue(Math.abs(path[l] - path[l - 1]) <= 1, "the path moves one texel at most");
             }
+            // doubles: the same sum of errors taken twice, equal to round-off
             assertEquals(best, ImageQuilting.cost(e, width, path), 1e-12);
         }
     }

@@ -243,6 +243,9 @@ class MaterialRenderTest {
             double[] snow = mean(image, Region.whole(SNOWFIELD));
             double[] steep = mean(image, Region.whole(STEEP));
 
+            // 8-bit display levels: green leads red and blue by 10–15 levels (a hue a viewer calls green); snow's luma
+            // above 185 of 255 (albedo 0.8+ under noon light and the tone curve); rock's channels within 25 % of their
+            // mean, as TerrainTexturesTest
             assertTrue(meadow[1] > meadow[0] + 10 && meadow[1] > meadow[2] + 15, "meadow " + rgb(meadow));
             assertTrue(snow[3] > 185, "snowfield " + rgb(snow));
             assertTrue(snow[2] >= snow[0] - 3, "snow is not yellow: " + rgb(snow));
@@ -287,6 +290,8 @@ class MaterialRenderTest {
             Region corner = new Region(SNOWFIELD, 0.02, 0.02, 0.15, 0.15);
             double gainCentre = mean(on, centre)[3] - mean(off, centre)[3];
             double gainCorner = mean(on, corner)[3] - mean(off, corner)[3];
+            // 3 levels of mean luma over a cell: a visible sheen, three times the 8-bit step; and 2 more at the mirror
+            // point than at the corner
             assertTrue(gainCentre > 3, "gloss brightens the snow at the mirror point by " + gainCentre);
             assertTrue(gainCentre > gainCorner + 2, "gain at the mirror point " + gainCentre + ", away from it " + gainCorner);
             // rock: rougher, so no sharp highlight, but the sky it reflects at this grazing angle
@@ -465,6 +470,8 @@ class MaterialRenderTest {
                     brightest = Math.max(brightest, mountains.luma(x, y));
                 }
             }
+            // luma 200 of 255: lit snow (albedo 0.8+) reaches it under the default sun, grass and rock (albedo
+            // 0.1–0.35) do not
             assertTrue(brightest > 200, "snow on the peaks: brightest luma " + brightest);
         }
     }

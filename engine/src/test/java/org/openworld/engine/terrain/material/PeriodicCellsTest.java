@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Test;
 
 /** The rock's tileable Voronoi diagram against brute force over every point and its copies in the tiles around. */
 class PeriodicCellsTest {
+    // Tolerances here: doubles: distances in cell units computed two ways agree to round-off; 1e-9 is loose
 
     private static final int N = 256;
     private static final int COUNT = 5;
@@ -49,6 +50,7 @@ class PeriodicCellsTest {
                 }
             }
             assertEquals(best, cells.nearest(x, y), "nearest cell at (" + x + ", " + y + ")");
+            // doubles: distances in cell units computed two ways, equal to round-off (1e-9 is loose)
             assertEquals(Math.hypot(x - a[0], y - a[1]), cells.d1, 1e-9, "d1");
             assertEquals(Math.hypot(x - b[0], y - b[1]), cells.d2, 1e-9, "d2");
             assertEquals(x - a[0], cells.dx, 1e-9, "offset from the nearest point, x");

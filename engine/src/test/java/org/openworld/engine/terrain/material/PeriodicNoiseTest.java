@@ -53,6 +53,8 @@ class PeriodicNoiseTest {
                 columns += columnBend(v, k - 1, k, k + 1) / (N - 2);
                 rows += rowBend(v, k - 1, k, k + 1) / (N - 2);
             }
+            // a smooth field's bend varies about its mean: across the wrap it may be twice the mean of the interior and
+            // no more; a cut-and-join seam is a step, more than 10× the mean
             assertTrue(columnBend(v, N - 2, N - 1, 0) < 2 * columns, "across the last column");
             assertTrue(columnBend(v, N - 1, 0, 1) < 2 * columns, "across the first column");
             assertTrue(rowBend(v, N - 2, N - 1, 0) < 2 * rows, "across the last row");
@@ -71,6 +73,7 @@ class PeriodicNoiseTest {
                 mean += x / v.length;
                 square += x * x / v.length;
             }
+            // doubles: the field is normalised to mean 0 and variance 1 exactly, so 1e-9 is round-off over 128² sums
             assertEquals(0, mean, 1e-9, "mean");
             assertEquals(1, square, 1e-9, "variance");
         }
@@ -78,6 +81,8 @@ class PeriodicNoiseTest {
         for (int i = 0; i < N * N; i++) {
             correlation += p[0][i] * p[1][i] / (N * N);
         }
+        // two independent fields of 128² texels correlate with σ = 1/128 ≈ 0.008 if white; band-limited fields have
+        // fewer independent samples, so 0.05 is some 3–6σ
         assertTrue(Math.abs(correlation) < 0.05, "real and imaginary parts are independent: " + correlation);
     }
 
@@ -91,6 +96,8 @@ class PeriodicNoiseTest {
                 h[i] = (float) v[i];
             }
             PowerSpectrum.Fit fit = PowerSpectrum.of(new HeightMap(N, 1, h, true)).fit(4.0 / N, 40.0 / N);
+            // 0.15 on a log-log slope fitted over one decade of a single 128² realisation: each frequency ring's power
+            // is a χ² sample, which scatters the fit (the same band as PowerSpectrumTest)
             assertEquals(-beta, fit.slope(), 0.15, "spectral slope for β = " + beta);
         }
     }
@@ -111,6 +118,7 @@ class PeriodicNoiseTest {
         double[][] c = pair(5, PeriodicNoise.band(2, 50, 2));
         assertArrayEquals(a[0], b[0]);
         assertArrayEquals(a[1], b[1]);
+        // 1e-6: far above round-off, far below unit-variance values; equal fields give 0
         assertTrue(Math.abs(a[0][0] - c[0][0]) + Math.abs(a[1][7] - c[1][7]) > 1e-6, "another stream, other fields");
     }
 }

@@ -12,6 +12,7 @@ import org.openworld.engine.terrain.material.MaterialSettings.SnowMode;
 
 /** The snow rules' normalised heights in metres, over height maps whose range is known. */
 class SnowLinesTest {
+    // Tolerances here: snow lines in metres from normalised heights in double: 1e-3 m is round-off
 
     /** 800 m of relief, 15 % below sea level; snow from 35 % to 60 % of it. */
     static final TerrainSettings S = TestTerrain.settings("terrain.relief=800", "terrain.sea-fraction=0.15",
@@ -35,6 +36,7 @@ class SnowLinesTest {
         SnowLine line = SnowLines.of(NORMALISED.min(), NORMALISED.max(), SnowMode.SNOW_MAP, S);
         // 35 % and 60 % of the way up from the lowest sample, −120 m
         assertEquals(-120 + 0.35 * 800, line.start(), 1e-3);
+        // 1e-3 m: metres from normalised heights in double, exact to round-off
         assertEquals(-120 + 0.60 * 800, line.full(), 1e-3);
         // and the snow map's own rule, n = h / relief + seaFraction, gives the same chance at every height
         for (double y = -120; y <= 680; y += 10) {
@@ -48,6 +50,8 @@ class SnowLinesTest {
         SnowLine line = SnowLines.of(NORMALISED.min(), NORMALISED.max(), SnowMode.ALTITUDE_BANDS, S);
         assertEquals(-120 + SnowLines.BAND_LINE * 800, (line.start() + line.full()) / 2, 1e-3);
         assertEquals(2 * SnowLines.BAND_EDGE * 800, line.full() - line.start(), 1e-3);
+        // 1 % of the 800 m relief (8 m): the bands' edge is 2 × BAND_EDGE of it; the snow map's fringe spans its base-
+        // to-full 25 % or more
         assertTrue(line.full() - line.start() < 0.01 * 800, "a sharp line, not the snow map's wide fringe");
     }
 

@@ -21,6 +21,7 @@ class SnowMapTest {
         TerrainSettings s = TestTerrain.settings("terrain.snow-base=0.5", "terrain.snow-full=0.9");
         assertEquals(0, SnowMap.probability(0.2, s));
         assertEquals(0, SnowMap.probability(0.5, s));
+        // doubles: exact fractions, equal to round-off
         assertEquals(0.5, SnowMap.probability(0.7, s), 1e-12);
         assertEquals(1, SnowMap.probability(0.9, s));
         assertEquals(1, SnowMap.probability(1.0, s));
@@ -63,6 +64,7 @@ class SnowMapTest {
             }
             expected /= x1 - x0;
             double measured = fraction(snow, x0, x1);
+            // a band is 64 × 512 = 32 768 Bernoulli samples: the share's σ ≤ 0.5/√32 768 ≈ 0.003, so 0.02 is about 7σ
             assertEquals(expected, measured, 0.02, "band " + band);
             assertTrue(measured >= previous, "snow rises with height");
             previous = measured;
@@ -76,9 +78,13 @@ class SnowMapTest {
         TerrainSettings speckled = TestTerrain.settings("terrain.snow-morphology=0");
         TerrainSettings cleaned = TestTerrain.settings("terrain.snow-morphology=2");
         HeightPyramid p = rampPyramid(speckled, 256);
+        // near p = ½ one sample in 16 differs from all four neighbours (2 · ½⁵), and the fringe holds thousands of
+        // samples: 100 only shows there are many
         assertTrue(isolated(SnowMap.generate(p, speckled, 4)) > 100, "random snow has isolated samples");
         SnowMap clean = SnowMap.generate(p, cleaned, 4);
         assertEquals(0, isolated(clean), "no sample differs from all four neighbours after opening and closing");
+        // the ramp's base and full lie at a quarter and three quarters: about half is snow; 0.1–0.9 only says the
+        // morphology kept a line
         assertTrue(clean.fraction() > 0.1 && clean.fraction() < 0.9,
                 "the snow line is still there: " + clean.fraction());
     }

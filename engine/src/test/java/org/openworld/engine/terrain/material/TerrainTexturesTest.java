@@ -18,6 +18,8 @@ import org.openworld.engine.terrain.material.TerrainTextures.Material;
  * them. Each texture is also written to {@code target/test-images/} as 2 × 2 tiles, so a seam would show.
  */
 class TerrainTexturesTest {
+    // Tolerances here: colours are linear albedo shares from 8-bit sRGB texels; the bands are real surfaces' albedos
+    // and visible hue differences, explained beside them
 
     static final int SEED = 7;
     static TerrainTextures textures;
@@ -123,6 +125,8 @@ class TerrainTexturesTest {
                     }
                     double wrapColumns = columnDifference(t, n, n - 1, 0, c);
                     double wrapRows = rowDifference(t, n, n - 1, 0, c);
+                    // the wrap may differ from interior neighbours by 30 % of their mean difference plus half an 8-bit
+                    // level (rounding); theTilingMeasureSeesASeam shows a real seam exceeds the same band
                     assertTrue(wrapColumns < 1.3 * nearColumns + 0.5,
                             what + ": wrap-around columns " + wrapColumns + " vs neighbours " + nearColumns);
                     assertTrue(wrapRows < 1.3 * nearRows + 0.5,
@@ -152,6 +156,8 @@ class TerrainTexturesTest {
         double[] rock = meanLinear(Material.ROCK);
         double[] snow = meanLinear(Material.SNOW);
 
+        // measured albedos of real surfaces (linear): grass 0.1–0.25 and green-dominant, rock 0.1–0.35 and near grey
+        // (channels within 25 % of their mean), fresh snow 0.8–0.9 and near neutral (within 12 %, a faint blue)
         assertTrue(grass[1] > 1.2 * grass[0] && grass[1] > 2 * grass[2], "grass " + Arrays.toString(grass));
         assertTrue(grass[1] < 0.3, "grass is a dark surface: " + Arrays.toString(grass));
 
@@ -186,6 +192,7 @@ class TerrainTexturesTest {
         double snow = meanSlope(Material.SNOW);
 
         assertTrue(rock > grass && grass > snow, "mean normal tilt: rock " + rock + ", grass " + grass + ", snow " + snow);
+        // a mean tilt of 0.02 (about 1°): below that an 8-bit normal map's steps (1/127) are all the relief left
         assertTrue(snow > 0.02, "snow still has a grain: " + snow);
     }
 
@@ -201,6 +208,8 @@ class TerrainTexturesTest {
             meanGloss += gloss / 255.0 / texels;
         }
         double share = (double) sparkling / texels;
+        // sparkle is a few isolated texels: 0.05 %–1 % of the texture at full gloss (fewer would not show at a glance,
+        // more reads as wet); the mean gloss sits mid-range, between matte and mirror
         assertTrue(share > 0.0005 && share < 0.01, "sparkling share " + share);
         assertTrue(meanGloss > 0.45 && meanGloss < 0.75, "mean snow gloss " + meanGloss);
     }

@@ -93,6 +93,7 @@ class PatchOrderTest {
 
         order.sort(list, bounds, knowsNodeOne, new float[] {0, 0}, eye);
 
+        // float boxes (24-bit mantissa): distances of tens to hundreds of metres to 1e-3 m
         assertEquals(50, order.distance(0), 1e-3, "node 0: its box, beside the eye");
         assertEquals(Math.hypot(50, 400), order.distance(1), 1e-3, "node 1: 400 m above its known heights");
         assertEquals(0, order.order()[0]);

@@ -124,6 +124,8 @@ class StreamedSkyTest {
                 System.out.println(seen);
                 assertTrue(far.isEmpty(), far.size() + " places beyond " + TOLERANCE + ": " + far + "; " + seen);
                 assertTrue(sum / n <= MEAN_TOLERANCE, seen);
+                // the sampled places must span the range the tolerance is about: some under 0.8 of the sky (a hollow),
+                // some over 0.97 (near-open ground, within the 8-bit storage's steps of 1)
                 assertTrue(lowest < 0.8, "a hollow among the places: " + seen);
                 assertTrue(highest > 0.97, "open ground among the places: " + seen);
                 assertTrue(snowy > 0, "the snow in r survives the pass: " + seen);

@@ -59,8 +59,11 @@ class StreamedSnowTest {
      */
     @Test
     void theOpeningKeepsOnlyWhatFillsItsSquare() {
+        // doubles: the end points are exact, equal to round-off
         assertEquals(0, SNOW.expectedCoverage(0), 1e-9);
         assertEquals(1, SNOW.expectedCoverage(1), 1e-9);
+        // at p = ½ a square of 5 × 5 samples is all snow with chance 2^-25: an opening keeps almost nothing; 0.1 says
+        // "far less than p"
         assertTrue(SNOW.expectedCoverage(0.5) < 0.1, "c(0.5) = " + SNOW.expectedCoverage(0.5));
         for (int k = 1; k <= StreamedSnow.TABLE_STEPS; k++) {
             double p = (double) k / StreamedSnow.TABLE_STEPS;
@@ -82,6 +85,8 @@ class StreamedSnowTest {
         int n = 512; // level-0 samples a side: 1 km
         double fine = mean(block(0, x0, z0, n));
         double coarse = mean(block(2, x0 >> 2, z0 >> 2, n >> 2));
+        // see the Javadoc: a mean away from 0 and 1, where agreement would be trivial; 0.03 for the random draw's luck
+        // and the coarse level's smoother heights
         assertTrue(fine > 0.1 && fine < 0.9, "snowy ground: " + fine);
         assertEquals(fine, coarse, 0.03, "mean snow of level 0 against level 2 over the same ground");
     }
