@@ -193,7 +193,7 @@ final class FiguresCommand implements Callable<Integer> {
      * Under figure 9a, its default picture and its preset's, each with its own settings: the zenith's luminance with
      * the sun 4° below the horizon as the picture shows it (the scene's luminance times the exposure), in the
      * figure's sky and in the default one (multiple scattering, physical constants, the exposure adapted to the
-     * light): the issue's check of figure 9's dark dawn ({@code TwilightTest}).
+     * light): the check of figure 9's dark dawn ({@code TwilightTest}).
      */
     static String twilight(Figure figure, Settings settings) {
         if (!figure.id().equals("9a")) {

@@ -26,7 +26,7 @@ class FiguresTwilightTest {
                 "sky.auto-exposure=off");
         double ratio = ratio(FiguresCommand.twilight(figure("9a"), paper));
         // under half: at least a stop darker, a plainly darker sky (as TwilightTest)
-        assertTrue(ratio < 0.5, "the issue's check: below half the default's, " + ratio);
+        assertTrue(ratio < 0.5, "the dark dawn: below half the default's, " + ratio);
         // adapted to its light, the same sky would show brighter than the default, not darker (docs/sky.md)
         Settings adapted = settings("atmosphere.scattering=single", "atmosphere.constants=normalised",
                 "atmosphere.wavelengths=6", "atmosphere.outer-samples=2", "atmosphere.inner-samples=2");

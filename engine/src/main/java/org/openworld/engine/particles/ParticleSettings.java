@@ -30,7 +30,7 @@ public record ParticleSettings(
         @Setting(doc = "share of the cloud layer's wind felt by the snow", min = 0, max = 1) double windShare) {
 
     public static final ParticleSettings DEFAULTS = new ParticleSettings(
-            100_000,  // the default; 1 M runs too
+            100_000,  // a dense fall on screen at the default budget; 1 M runs too
             1.0,      // m/s: a typical aggregate flake
             2.0,      // 1/s: half a second to follow the air
             0.3,      // m/s: a gentle flutter, a third of the fall speed

@@ -121,7 +121,7 @@ class GeomorphTest {
     }
 
     /**
-     * The issue's check: along a scripted approach to a ridge, the camera moving 0.75 m a frame, no vertex drawn in two
+     * The check: along a scripted approach to a ridge, the camera moving 0.75 m a frame, no vertex drawn in two
      * consecutive frames moves more than 0.5 px between them at 1280 × 720 (both positions seen through the later
      * frame's camera, so the camera's own motion is left out), and every patch sharing a vertex draws it at the same
      * height (no crack). With morphing off, level changes move vertices by more than that.

@@ -177,7 +177,7 @@ class BandedHeightsTest {
     }
 
     /**
-     * The issue's overview, smaller: 512² samples 128 m apart (level 6, 65 km a side, the overview's area). Its
+     * The overview (`heightmap --overview`), smaller: 512² samples 128 m apart (level 6, 65 km a side, the overview's area). Its
      * normalised autocorrelation has no peak above 0.2 beyond the longest wavelength (2048 m; nearer lags are the
      * mountains' own shape); over 4 seeds it measured 0.10 .. 0.11. The periodic tile of 4096 m, sampled the same
      * way, peaks near 1.0 at its period: the measure sees a repeat.
