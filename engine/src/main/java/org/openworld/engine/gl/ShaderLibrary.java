@@ -73,6 +73,11 @@ public final class ShaderLibrary {
         return program;
     }
 
+    /** The labels of the live programs ({@code system.role}), in the order they were made; null for unlabelled. */
+    public List<String> labels() {
+        return live.stream().map(ShaderProgram::label).toList();
+    }
+
     public ShaderSources sources() {
         return sources;
     }

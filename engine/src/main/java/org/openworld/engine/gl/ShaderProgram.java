@@ -210,6 +210,11 @@ public final class ShaderProgram implements Labelled {
         }
     }
 
+    /** The program's name, as {@link #label(String)} set it; null until then. */
+    public String label() {
+        return label;
+    }
+
     /** Names the program; a {@link #reload()} names the rebuilt one the same. */
     @Override
     public void label(String name) {

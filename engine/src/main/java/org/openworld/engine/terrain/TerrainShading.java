@@ -1,8 +1,6 @@
 package org.openworld.engine.terrain;
 
-import java.util.ArrayList;
 import java.util.EnumMap;
-import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
 import org.openworld.engine.core.EngineContext;
@@ -11,6 +9,8 @@ import org.openworld.engine.gl.DrawStats;
 import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.terrain.TerrainVariant.Kind;
+import org.openworld.engine.terrain.TerrainVariant.Light;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.lod.PatchList;
@@ -52,9 +52,10 @@ import org.openworld.engine.terrain.mesh.PatchRenderer;
  * (figure 4).
  *
  * <p><b>Cost.</b> On llvmpipe, at 1280×720 over the peer's view, the near program costs about four times the far one
- * per pixel (docs/terrain.md has the measured split). Eight programs are compiled at start instead of two, and three
- * more for each of the quilted and the stochastic tilings ({@link MaterialSettings.Tiling}: the two near programs and
- * the bake come in each; on the unbounded world the two near and the two far programs).
+ * per pixel (docs/terrain.md has the measured split).
+ *
+ * <p><b>Variants.</b> Each program is a {@link TerrainVariant} (kind × tiling × cliffs × light × layout), which names
+ * its defines and its role; they compile on their first use, so only the ones a frame draws are built.
  */
 final class TerrainShading {
 
@@ -83,6 +84,8 @@ final class TerrainShading {
     private TerrainMaterials materials;
     private boolean quilted;
     private final PatchLayout layout;
+    /** Where the programs read the heights, as their variants name it. */
+    private final TerrainVariant.Layout heights;
     /** How the ground beyond the far distance is coloured: the tile's bake, or the materials' coarse scale. */
     private final Far far;
     private final int unitMaterials;
@@ -131,13 +134,14 @@ final class TerrainShading {
         tiles = TerrainTextures.generate(seed);
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         this.layout = layout;
+        heights = TerrainVariant.Layout.of(layout.streamed());
         this.far = far.apply(this);
         MaterialSettings.Cliffs cliffs = context.settings().get(MaterialSettings.class).cliffs();
-        shadowed = lit(context, "", List.of(), cliffs, unitHeights);
-        unshadowed = lit(context, ".unshadowed", List.of("SUN_UNSHADOWED"), cliffs, unitHeights);
-        ShaderProgram levels = variant(context, "program.levels", this.far.levelsDefines(), unitHeights);
+        shadowed = lit(context, Light.SHADOWED, cliffs, unitHeights);
+        unshadowed = lit(context, Light.UNSHADOWED, cliffs, unitHeights);
+        ShaderProgram levels = variant(context, TerrainVariant.of(Kind.LEVELS, heights), unitHeights);
         levelsUniforms = this.far.reads(levels, unitHeights); // the far look, tinted
-        tangentSpace = variant(context, "program.tangent-space", List.of("TERRAIN_TANGENT_SPACE"), unitHeights);
+        tangentSpace = variant(context, TerrainVariant.of(Kind.TANGENT_SPACE, heights), unitHeights);
         tangentSpace.sampler(layout.slopeSampler(), unitGradients);
     }
 
@@ -156,21 +160,19 @@ final class TerrainShading {
     }
 
     /**
-     * The near programs ({@code program}, {@code program.quilted}, {@code program.stochastic}) and the far ones
-     * ({@code program.far}: on the tile one that reads the bake, on the unbounded world one per tiling, with the
-     * tiling's suffix), {@code suffix} on their roles; the near ones project the rock as {@code cliffs} says.
+     * The near programs, one per tiling, and the far ones (on the tile one that reads the bake, on the unbounded
+     * world one per tiling) for this light; the near ones project the rock as {@code cliffs} says.
      */
-    private Lit lit(EngineContext context, String suffix, List<String> light, MaterialSettings.Cliffs cliffs,
-                    int unitHeights) {
+    private Lit lit(EngineContext context, Light light, MaterialSettings.Cliffs cliffs, int unitHeights) {
         Map<MaterialSettings.Tiling, Near> near = new EnumMap<>(MaterialSettings.Tiling.class);
         Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far = new EnumMap<>(MaterialSettings.Tiling.class);
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
-            ShaderProgram p = variant(context, "program" + tiling.roleSuffix() + suffix,
-                    with(with(light, tiling.defines()), cliffs.defines()), unitHeights);
+            ShaderProgram p = variant(context, new TerrainVariant(Kind.NEAR, tiling, cliffs, light, heights),
+                    unitHeights);
             nearSamplers(p, unitHeights);
             near.put(tiling, new Near(TerrainMaterials.uniforms(p), p.vec2("farBand")));
         }
-        this.far.programs(context, suffix, light, unitHeights, far);
+        this.far.programs(context, light, unitHeights, far);
         return new Lit(near, far);
     }
 
@@ -181,9 +183,7 @@ final class TerrainShading {
      * baked far material. Its maps' samplers are set; {@link #bindFarField} binds the materials.
      */
     ShaderProgram farField(EngineContext context, int unitHeights) {
-        List<String> defines = with(layout.defines(), List.of("SUN_UNSHADOWED", "TERRAIN_FAR", "TERRAIN_FARFIELD"));
-        ShaderProgram p = context.own("program.far-field", context.shaders().program(
-                with(defines, far.farFieldDefines()), "terrain/farfield.vert", "terrain/terrain.frag"));
+        ShaderProgram p = TerrainVariant.of(Kind.FAR_FIELD, heights).program(context);
         p.use();
         p.sampler("heights", unitHeights);
         p.sampler("snowMap", unitHeights + 2);
@@ -211,21 +211,14 @@ final class TerrainShading {
         far.fadesInto(p);
     }
 
-    private static List<String> with(List<String> defines, List<String> more) {
-        List<String> all = new ArrayList<>(defines);
-        all.addAll(more);
-        return all;
-    }
-
     private static void farSamplers(ShaderProgram p, int unitFar) {
         p.sampler("farColour", unitFar);
         p.sampler("farSlope", unitFar + 1);
     }
 
     /** A terrain program with the patch uniforms and the maps' extent set. */
-    private ShaderProgram variant(EngineContext context, String role, List<String> defines, int unitHeights) {
-        ShaderProgram p = context.own(role, context.shaders().program(with(defines, layout.defines()),
-                "terrain/terrain.vert", "terrain/terrain.frag"));
+    private ShaderProgram variant(EngineContext context, TerrainVariant variant, int unitHeights) {
+        ShaderProgram p = variant.program(context);
         layout.apply(p, unitHeights);
         layout.extentUniforms(p);
         return p;
@@ -275,17 +268,13 @@ final class TerrainShading {
 
     /** How the ground beyond the far distance D is coloured, and what the near programs fade into before D. */
     private interface Far {
-        /** The defines of the levels view (figure 6), which shows the far look tinted by level. */
-        List<String> levelsDefines();
         /** Sets the samplers a program reading the far look needs; its material uniforms. */
         TerrainMaterials.Uniforms reads(ShaderProgram p, int unitHeights);
         /** Sets what a near program reads of the far look it fades into. */
         void fadesInto(ShaderProgram p);
         /** Makes the far programs of one kind of sunlight, per tiling, into {@code far}. */
-        void programs(EngineContext context, String suffix, List<String> light, int unitHeights,
+        void programs(EngineContext context, Light light, int unitHeights,
                       Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far);
-        /** The far field's further defines. */
-        List<String> farFieldDefines();
         /** Brings the far look up to these settings (bakes again if they changed it). */
         void refresh(MaterialSettings settings);
         /** Binds what the far programs read. */
@@ -304,11 +293,6 @@ final class TerrainShading {
         }
 
         @Override
-        public List<String> levelsDefines() {
-            return List.of("TERRAIN_FAR", "TERRAIN_LEVELS");
-        }
-
-        @Override
         public TerrainMaterials.Uniforms reads(ShaderProgram p, int unitHeights) {
             farSamplers(p, unitFar);
             return TerrainMaterials.lightUniforms(p);
@@ -320,10 +304,10 @@ final class TerrainShading {
         }
 
         @Override
-        public void programs(EngineContext context, String suffix, List<String> light, int unitHeights,
+        public void programs(EngineContext context, Light light, int unitHeights,
                              Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far) {
             // one program: the baked material, lit, its sky per vertex
-            ShaderProgram f = variant(context, "program.far" + suffix, with(light, List.of("TERRAIN_FAR")),
+            ShaderProgram f = variant(context, TerrainVariant.far(MaterialSettings.Tiling.REPEAT, light, heights),
                     unitHeights);
             farSamplers(f, unitFar);
             f.sampler("snowMap", unitHeights + 2); // the sky's visibility, per vertex
@@ -331,11 +315,6 @@ final class TerrainShading {
             for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
                 far.put(tiling, baked);
             }
-        }
-
-        @Override
-        public List<String> farFieldDefines() {
-            return List.of();
         }
 
         @Override
@@ -358,11 +337,6 @@ final class TerrainShading {
     private final class Coarse implements Far {
 
         @Override
-        public List<String> levelsDefines() {
-            return List.of("TERRAIN_LEVELS");
-        }
-
-        @Override
         public TerrainMaterials.Uniforms reads(ShaderProgram p, int unitHeights) {
             nearSamplers(p, unitHeights);
             return TerrainMaterials.uniforms(p);
@@ -374,20 +348,14 @@ final class TerrainShading {
         }
 
         @Override
-        public void programs(EngineContext context, String suffix, List<String> light, int unitHeights,
+        public void programs(EngineContext context, Light light, int unitHeights,
                              Map<MaterialSettings.Tiling, TerrainMaterials.Uniforms> far) {
             for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
                 // the materials at the coarse scale, its sky per vertex
-                ShaderProgram f = variant(context, "program.far" + tiling.roleSuffix() + suffix,
-                        with(with(light, tiling.defines()), List.of("TERRAIN_FAR", "MAT_COARSE_ONLY")), unitHeights);
+                ShaderProgram f = variant(context, TerrainVariant.far(tiling, light, heights), unitHeights);
                 nearSamplers(f, unitHeights);
                 far.put(tiling, TerrainMaterials.uniforms(f));
             }
-        }
-
-        @Override
-        public List<String> farFieldDefines() {
-            return List.of("MAT_COARSE_ONLY");
         }
 
         @Override

@@ -159,8 +159,8 @@ public final class TerrainSystem implements EngineSystem {
         context.world().setResource(new RenderOrigin(tree.extent()));
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets, ground.cullHeights()));
-        depthProgram = context.own("depth", context.shaders().program(layout.defines(), "terrain/terrain.vert",
-                "terrain/depth.frag"));
+        depthProgram = TerrainVariant.of(TerrainVariant.Kind.DEPTH, TerrainVariant.Layout.of(layout.streamed()))
+                .program(context);
         layout.apply(depthProgram, UNIT_HEIGHTS);
         publishSnowLine(context.world(), settings);
         farField = ground.farField(context, UNIT_HEIGHTS);

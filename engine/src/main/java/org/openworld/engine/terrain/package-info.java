@@ -13,7 +13,8 @@
  *   <li>{@code terrain.material}: the surface, the material textures, snow, sky occlusion, the far material;</li>
  *   <li>{@code terrain.stream}: the unbounded world's levels streamed to the GPU around the camera;</li>
  *   <li>{@code terrain}, this package: the system that builds the world and runs the stages each pass, the far
- *       field, the programs. What it draws is a {@link org.openworld.engine.terrain.Ground}: a source of heights
+ *       field, the programs (each a {@link org.openworld.engine.terrain.TerrainVariant}, which names its defines
+ *       and its role). What it draws is a {@link org.openworld.engine.terrain.Ground}: a source of heights
  *       ({@link org.openworld.engine.terrain.heights.HeightSource}) with the scheme that brings its levels to the
  *       GPU, a tile's whole pyramid or streamed levels; it asks both the same questions.</li>
  * </ol>

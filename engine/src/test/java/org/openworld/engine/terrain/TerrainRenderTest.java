@@ -26,6 +26,7 @@ import org.openworld.engine.gl.Image;
 import org.openworld.engine.sky.SkySystem;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.material.MaterialSettings;
 import org.openworld.engine.terrain.material.SnowLines;
 
 /**
@@ -184,6 +185,34 @@ class TerrainRenderTest {
             engine.collectFrames(true, r -> livePatches[0] = r.counters().get("terrain.main.patches"));
             assertTrue(frozenPatches[0] > 0 && frozenPatches[0] < livePatches[0],
                     "frozen frustum draws " + frozenPatches[0] + " patches, the live one " + livePatches[0]);
+        }
+    }
+
+    /**
+     * The terrain's programs are its variants, each labelled {@code terrain.} and the variant's role: once the
+     * default settings drew a frame, the live programs named like a variant are exactly the ones
+     * {@link TerrainVariant#all} lists for the world's layout (most not compiled yet: they compile on first use).
+     */
+    @ParameterizedTest
+    @EnumSource(TerrainSettings.World.class)
+    void theProgramsOwnedAreTheVariantsOfTheLayout(TerrainSettings.World world) {
+        try (Engine engine = GlTestSupport.engine(GL.context(), 64, 36,
+                List.of("terrain.size=256", "lod.patch-vertices=33", "terrain.world=" + world),
+                new TerrainSystem(), new CullingSystem())) {
+            frame(engine);
+            TerrainVariant.Layout layout = world == TerrainSettings.World.TILE
+                    ? TerrainVariant.Layout.TILE : TerrainVariant.Layout.CLIPMAP;
+            Set<String> expected = new HashSet<>();
+            for (TerrainVariant v : TerrainVariant.all(layout, MaterialSettings.DEFAULTS.cliffs())) {
+                expected.add("terrain." + v.role());
+            }
+            Set<String> live = new HashSet<>();
+            for (String label : engine.shaders().labels()) {
+                if (label != null && (label.startsWith("terrain.program") || label.equals("terrain.depth"))) {
+                    assertTrue(live.add(label), "one program per role: " + label);
+                }
+            }
+            assertEquals(expected, live);
         }
     }
 

@@ -1,6 +1,5 @@
 package org.openworld.engine.terrain.mesh;
 
-import java.util.List;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.heights.HeightMap;
@@ -41,11 +40,6 @@ public record PatchLayout(int mapSize, double spacing, int cells, boolean period
 
     public boolean streamed() {
         return clipSize > 0;
-    }
-
-    /** The defines the programs reading this layout compile with. */
-    public List<String> defines() {
-        return streamed() ? List.of("TERRAIN_CLIPMAP") : List.of();
     }
 
     /** Metres the map's texture coordinates span: the tile, or level 0's window of the clipmap. */
