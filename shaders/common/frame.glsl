@@ -47,7 +47,7 @@ vec3 skyIrradiance(vec3 n) {
         + frame.sky[8].rgb * (n.x * n.x - n.z * n.z);
 }
 
-// The same where the relief hides part of the sky and leaves `visible` of it (engine: terrain.SkyVisibility): the
+// The same where the relief hides part of the sky and leaves `visible` of it (engine: HorizonSearch): the
 // hidden share sees the terrain instead, lit as the sky system reckons (sky.SkyLight#irradiance).
 vec3 skyIrradiance(vec3 n, float visible) {
     return mix(frame.sky[9].rgb, skyIrradiance(n), visible);

@@ -1,6 +1,6 @@
 #version 330 core
 // One triangle over the whole target (or viewport): the far material's bake (terrain/bake.frag) and the unbounded
-// world's sky visibility per block (terrain/sky.frag).
+// world's sky visibility per block (terrain/sky.frag) and the tile's (terrain/tilesky.frag).
 layout(location = 0) in vec2 position;
 
 void main() {

@@ -22,7 +22,7 @@
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
 //   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance)
-//      where the relief leaves the sky visible, the light of the terrain where it hides it (SkyVisibility), a
+//      where the relief leaves the sky visible, the light of the terrain where it hides it (HorizonSearch), a
 //      normalised Blinn-Phong highlight and a Fresnel-weighted reflection of the environment map (the sky
 //      system's), both scaled by the gloss map; each highlight widened by the normal's spread over the pixel
 //      (specular anti-aliasing, materials.specular-aa)
@@ -55,7 +55,7 @@ in vec3 skyLight;
 #endif
 
 // The light of the sky and of the ground around on the normal n, where the relief leaves `visible` of the sky
-// (engine: SkyVisibility; frame.glsl skyIrradiance); the far ground's comes per vertex, already occluded.
+// (engine: HorizonSearch; frame.glsl skyIrradiance); the far ground's comes per vertex, already occluded.
 vec3 matSkyLight(vec3 n, float visible) {
 #ifdef TERRAIN_FAR
     return skyLight;
@@ -80,7 +80,7 @@ struct TerrainSurface {
     vec3 wsBitangent;  // unit, along +Z tilted with the slope: normalize(vec3(0, dh/dz, 1))
     float height01;    // height normalised over the map's range, 0 = lowest, 1 = highest
     float snow;        // snow-map coverage here, 0..1 (already filtered)
-    float skyVisibility; // share of the sky the relief leaves here, 0..1 (SkyVisibility; the far ground: per vertex)
+    float skyVisibility; // share of the sky the relief leaves here, 0..1 (HorizonSearch; the far ground: per vertex)
 };
 
 const float MAT_GRASS = 0.0;         // texture array layers (TerrainTextures.Material order)

@@ -1,23 +1,15 @@
 #version 330 core
-// The unbounded world's share of the sky seen (StreamedSky): SkyVisibility's horizon search for the texels of one
-// streamed block of level L, marched over the clipmap's own levels, written into the g channel of the snow map's
-// layer L (the caller masks r, the snow, off). Defined by the caller:
-//   SKY_DIRECTIONS  the azimuths searched (SkyVisibility.DIRECTIONS)
-//   SKY_STEPS       the most distances searched, level 0's (SkyVisibility.distances)
+// The unbounded world's share of the sky seen (StreamedSky): the horizon search (terrain/horizon.glsl) for the
+// texels of one streamed block of level L, marched over the clipmap's own levels, written into the g channel of the
+// snow map's layer L (the caller masks r, the snow, off).
 
 uniform sampler2DArray heights; // layer k: level k's window, world sample i at texel i & (clipSize - 1)
 uniform sampler2DArray slopes;  // layer L: (dh/dx, dh/dz) of level L, as the heights
 uniform isampler2DArray held;   // layer k, one texel a slot: the block (x, z) whose heights the slot's texels hold
 uniform int clipSize;           // samples per side of every window, a power of two
 uniform int blockShift;         // log2 of a block's side
-uniform int levels;             // the levels streamed
-uniform float spacing0;         // metres between level 0's samples; level k's are 2^k times as far apart
-uniform int level;              // L, the block's level
 uniform int originX;            // level-L sample index of the block's first sample, along x
 uniform int originZ;            // and along z
-uniform int steps;              // distances searched from level L
-uniform float searchDistance[SKY_STEPS]; // metres, SkyVisibility.distances(d_L)
-uniform int searchLevel[SKY_STEPS];      // the level read at each, SkyVisibility.levelAt
 
 out vec4 visibility;
 
@@ -48,14 +40,7 @@ bool heightOf(int k, ivec2 base, vec2 offset, out float h) {
     return true;
 }
 
-// SkyVisibility.visibleShare: cos² of the horizon's rise above the tangent plane, both given as slopes.
-float visibleShare(float horizon, float plane) {
-    if (horizon <= plane) {
-        return 1.0;
-    }
-    float c = 1.0 + horizon * plane;
-    return c <= 0.0 ? 0.0 : c * c / ((1.0 + horizon * horizon) * (1.0 + plane * plane));
-}
+#include "terrain/horizon.glsl"
 
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
@@ -63,26 +48,5 @@ void main() {
     ivec2 p = origin + texel - (origin & (clipSize - 1)); // level-L sample index: the block lies in one slot
     float h0 = texelFetch(heights, ivec3(texel, level), 0).r;
     vec2 slope = texelFetch(slopes, ivec3(texel, level), 0).rg;
-    float sum = 0.0;
-    for (int m = 0; m < SKY_DIRECTIONS; m++) {
-        float angle = 6.28318531 * float(m) / float(SKY_DIRECTIONS);
-        vec2 direction = vec2(cos(angle), sin(angle));
-        float horizon = -1e30; // no ground found: the sky down to the plane
-        for (int j = 0; j < steps; j++) {
-            // the level SkyVisibility reads at this distance or, where its window does not hold the point yet, the
-            // next coarser one that does; a distance no level holds is left out
-            for (int k = searchLevel[j]; k < levels; k++) {
-                int shift = k - level;
-                ivec2 base = p >> shift;
-                vec2 within = vec2(p - (base << shift)) / float(1 << shift);
-                float h;
-                if (heightOf(k, base, within + direction * (searchDistance[j] / (spacing0 * float(1 << k))), h)) {
-                    horizon = max(horizon, (h - h0) / searchDistance[j]);
-                    break;
-                }
-            }
-        }
-        sum += visibleShare(horizon, dot(slope, direction));
-    }
-    visibility = vec4(0.0, sum / float(SKY_DIRECTIONS), 0.0, 0.0);
+    visibility = vec4(0.0, skyVisible(p, h0, slope), 0.0, 0.0);
 }

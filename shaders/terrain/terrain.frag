@@ -37,7 +37,7 @@ uniform float uFarSnow;        // the level ground's snow: what the snow rule le
   #endif
 #else
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
-uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (SkyVisibility)
+uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (HorizonSearch)
 uniform sampler2D farColour;   // baked steps 1-3 of material.glsl (FarMaterial): rgb albedo (sRGB stored), a gloss
 uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5, ba the ground's (dh/dx, dh/dz)
 uniform float extent;          // metres per map tile

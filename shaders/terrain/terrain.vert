@@ -40,7 +40,7 @@ uniform sampler2DArray snowMap; // g: the share of the sky seen (StreamedSky), a
 uniform float clipExtent;       // metres across level 0's window
   #else
 uniform sampler2D farSlope; // ba: the ground's (dh/dx, dh/dz) over the tile (FarMaterial), as in terrain.frag
-uniform sampler2D snowMap;  // g: the share of the sky the relief leaves (SkyVisibility), as in terrain.frag
+uniform sampler2D snowMap;  // g: the share of the sky the relief leaves (HorizonSearch), as in terrain.frag
 uniform float extent;       // metres per map tile
   #endif
 uniform float uMatSkyOcclusion; // material.glsl's switch (materials.sky-occlusion)

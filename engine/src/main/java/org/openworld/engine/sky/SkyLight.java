@@ -96,7 +96,7 @@ public final class SkyLight {
         Vector3d sunOnGround = light.sun().mul(Math.max(toSun.y(), 0)).add(night.onLevelGround());
         Vector3d ground = new Vector3d(sunOnGround).add(light.ambient()).mul(groundAlbedo / Math.PI);
         // the terrain that hides the sky from a place faces that place; seen from all round, half of it faces the
-        // sun: so its light is the open ground's with half the sun's (SkyVisibility, the hidden share)
+        // sun: so its light is the open ground's with half the sun's (HorizonSearch, the hidden share)
         Vector3d hidden = sunOnGround.mul(0.5).add(light.ambient()).mul(groundAlbedo);
         return sky.addLowerHemisphere(ground).hiddenBy(hidden);
     }

@@ -11,22 +11,20 @@ import org.openworld.engine.terrain.heights.HeightSource;
 import org.openworld.engine.terrain.heights.SpectralSynthesis;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TerrainSettings;
-import org.openworld.engine.terrain.material.SkyVisibility;
 import org.openworld.engine.terrain.material.SnowMap;
 
 /**
  * What the terrain is made of before anything reaches the GPU: the height pyramid (paper 2.1 and 2.5), the snow
- * map (paper 2.2) and how much sky each place sees. Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
+ * map (paper 2.2). Pure CPU work with no OpenGL, so it can run on a worker thread or in a command-line tool.
  *
  * @param pyramid the heights at every power-of-two resolution, level 0 the full map
  * @param snow    where snow lies
- * @param sky     the share of the sky the relief leaves each place, for the light in the shadows
  * @param lowest  the height, metres, that the materials and the snow read as normalised 0: the map's lowest sample,
  *                or the file's 0 m for a map at true scale
  * @param highest the height read as normalised 1: the map's highest sample, or
  *                {@link ElevationImport#TRUE_SCALE_RELIEF} above the file's 0 m
  */
-public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky, double lowest, double highest) {
+public record TerrainData(HeightPyramid pyramid, SnowMap snow, double lowest, double highest) {
 
     /** Stage names as {@link StageTimes} records them. */
     public static final String SYNTHESIS = "synthesis";
@@ -34,7 +32,6 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
     public static final String SAMPLING = "sampling";
     public static final String PYRAMID = "pyramid";
     public static final String SNOW_MAP = "snow map";
-    public static final String SKY_VISIBILITY = "sky view";
     public static final String EROSION = "erosion";
 
     /** Makes a tile's data from the settings and the seed: {@link #create}, or a tile of another source. */
@@ -45,7 +42,7 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
 
     /**
      * Makes the heights (synthesised from the seed, or imported when {@link TerrainSettings#importFile()} is set),
-     * their pyramid, the snow map and the sky's visibility, timing each stage into {@code times}.
+     * their pyramid and the snow map, timing each stage into {@code times}.
      *
      * @throws HeightImportException if the import file cannot be used
      */
@@ -67,7 +64,7 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
 
     /**
      * A tile of any height source: level 0's samples over the tile of {@code size²} samples centred on the origin,
-     * then the pyramid, the snow map and the sky's visibility as for a generated tile.
+     * then the pyramid and the snow map as for a generated tile.
      *
      * @param periodic whether the source repeats every {@code size} samples, so that copies of the tile join
      */
@@ -87,7 +84,6 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, SkyVisibility sky
                                   double highest) {
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
-        SkyVisibility sky = times.time(SKY_VISIBILITY, () -> SkyVisibility.of(pyramid));
-        return new TerrainData(pyramid, snow, sky, lowest, highest);
+        return new TerrainData(pyramid, snow, lowest, highest);
     }
 }

@@ -80,7 +80,7 @@ public final class TerrainSystem implements EngineSystem {
     private static final int UNIT_SNOW = UNITS.add("snowMap").unit();
 
     private final Consumer<String> progress;
-    /** Makes a tile's heights, pyramid, snow map and sky view: generated or imported unless told otherwise. */
+    /** Makes a tile's heights, pyramid and snow map: generated or imported unless told otherwise. */
     private final TerrainData.Maker tiles;
     /** The heights and how their levels reach the GPU: a tile, or the unbounded world streamed. */
     private Ground ground;

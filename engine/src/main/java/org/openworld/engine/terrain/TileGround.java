@@ -16,9 +16,10 @@ import org.openworld.engine.terrain.material.TerrainMaps;
 import org.openworld.engine.terrain.mesh.PatchLayout;
 
 /**
- * A tile of heights, generated or imported: its pyramid, snow map and sky view made at start ({@link TerrainData}),
- * all on the GPU ({@link TerrainMaps}), its quadtree's boxes exact. A periodic tile is drawn as copies around the
- * camera's up to {@link CopyLattice#COPY_DISTANCE}, then the far field; an imported map once, with its edge.
+ * A tile of heights, generated or imported: its pyramid and snow map made at start ({@link TerrainData}), all on
+ * the GPU with the sky view baked there ({@link TerrainMaps}), its quadtree's boxes exact. A periodic tile is drawn
+ * as copies around the camera's up to {@link CopyLattice#COPY_DISTANCE}, then the far field; an imported map once,
+ * with its edge.
  */
 public final class TileGround implements Ground {
 
@@ -40,13 +41,13 @@ public final class TileGround implements Ground {
         HeightMap base = data.pyramid().base();
         tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         layout = PatchLayout.tile(base, cells, data.lowest(), data.highest());
-        maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sky());
+        maps = new TerrainMaps(context, data.pyramid(), data.snow(), unitHeights, times);
         shading = TerrainShading.baked(context, layout, base, seed, unitHeights, times);
         bind(unitHeights, unitGradients, unitSnow);
         shading.bake(context.settings().get(MaterialSettings.class));
     }
 
-    /** The tile's heights, pyramid, snow map and sky view. */
+    /** The tile's heights, pyramid and snow map. */
     public TerrainData data() {
         return data;
     }
@@ -100,7 +101,7 @@ public final class TileGround implements Ground {
 
     @Override
     public void prepare(PatchList patches, float[] copyOffsets, Pass pass) {
-        // the tile's sky view was made with its snow map at start
+        // the tile's sky view was baked with its maps at start
     }
 
     /** Reads the pyramid level of the streamed world's coarsest spacing: its periodic copies go on for ever. */

@@ -28,8 +28,7 @@ class TerrainDataTest {
         List<String> heard = new ArrayList<>();
         StageTimes times = new StageTimes(stage -> heard.add(stage.name()));
         TerrainData data = TerrainData.create(TestTerrain.settings("terrain.size=256"), 1, times);
-        List<String> expected = List.of(TerrainData.SYNTHESIS, TerrainData.PYRAMID, TerrainData.SNOW_MAP,
-                TerrainData.SKY_VISIBILITY);
+        List<String> expected = List.of(TerrainData.SYNTHESIS, TerrainData.PYRAMID, TerrainData.SNOW_MAP);
         assertEquals(expected, times.stages().stream().map(StageTimes.Stage::name).toList());
         assertEquals(expected, heard, "the listener hears each stage as it ends");
         assertTrue(times.stages().stream().allMatch(s -> s.ms() >= 0));

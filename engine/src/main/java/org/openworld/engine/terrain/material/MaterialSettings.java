@@ -12,7 +12,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param snowMode    where snow lies: from the snow map (figure 1b) or above a fixed height (figure 1a)
  * @param normalMap   perturb the normal with the materials' tangent-space normal maps (figure 3, "normal")
  * @param glossMap    add sun highlights and a sky reflection, scaled per texel by the gloss maps (figure 3, "gloss")
- * @param skyOcclusion let the relief hide its share of the sky's light ({@link SkyVisibility}): in valleys and at the
+ * @param skyOcclusion let the relief hide its share of the sky's light ({@link HorizonSearch}): in valleys and at the
  *                    feet of cliffs that share is lit by the terrain instead, warmer, and darker under a low sun
  * @param detailScale side of the fine texture tile (the synthesised exemplar) on the ground; the coarse tile that is
  *                    blended in to hide the repetition is {@code shaders/terrain/material.glsl}'s

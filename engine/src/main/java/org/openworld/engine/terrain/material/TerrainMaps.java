@@ -10,6 +10,7 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.HeightPyramid;
+import org.openworld.engine.terrain.heights.StageTimes;
 
 /**
  * The terrain's maps on the GPU, each sampled where the world position says:
@@ -22,8 +23,8 @@ import org.openworld.engine.terrain.heights.HeightPyramid;
  *   <li>{@code snow}: r the snow map's coverage, blurred by {@value #SNOW_BLUR_PASSES} binomial passes (a Gaussian
  *       of σ ≈ 1.7 texels) before upload: the 0/1 map's texel squares would otherwise show as blocks close up, and
  *       the blur turns them into soft drifts that the material's threshold shapes; g the share of the sky the
- *       relief leaves each place ({@link SkyVisibility}), resampled to the snow map's grid. RG8 with mips: the
- *       material reads both with the one lookup it already made for the snow.</li>
+ *       relief leaves each place ({@link TileSky}, baked on the GPU from the heights), resampled to the snow map's
+ *       grid. RG8 with mips: the material reads both with the one lookup it already made for the snow.</li>
  * </ul>
  * Periodic maps repeat; imported ones clamp. Uploads go in strips of rows, so an 8192² map needs a staging buffer
  * of a few megabytes, not of the whole map.
@@ -39,8 +40,14 @@ public final class TerrainMaps {
     public final Texture2D gradients;
     public final Texture2D snow;
 
-    /** Makes and fills the three maps, handed to the system's owner as {@code terrain.heights}, ... */
-    public TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap, SkyVisibility sky) {
+    /** The stage that bakes the sky's visibility, as {@link StageTimes} records it. */
+    public static final String SKY_VIEW = "sky view";
+
+    /**
+     * Makes and fills the three maps, handed to the system's owner as {@code terrain.heights}, ...; the sky's
+     * visibility is baked with the heights bound to {@code unit}, timed into {@code times}.
+     */
+    public TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap, int unit, StageTimes times) {
         GlContext gl = context.gl();
         HeightMap base = pyramid.base();
         Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
@@ -55,6 +62,7 @@ public final class TerrainMaps {
         int n = snowMap.size();
         snow = context.own("snow", Texture2D.withMips(gl, n, n, Format.RG8, wrap));
         byte[] soft = blur(snowMap.coverage(), n, snowMap.periodic());
+        TileSky sky = times.time(SKY_VIEW, () -> TileSky.bake(gl, context.shaders(), heights, pyramid, unit));
         byte[] visible = sky.resampled(n);
         ByteBuffer texels = MemoryUtil.memAlloc(2 * soft.length);
         try {

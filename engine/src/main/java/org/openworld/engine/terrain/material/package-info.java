@@ -29,11 +29,13 @@
  * the repetition measure reads 0.06 / 0.08 / 0.04 (docs/terrain.md section 4).
  *
  * <p><b>The sky the relief hides.</b> Shadowed ground is lit by the sky's irradiance for its normal,
- * E(n) from nine spherical-harmonic factors (the sky system's); {@link org.openworld.engine.terrain.material.SkyVisibility}
+ * E(n) from nine spherical-harmonic factors (the sky system's); {@link org.openworld.engine.terrain.material.HorizonSearch}
  * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
  * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
- * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. Once at start
- * (about half a second on two cores, at most 512² samples), stored as the snow texture's second channel, so no lookup is added. Limits:
+ * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. One way for every
+ * source, on the GPU ({@code shaders/terrain/horizon.glsl}): the tile's once at start over its level of at most 512²
+ * samples ({@link org.openworld.engine.terrain.material.TileSky}), the streamed world's per block; stored as the snow
+ * texture's second channel, so no lookup is added. Limits:
  * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
  *
  * <p><b>Cliffs.</b> Projected from above, texture coordinates (x, z) stretch a face of slope a by

@@ -21,13 +21,13 @@ import org.openworld.engine.gl.TextureArray;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.lod.PatchList;
-import org.openworld.engine.terrain.material.SkyVisibility;
+import org.openworld.engine.terrain.material.HorizonSearch;
 
 /**
  * The unbounded world's share of the sky seen, made on the GPU as the blocks stream ({@link UnboundedWorld}): the
- * tile's {@link SkyVisibility} (the same azimuths, distances, level choice and {@code V = (1/N) Σ cos² α_φ}), run by
- * {@code shaders/terrain/sky.frag} over the 64² texels of one block of level L, reading the clipmap's own height
- * levels, and written into the g channel of the snow map's layer L (the snow in r is masked off). One full-screen
+ * {@link HorizonSearch} the tile's {@code TileSky} runs (the same azimuths, distances, level choice and
+ * {@code V = (1/N) Σ cos² α_φ}), by {@code shaders/terrain/sky.frag} over the 64² texels of one block of level L,
+ * reading the clipmap's own height levels, and written into the g channel of the snow map's layer L (the snow in r is masked off). One full-screen
  * triangle per block, the viewport on the block's texels: GL 3.3, no compute.
  *
  * <p><b>When.</b> A block is shaded once the heights its search reads have arrived ({@link StreamedWorld#skyReady}):
@@ -72,12 +72,9 @@ final class StreamedSky {
     /** Layer k, one texel a slot: the block (x, z) whose heights the slot's texels hold; NOTHING before any. */
     private final TextureArray held;
     private final Framebuffer[] targets;
-    private final Uniform.Int level;
+    private final HorizonSearch.Uniforms search;
     private final Uniform.Int originX;
     private final Uniform.Int originZ;
-    private final Uniform.Int steps;
-    private final Uniform.Float[] searchDistance;
-    private final Uniform.Int[] searchLevel;
     private final ByteBuffer heldStaging;
     private final int unit;
     /** Blocks uploaded and not yet given their visibility, in the order they came. */
@@ -94,27 +91,16 @@ final class StreamedSky {
         this.block = StreamedWorld.BLOCK;
         this.unit = unit;
         int levels = stream.levels();
-        int most = SkyVisibility.distances(heights.spacing(0)).length;
-        program = context.own("sky", context.shaders().program(
-                List.of("SKY_DIRECTIONS " + SkyVisibility.DIRECTIONS, "SKY_STEPS " + most),
+        program = context.own("sky", context.shaders().program(HorizonSearch.defines(heights.spacing(0)),
                 "terrain/bake.vert", "terrain/sky.frag"));
+        search = new HorizonSearch.Uniforms(program, levels, heights.spacing(0), heights.spacing(0));
         program.sampler("heights", unit);
         program.sampler("slopes", unit + 1);
         program.sampler("held", unit + 2);
         program.int1("clipSize").set(size);
         program.int1("blockShift").set(Integer.numberOfTrailingZeros(block));
-        program.int1("levels").set(levels);
-        program.float1("spacing0").set((float) heights.spacing(0));
-        level = program.int1("level");
         originX = program.int1("originX");
         originZ = program.int1("originZ");
-        steps = program.int1("steps");
-        searchDistance = new Uniform.Float[most];
-        searchLevel = new Uniform.Int[most];
-        for (int j = 0; j < most; j++) {
-            searchDistance[j] = program.float1("searchDistance[" + j + "]");
-            searchLevel[j] = program.int1("searchLevel[" + j + "]");
-        }
         triangle = context.own(Mesh.fullScreenTriangle(context.gl()));
         int slots = size / block;
         held = context.own("clipmap.held",
@@ -223,15 +209,9 @@ final class StreamedSky {
 
     /** One block's pass: its level's distances and the levels they read, its texels of its layer. */
     private void shade(Block b) {
-        level.set(b.level);
+        search.set(b.level, targets.length, heights::spacing);
         originX.set((int) (b.x * block));
         originZ.set((int) (b.z * block));
-        double[] distances = SkyVisibility.distances(heights.spacing(b.level));
-        steps.set(distances.length);
-        for (int j = 0; j < distances.length; j++) {
-            searchDistance[j].set((float) distances[j]);
-            searchLevel[j].set(SkyVisibility.levelAt(distances[j], b.level, targets.length, heights::spacing));
-        }
         int slots = size / block;
         targets[b.level].bind();
         glViewport((int) (b.x & (slots - 1)) * block, (int) (b.z & (slots - 1)) * block, block, block);

@@ -14,7 +14,7 @@ import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.QuadtreeLod;
 import org.openworld.engine.terrain.lod.Residency;
 import org.openworld.engine.terrain.lod.TerrainQuadtree;
-import org.openworld.engine.terrain.material.SkyVisibility;
+import org.openworld.engine.terrain.material.HorizonSearch;
 
 /**
  * The unbounded world ({@code terrain.world=UNBOUNDED}) without its textures: the heights of
@@ -97,8 +97,8 @@ public final class StreamedWorld implements Residency, AutoCloseable {
         this.progress = progress;
         skyReach = new double[levels][levels];
         for (int l = 0; l < levels; l++) {
-            for (double r : SkyVisibility.distances(heights.spacing(l))) {
-                int k = SkyVisibility.levelAt(r, l, levels, heights::spacing);
+            for (double r : HorizonSearch.distances(heights.spacing(l))) {
+                int k = HorizonSearch.levelAt(r, l, levels, heights::spacing);
                 skyReach[l][k] = Math.max(skyReach[l][k], r);
             }
         }

@@ -15,8 +15,9 @@
  * {@code 10 · levels · S²} bytes of GPU memory (heights, slopes, snow), 20 MiB by default whatever the distance
  * flown; a 64² block takes 0.57–1.95 ms of a worker. Its snow ({@link org.openworld.engine.terrain.stream.StreamedSnow}) is
  * the tile's rule with a hash for a random stream, so blocks join without seams; coarser levels show its mean.
- * Its sky occlusion ({@link org.openworld.engine.terrain.stream.StreamedSky}) is the tile's V below, made on the GPU for
- * each block by a fragment pass that marches the clipmap's own levels once the heights it reads have arrived (a
+ * Its sky occlusion ({@link org.openworld.engine.terrain.stream.StreamedSky}) is the tile's V
+ * ({@link org.openworld.engine.terrain.material.HorizonSearch}), the same search run for each block by a fragment
+ * pass that marches the clipmap's own levels once the heights it reads have arrived (a
  * table of which block each slot holds keeps it off stale texels; beyond a window it falls back on a coarser level):
  * on llvmpipe several milliseconds a block, so the start shades only the blocks its first frame draws. Limits: one
  * geometric error per level (the world is statistically uniform), boxes the world's height bounds where no blocks

@@ -50,9 +50,9 @@ class SkyVisibilityTest {
         // each azimuth φ towards it, the sky below its elevation there, atan(tan 30° · cos φ)
         SkyVisibility kink = SkyVisibility.of(world((x, z) -> tan * Math.max(x, 0)), 0);
         double expected = 0;
-        for (int m = 0; m < SkyVisibility.DIRECTIONS; m++) {
-            double c = Math.cos(Math.atan(tan * Math.max(Math.cos(2 * Math.PI * m / SkyVisibility.DIRECTIONS), 0)));
-            expected += c * c / SkyVisibility.DIRECTIONS;
+        for (int m = 0; m < HorizonSearch.DIRECTIONS; m++) {
+            double c = Math.cos(Math.atan(tan * Math.max(Math.cos(2 * Math.PI * m / HorizonSearch.DIRECTIONS), 0)));
+            expected += c * c / HorizonSearch.DIRECTIONS;
         }
         // 0.02, 0.06 and 0.03: the horizon is searched over a height grid (16 m samples here) in a finite set of steps,
         // so an elevation is found to about a sample's angle; the cliff's foot, nearest the edge, errs most; the 8-bit
@@ -68,10 +68,10 @@ class SkyVisibilityTest {
         for (double d : new double[] {-96, -192, -400, -800}) {
             // closed form for the same azimuths: towards the cliff (cos φ > 0) its top stands at atan(H cos φ / d)
             double expected = 0;
-            for (int m = 0; m < SkyVisibility.DIRECTIONS; m++) {
-                double c = Math.cos(2 * Math.PI * m / SkyVisibility.DIRECTIONS);
+            for (int m = 0; m < HorizonSearch.DIRECTIONS; m++) {
+                double c = Math.cos(2 * Math.PI * m / HorizonSearch.DIRECTIONS);
                 double rise = c > 1e-9 ? Math.cos(Math.atan(height * c / -d)) : 1;
-                expected += rise * rise / SkyVisibility.DIRECTIONS;
+                expected += rise * rise / HorizonSearch.DIRECTIONS;
             }
             double measured = v.visibleAt(d, 0);
             assertEquals(expected, measured, 0.06, d + " m from the cliff");
@@ -95,23 +95,23 @@ class SkyVisibilityTest {
     @Test
     void theSearchGrowsFromOneSampleToTheReach() {
         for (double d : new double[] {1, 2, 8, 256}) {
-            double[] r = SkyVisibility.distances(d);
+            double[] r = HorizonSearch.distances(d);
             assertEquals(d, r[0], 0, "the first distance is one sample");
             for (int j = 1; j < r.length; j++) {
-                assertEquals(SkyVisibility.STEP_GROWTH, r[j] / r[j - 1], 1e-12);
+                assertEquals(HorizonSearch.STEP_GROWTH, r[j] / r[j - 1], 1e-12);
             }
-            assertTrue(r[r.length - 1] >= SkyVisibility.REACH_METRES, "the last reaches " + r[r.length - 1]);
-            assertTrue(r.length == 1 || r[r.length - 2] < SkyVisibility.REACH_METRES, "one step beyond at most");
+            assertTrue(r[r.length - 1] >= HorizonSearch.REACH_METRES, "the last reaches " + r[r.length - 1]);
+            assertTrue(r.length == 1 || r[r.length - 2] < HorizonSearch.REACH_METRES, "one step beyond at most");
         }
-        assertEquals(0, SkyVisibility.distances(2 * SkyVisibility.REACH_METRES).length, "beyond the reach: none");
+        assertEquals(0, HorizonSearch.distances(2 * HorizonSearch.REACH_METRES).length, "beyond the reach: none");
     }
 
     @Test
     void eachDistanceReadsTheCoarsestLevelAQuarterOfItApart() {
         int count = 8;
         for (int from = 0; from < count; from++) {
-            for (double r : SkyVisibility.distances(Math.scalb(2.0, from))) {
-                int k = SkyVisibility.levelAt(r, from, count, level -> Math.scalb(2.0, level));
+            for (double r : HorizonSearch.distances(Math.scalb(2.0, from))) {
+                int k = HorizonSearch.levelAt(r, from, count, level -> Math.scalb(2.0, level));
                 assertTrue(k >= from && k < count, "level " + k);
                 assertTrue(k == from || Math.scalb(2.0, k) <= r / 4, r + " m reads level " + k);
                 assertTrue(k == count - 1 || Math.scalb(2.0, k + 1) > r / 4, r + " m could read level " + (k + 1));

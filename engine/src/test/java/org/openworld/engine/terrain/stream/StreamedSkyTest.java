@@ -30,6 +30,7 @@ import org.openworld.engine.settings.Settings;
 import org.openworld.engine.terrain.StreamedGround;
 import org.openworld.engine.terrain.TerrainSystem;
 import org.openworld.engine.terrain.heights.BandedHeights;
+import org.openworld.engine.terrain.material.HorizonSearch;
 import org.openworld.engine.terrain.material.SkyVisibility;
 import org.openworld.engine.water.WaterSystem;
 
@@ -187,7 +188,7 @@ class StreamedSkyTest {
 
     /**
      * {@link SkyVisibility}'s V at level {@code level}'s sample (ix, iz): the horizon along each azimuth over its
-     * distances, each read bilinearly from the level {@link SkyVisibility#levelAt} picks, its rise over the tangent
+     * distances, each read bilinearly from the level {@link HorizonSearch#levelAt} picks, its rise over the tangent
      * plane of the central differences, {@code (1/N) Σ cos² α}.
      */
     static double reference(BandedHeights world, int levels, int level, long ix, long iz) {
@@ -197,19 +198,19 @@ class StreamedSkyTest {
         double h0 = world.height(level, x, z);
         double gx = (world.height(level, x + d, z) - world.height(level, x - d, z)) / (2 * d);
         double gz = (world.height(level, x, z + d) - world.height(level, x, z - d)) / (2 * d);
-        double[] distances = SkyVisibility.distances(d);
+        double[] distances = HorizonSearch.distances(d);
         double sum = 0;
-        for (int m = 0; m < SkyVisibility.DIRECTIONS; m++) {
-            double cos = Math.cos(2 * Math.PI * m / SkyVisibility.DIRECTIONS);
-            double sin = Math.sin(2 * Math.PI * m / SkyVisibility.DIRECTIONS);
+        for (int m = 0; m < HorizonSearch.DIRECTIONS; m++) {
+            double cos = Math.cos(2 * Math.PI * m / HorizonSearch.DIRECTIONS);
+            double sin = Math.sin(2 * Math.PI * m / HorizonSearch.DIRECTIONS);
             double horizon = Double.NEGATIVE_INFINITY;
             for (double r : distances) {
-                int k = SkyVisibility.levelAt(r, level, levels, world::spacing);
+                int k = HorizonSearch.levelAt(r, level, levels, world::spacing);
                 horizon = Math.max(horizon, (bilinear(world, k, x + r * cos, z + r * sin) - h0) / r);
             }
             sum += SkyVisibility.visibleShare(horizon, gx * cos + gz * sin);
         }
-        return sum / SkyVisibility.DIRECTIONS;
+        return sum / HorizonSearch.DIRECTIONS;
     }
 
     /** Level k's height at (x, z) metres, bilinear between its four samples around. */
