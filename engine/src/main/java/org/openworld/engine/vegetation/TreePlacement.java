@@ -177,7 +177,8 @@ final class TreePlacement {
                 r[o + 3] = (float) height;
                 r[o + 4] = (float) (2 * Math.PI * unit(h, 4));
                 r[o + 5] = (float) unit(h, 5);
-                box = grow(box, localX, localZ, height * kind.reach, ground - TreeShape.SINK * height, ground + height);
+                box = grow(box, localX, localZ, height * kind.reach, ground - TreeShape.SINK * height,
+                        ground + height);
             }
         }
         for (int k = 0; k < KINDS; k++) {
