@@ -13,12 +13,14 @@
 layout(location = 0) in vec3 msPos;      // the shape, units of the plant's height: per vertex
 layout(location = 1) in vec3 msNormal;
 layout(location = 2) in float part;      // 0 trunk, 1 foliage
-layout(location = 3) in vec4 footHeight; // xyz: the foot, world space (m); w: height (m): per instance
+layout(location = 3) in vec4 footHeight; // xyz: the foot, x and z from uPlaced (m); w: height (m): per instance
 layout(location = 4) in vec2 turnTint;   // x: turn about the vertical (radians); y: tint 0..1
 
 uniform vec2 uFade; // x: distance from the viewer where plants start to shrink (m); y: where they are gone (m)
 uniform vec3 uLod;  // x, y: the cross-fade from the full shape to the simplified one (m); z: 0 full shape, 1 simplified
 uniform vec2 uWind; // the wind among the plants, m/s, x east and z south
+uniform vec2 uPlaced; // where the feet's x and z are measured from: the layout's centre from the render origin (m)
+uniform vec3 uSway;   // xy: the swing's phase per metre east and south (rad/m); z: its phase at uPlaced (rad)
 
 out vec3 wsPos;
 out vec3 wsNormal;
@@ -37,7 +39,8 @@ const float MAX_LEAN = 0.06;
 const float SWING_HZ = 0.3;
 
 void main() {
-    float d = distance(footHeight.xyz, viewerPos());
+    vec3 foot = footHeight.xyz + vec3(uPlaced.x, 0.0, uPlaced.y);
+    float d = distance(foot, viewerPos());
     float shrink = 1.0 - smoothstep(uFade.x, uFade.y, d);
     // the simplified shape's share: 0 before the band, 1 after it; a zero-width band is a hard switch
     vFar = clamp((d - uLod.x) / max(uLod.y - uLod.x, 1e-3), 0.0, 1.0);
@@ -50,11 +53,11 @@ void main() {
     // widening by w across squeezes the normal's horizontal part by 1 / w (the inverse transpose)
     vec3 n = vec3(turn * msNormal.xz / width, msNormal.y).xzy;
     float speed = length(uWind);
-    float phase = dot(footHeight.xz, vec2(0.37, 0.51));
+    float phase = dot(footHeight.xz, uSway.xy) + uSway.z;
     float swing = 1.0 + 0.33 * sin(6.2831853 * SWING_HZ * frame.timeInfo.x + phase);
     vec2 lean = speed > 0.0 ? uWind / speed * min(MAX_LEAN, LEAN_PER_MS * speed) * swing : vec2(0.0);
     p.xz += lean * max(msPos.y, 0.0) * max(msPos.y, 0.0);
-    wsPos = footHeight.xyz + p * footHeight.w * shrink;
+    wsPos = foot + p * footHeight.w * shrink;
     wsNormal = normalize(n);
     msShape = msPos * footHeight.w;
     vPart = part;

@@ -20,6 +20,7 @@ import org.openworld.engine.gl.GpuBuffer;
 import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Uniform;
+import org.openworld.engine.origin.RenderOrigin;
 
 /**
  * The plants' GL side: the records on the GPU, the two shapes of each kind, the two programs, and the instanced
@@ -43,6 +44,12 @@ final class TreeDraw {
     static final float BAND = 0.1f;
     /** Where the plants start to shrink away, as a share of the view distance. */
     static final float FADE_START = 0.8f;
+    /**
+     * Radians per metre east and south of a crown's swing phase: neighbours a few metres apart swing out of step, a
+     * gust's crest rolls across the stand (a wave 10 m long).
+     */
+    static final double SWAY_WAVE_X = 0.37;
+    static final double SWAY_WAVE_Z = 0.51;
     /** Vertex attribute locations: the shape's (position, normal, part), then each plant's record. */
     private static final int POSITION = 0;
     private static final int NORMAL = 1;
@@ -62,10 +69,12 @@ final class TreeDraw {
     private final Uniform.Int kind;
 
     /** The uniforms both programs have. */
-    private record Uniforms(Uniform.Vec2 fade, Uniform.Vec3 lod, Uniform.Vec2 wind) {
+    private record Uniforms(Uniform.Vec2 fade, Uniform.Vec3 lod, Uniform.Vec2 wind, Uniform.Vec2 placed,
+                            Uniform.Vec3 sway) {
 
         static Uniforms of(ShaderProgram p) {
-            return new Uniforms(p.vec2("uFade"), p.vec3("uLod"), p.vec2("uWind"));
+            return new Uniforms(p.vec2("uFade"), p.vec3("uLod"), p.vec2("uWind"), p.vec2("uPlaced"),
+                    p.vec3("uSway"));
         }
     }
 
@@ -102,6 +111,7 @@ final class TreeDraw {
     /**
      * Draws the layout's plants that the pass camera sees (all of them where {@code visibility} is null).
      *
+     * @param viewer     the viewer's eye from the layout's centre, metres
      * @param groundWind m/s of the wind among the plants, x (east) and z (south)
      * @return the plants drawn, both shapes of a plant in the cross-fade counted
      */
@@ -114,6 +124,12 @@ final class TreeDraw {
         float end = (float) s.viewDistance();
         u.fade().set(FADE_START * end, end);
         u.wind().set(groundWind[0], groundWind[1]);
+        // the feet are measured from the layout's centre: placed from the render origin in double, as is the swing's
+        // phase there (reduced modulo a turn), so the GPU adds small numbers to small numbers 10 000 km out
+        RenderOrigin origin = context.world().resource(RenderOrigin.class);
+        u.placed().set(origin.relativeX(layout.centreX()), origin.relativeZ(layout.centreZ()));
+        u.sway().set((float) SWAY_WAVE_X, (float) SWAY_WAVE_Z, (float) RenderOrigin.reduce(
+                SWAY_WAVE_X * layout.centreX() + SWAY_WAVE_Z * layout.centreZ(), 2 * Math.PI));
         float lod = (float) s.lodDistance();
         float band = pass == Pass.MAIN ? BAND * lod : 0;
         glEnable(GL_DEPTH_TEST);

@@ -27,6 +27,12 @@ import org.openworld.engine.environment.Moisture;
  * bushes), each kind tile by tile: the foot (x, y, z, metres), the height (metres), a turn about the vertical
  * (radians) and a tint (0..1). Every tile also gets a box that holds its plants, for the culling system: the tiles are
  * the leaves of a two-level {@link BoundsTree}.
+ *
+ * <p><b>Far from the origin.</b> A foot's x and z are never stored as world coordinates: a float 10 000 km out keeps
+ * whole metres only. A tile keeps its feet and box from its own corner (under {@link #TILE} metres, tenths of a
+ * millimetre), and a layout from its centre, the corner of the tile under the viewer, held in double
+ * ({@link Layout#centreX}): the tile's corner from the centre is a whole number of tiles, computed in double, so a
+ * foot keeps its centimetres however far out the world is. The drawing adds the centre as the render origin sees it.
  */
 final class TreePlacement {
 
@@ -54,21 +60,39 @@ final class TreePlacement {
         }
     }
 
-    /** One tile's plants: {@link #FLOATS} floats each, by kind, and the box holding them all (null when none). */
+    /**
+     * One tile's plants: {@link #FLOATS} floats each, by kind, and the box holding them all (null when none); feet
+     * and box measured from the tile's corner ({@code tx · TILE, tz · TILE}).
+     */
     record Tile(long tx, long tz, float[][] records, float[] box) {
     }
 
     /**
      * The plants of a set of tiles, by kind, tile by tile.
      *
-     * @param records   {@link #FLOATS} floats per plant: every tile's conifers, then every tile's broadleaf trees, ...
+     * @param records   {@link #FLOATS} floats per plant: every tile's conifers, then every tile's broadleaf trees, ...;
+     *                  feet measured from the centre
      * @param tileFirst [kind][tile]: the first plant of that kind in that tile
      * @param tileCount [kind][tile]: how many
-     * @param bounds    the root box (node 0) and one box per tile (node t + 1); null when no plant stands
+     * @param bounds    the root box (node 0) and one box per tile (node t + 1), from the centre; null when no plant
+     *                  stands
+     * @param centreX   metres, world x: where the records' and the boxes' x are measured from (a tile's corner)
+     * @param centreZ   metres, world z: as x
      */
-    record Layout(float[] records, int[][] tileFirst, int[][] tileCount, BoundsTree bounds) {
+    record Layout(float[] records, int[][] tileFirst, int[][] tileCount, BoundsTree bounds, double centreX,
+                  double centreZ) {
 
-        static final Layout EMPTY = new Layout(new float[0], new int[KINDS][0], new int[KINDS][0], null);
+        static final Layout EMPTY = new Layout(new float[0], new int[KINDS][0], new int[KINDS][0], null, 0, 0);
+
+        /** The records with the feet in world x and z (tests and tools; a float there keeps whole metres far out). */
+        float[] worldRecords() {
+            float[] world = records.clone();
+            for (int o = 0; o < world.length; o += FLOATS) {
+                world[o] = (float) (centreX + records[o]);
+                world[o + 2] = (float) (centreZ + records[o + 2]);
+            }
+            return world;
+        }
 
         int count() {
             return records.length / FLOATS;
@@ -87,7 +111,7 @@ final class TreePlacement {
         for (long[] t : tilesAround(x, z, radius)) {
             tiles.add(tile(field, heights, t[0], t[1], s, limits, seed));
         }
-        return assemble(tiles);
+        return assemble(tiles, x, z);
     }
 
     /** The tiles whose square meets the disc of {@code radius} around (x, z), row by row. */
@@ -142,15 +166,19 @@ final class TreePlacement {
                 if ((counts[k] + 1) * FLOATS > records[k].length) {
                     records[k] = Arrays.copyOf(records[k], 2 * records[k].length);
                 }
+                // the foot from the tile's corner: under TILE metres, where a float keeps tenths of a millimetre
+                double localX = px - tx * TILE;
+                double localZ = pz - tz * TILE;
                 float[] r = records[k];
                 int o = counts[k]++ * FLOATS;
-                r[o] = (float) px;
+                r[o] = (float) localX;
                 r[o + 1] = (float) ground;
-                r[o + 2] = (float) pz;
+                r[o + 2] = (float) localZ;
                 r[o + 3] = (float) height;
                 r[o + 4] = (float) (2 * Math.PI * unit(h, 4));
                 r[o + 5] = (float) unit(h, 5);
-                box = grow(box, px, pz, height * kind.reach, ground - TreeShape.SINK * height, ground + height);
+                box = grow(box, localX, localZ, height * kind.reach, ground - TreeShape.SINK * height,
+                        ground + height);
             }
         }
         for (int k = 0; k < KINDS; k++) {
@@ -159,8 +187,13 @@ final class TreePlacement {
         return new Tile(tx, tz, records, box);
     }
 
-    /** The tiles' plants in one layout, kind by kind; tiles without plants are left out. */
-    static Layout assemble(List<Tile> tiles) {
+    /**
+     * The tiles' plants in one layout, kind by kind, measured from the corner of the tile under (x, z); tiles without
+     * plants are left out.
+     */
+    static Layout assemble(List<Tile> tiles, double x, double z) {
+        double centreX = Math.floor(x / TILE) * TILE;
+        double centreZ = Math.floor(z / TILE) * TILE;
         List<Tile> kept = tiles.stream().filter(t -> t.box() != null).toList();
         int total = 0;
         for (Tile t : kept) {
@@ -175,17 +208,33 @@ final class TreePlacement {
         int at = 0;
         for (int k = 0; k < KINDS; k++) {
             for (int t = 0; t < kept.size(); t++) {
-                float[] r = kept.get(t).records()[k];
+                Tile tile = kept.get(t);
+                float[] r = tile.records()[k];
                 System.arraycopy(r, 0, records, at, r.length);
+                // the tile's corner from the centre: whole tiles, exact in double and in float
+                moveFeet(records, at, r.length, FLOATS, tile.tx() * TILE - centreX, tile.tz() * TILE - centreZ);
                 first[k][t] = at / FLOATS;
                 count[k][t] = r.length / FLOATS;
                 at += r.length;
             }
         }
         for (int t = 0; t < kept.size(); t++) {
-            System.arraycopy(kept.get(t).box(), 0, boxes, 6 * (t + 1), 6);
+            Tile tile = kept.get(t);
+            System.arraycopy(tile.box(), 0, boxes, 6 * (t + 1), 6);
+            moveFeet(boxes, 6 * (t + 1), 6, 3, tile.tx() * TILE - centreX, tile.tz() * TILE - centreZ);
         }
-        return new Layout(records, first, count, bounds(boxes, kept.size()));
+        return new Layout(records, first, count, bounds(boxes, kept.size()), centreX, centreZ);
+    }
+
+    /**
+     * Adds (dx, dz) metres, in double, to the x and z of the points in {@code values[at .. at + length)}, one every
+     * {@code stride} floats, x, y, z first: the records' feet ({@link #FLOATS}) or a box's corners (3).
+     */
+    private static void moveFeet(float[] values, int at, int length, int stride, double dx, double dz) {
+        for (int o = at; o < at + length; o += stride) {
+            values[o] = (float) (values[o] + dx);
+            values[o + 2] = (float) (values[o + 2] + dz);
+        }
     }
 
     /** The ground's gradient (rise over run) at (x, z), by central differences. */

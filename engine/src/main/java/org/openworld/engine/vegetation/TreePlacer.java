@@ -47,6 +47,6 @@ final class TreePlacer {
             list.add(tile);
         }
         tiles = kept;
-        return TreePlacement.assemble(list);
+        return TreePlacement.assemble(list, x, z);
     }
 }

@@ -139,7 +139,9 @@ public final class VegetationSystem implements EngineSystem {
         layout = placed.layout();
         draw.upload(layout);
         if (layout.bounds() != null) {
-            world.add(entity, new Cullable(layout.bounds(), new float[] {0, 0}));
+            // the boxes are measured from the layout's centre: the culling's one copy stands there
+            world.add(entity, new Cullable(layout.bounds(),
+                    new float[] {(float) layout.centreX(), (float) layout.centreZ()}));
         } else {
             world.remove(entity, Cullable.class);
         }
@@ -166,7 +168,8 @@ public final class VegetationSystem implements EngineSystem {
         CameraPose pose = world.resource(Camera.class).pose();
         Vector3f wind = new Vector3f(world.findResource(Wind.class).orElse(Wind.CALM).velocity()).mul(GROUND_WIND);
         int drawn = draw.draw(pass, context, layout, visibility, s,
-                new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z()), new float[] {wind.x, wind.z});
+                new Vector3f((float) (pose.x() - layout.centreX()), (float) pose.y(),
+                        (float) (pose.z() - layout.centreZ())), new float[] {wind.x, wind.z});
         Counters counters = world.resource(Counters.class);
         counters.put(COUNT, layout.count());
         counters.add(DRAWN.in(pass), drawn);
@@ -177,9 +180,12 @@ public final class VegetationSystem implements EngineSystem {
         worker.shutdownNow();
     }
 
-    /** The plants placed now (tests and tools): {@link TreePlacement#FLOATS} floats per plant, kind by kind. */
+    /**
+     * The plants placed now (tests and tools): {@link TreePlacement#FLOATS} floats per plant, kind by kind, feet in
+     * world x, z.
+     */
     float[] placed() {
-        return layout == null ? new float[0] : layout.records();
+        return layout == null ? new float[0] : layout.worldRecords();
     }
 
     /** The layout drawn now (tests). */

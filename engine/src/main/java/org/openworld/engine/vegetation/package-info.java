@@ -18,6 +18,14 @@
  * the moisture. The tiles within 1.25 view distances of the viewer are placed again, on a worker thread, when the
  * viewer has moved a quarter of the view distance; only the tiles the move brings in are new work.
  *
+ * <p><b>Far from the origin</b>: no foot is kept as a float of the world's x and z (1 m apart 10 000 km out). A tile
+ * holds its feet from its own corner, a layout from its centre (the corner of the tile under the viewer, in double);
+ * each pass hands the shader that centre from the {@link org.openworld.engine.origin.RenderOrigin} ({@code uPlaced},
+ * rounded to float once) and the swing's phase there reduced modulo a turn ({@code uSway}), so every sum on the GPU
+ * is of numbers a few kilometres at most. The data path: tile (corner, double; feet, float) → layout (centre, double;
+ * feet and boxes, float) → {@code uPlaced = centre − origin} → the foot from the origin. The culling gets the boxes
+ * with the centre as their one copy's offset.
+ *
  * <p><b>Drawing</b> ({@link org.openworld.engine.vegetation.TreeDraw}): per kind a full shape within
  * {@code vegetation.lod-distance} (92 to 268 triangles) and a simplified one beyond (16 to 42), cross-faded by a
  * 4 × 4 ordered dither over ±10 % of the distance; the shadow cascades switch hard at the same distance and leave

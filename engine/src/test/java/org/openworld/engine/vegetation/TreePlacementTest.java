@@ -12,6 +12,7 @@ import java.util.Random;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.origin.RenderOrigin;
 
 /**
  * Where the plants stand, without GL: the seed, the order tiles are placed in, the water, the snow, the slope, the
@@ -49,9 +50,10 @@ class TreePlacementTest {
 
     static Set<String> feet(TreePlacement.Layout layout, double minX) {
         Set<String> feet = new HashSet<>();
-        for (int i = 0; i < layout.count(); i++) {
-            if (at(layout, i, 0) > minX) {
-                feet.add(at(layout, i, 0) + "," + at(layout, i, 2));
+        float[] world = layout.worldRecords();
+        for (int o = 0; o < world.length; o += TreePlacement.FLOATS) {
+            if (world[o] > minX) {
+                feet.add(world[o] + "," + world[o + 2]);
             }
         }
         return feet;
@@ -120,6 +122,50 @@ class TreePlacementTest {
         Set<String> both = new HashSet<>(here);
         both.retainAll(moved);
         assertTrue(both.size() > 100, "plants in the overlap: " + both.size());
+    }
+
+    @Test
+    void aFootTenThousandKilometresOutKeepsItsCentimetresOnTheGpu() {
+        // 2442 tiles of 4096 m out on x, 1221 on z: a float there keeps whole metres, half a metre off at worst
+        double farX = 2442 * 4096.0 + 1000;
+        double farZ = 1221 * 4096.0 - 700;
+        HeightField ramp = (x, z) -> 0.02 * (x - farX);
+        TreePlacement.Layout layout = TreePlacement.around(ramp, null, farX, farZ, 600, VegetationSettings.DEFAULTS,
+                ANYWHERE, 3);
+        RenderOrigin origin = new RenderOrigin(RenderOrigin.DEFAULT_STEP);
+        origin.follow(farX, farZ);
+        float placedX = origin.relativeX(layout.centreX());
+        float placedZ = origin.relativeZ(layout.centreZ());
+        // the same tiles on their own: each foot from its tile's corner, a few hundred metres, exact to 0.02 mm
+        PlacementField field = new PlacementField(ramp, null, ANYWHERE, 3);
+        List<TreePlacement.Tile> tiles = new ArrayList<>();
+        for (long[] t : TreePlacement.tilesAround(farX, farZ, 600)) {
+            TreePlacement.Tile tile = TreePlacement.tile(field, ramp, t[0], t[1], VegetationSettings.DEFAULTS,
+                    ANYWHERE, 3);
+            if (tile.box() != null) {
+                tiles.add(tile);
+            }
+        }
+        assertEquals(tiles.size(), layout.tiles());
+        double worst = 0;
+        for (int k = 0; k < TreePlacement.KINDS; k++) {
+            for (int t = 0; t < tiles.size(); t++) {
+                float[] own = tiles.get(t).records()[k];
+                for (int o = 0; o < own.length; o += TreePlacement.FLOATS) {
+                    int r = (layout.tileFirst()[k][t] * TreePlacement.FLOATS) + o;
+                    // the foot from the render origin as tree.vert adds it (float), against the exact one (double)
+                    double exactX = tiles.get(t).tx() * TreePlacement.TILE + own[o] - origin.x();
+                    double exactZ = tiles.get(t).tz() * TreePlacement.TILE + own[o + 2] - origin.z();
+                    worst = Math.max(worst, Math.abs((layout.records()[r] + placedX) - exactX));
+                    worst = Math.max(worst, Math.abs((layout.records()[r + 2] + placedZ) - exactZ));
+                }
+            }
+        }
+        System.out.println(layout.count() + " plants 10 000 km out, the worst foot " + worst + " m off");
+        assertTrue(layout.count() > 100, "plants: " + layout.count());
+        // a float a few kilometres from the origin rounds by 0.25 mm, twice (the record, then the sum): 1 cm is
+        // forty times that, and fifty times below the half metre a float of the world's x loses here
+        assertTrue(worst < 0.01, "the worst foot is " + worst + " m from where it stands");
     }
 
     @Test
