@@ -17,7 +17,7 @@ import org.openworld.engine.settings.SettingsGroup;
  *                 that, each frame has an equal share): less averages more frames, steadier and slower to follow a
  *                 change
  * @param samples  TAA: the jitter's offsets in one cycle, the samples a pixel of a settled still picture: more is
- *                 a finer mean (less shimmer), and a still picture takes that many frames to settle; with a blend
+ *                 a finer mean, and a still picture takes that many frames to settle; with a blend
  *                 of 1 / samples a settled picture is the exact mean of one cycle
  */
 public record AntialiasSettings(
