@@ -37,7 +37,8 @@ public final class Antialiasing implements AutoCloseable {
         this.camera = camera;
         this.frame = frame;
         this.settings = settings;
-        return settings.method() == AntialiasSettings.Method.TAA ? temporal.jittered(camera, frame, scene) : camera;
+        return settings.method() == AntialiasSettings.Method.TAA
+                ? temporal.jittered(camera, frame, settings.samples(), scene) : camera;
     }
 
     /** Draws {@code scene} anti-aliased into {@code target}, as the last {@link #viewer} call's settings say. */

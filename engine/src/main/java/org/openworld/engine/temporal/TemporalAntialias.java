@@ -76,9 +76,12 @@ public final class TemporalAntialias implements AutoCloseable {
         return frame == lastFrame + 1 ? run : 0;
     }
 
-    /** The viewer's camera for engine frame {@code frame}, jittered for a target of {@code scene}'s size. */
-    public ViewCamera jittered(ViewCamera camera, long frame, Framebuffer scene) {
-        return Jitter.apply(camera, runBefore(frame), scene.width(), scene.height());
+    /**
+     * The viewer's camera for engine frame {@code frame}, jittered for a target of {@code scene}'s size in a cycle of
+     * {@code cycle} offsets ({@code antialias.samples}).
+     */
+    public ViewCamera jittered(ViewCamera camera, long frame, int cycle, Framebuffer scene) {
+        return Jitter.apply(camera, runBefore(frame), cycle, scene.width(), scene.height());
     }
 
     /**

@@ -1,8 +1,8 @@
 /**
  * Temporal anti-aliasing (TAA; Brian Karis, "High-quality temporal supersampling", SIGGRAPH 2014 course "Advances in
  * Real-Time Rendering"): supersampling spread over frames. Each frame is drawn with the projection moved by a
- * fraction of a pixel ({@link org.openworld.engine.temporal.Jitter}), so over {@code Jitter.CYCLE} frames a pixel is
- * sampled at that many places, and one pass ({@link org.openworld.engine.temporal.TemporalAntialias},
+ * fraction of a pixel ({@link org.openworld.engine.temporal.Jitter}), so over {@code antialias.samples} frames a
+ * pixel is sampled at that many places, and one pass ({@link org.openworld.engine.temporal.TemporalAntialias},
  * {@code shaders/temporal/taa.frag}) blends each frame into the mean of the frames before. Chosen with
  * {@code antialias.method=taa} (the default). Page: {@code docs/design.md}, "Anti-aliasing".
  *
