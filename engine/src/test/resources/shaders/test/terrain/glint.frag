@@ -23,7 +23,7 @@ void main() {
     s.height01 = 0.1;
     s.snow = 0.0;
     s.skyVisibility = uSkyVisibility;
-    MatTexel m = terrainMaterial(s, 0.5, vec2(0.5));
+    MatTexel m = terrainMaterial(s, 0.5, matMacroTint(s.wsPos.xz)); // one ground point: one macro value
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     bool bumpy = gl_FragCoord.x > 0.5 * frame.viewport.x;
     bool tilted = bumpy && (pixel.x + pixel.y) % 2 == 1;

@@ -88,6 +88,15 @@ class LightFitTest {
         return new Matrix4d(box.viewProjection()).transformProject(new Vector3d(world));
     }
 
+    /**
+     * The fit works in float on world positions: a few ulps of the point's largest coordinate, in clip units of the
+     * box's half-width. Negligible for a box hundreds of metres wide; a slice a metre deep 2 km from the origin has a
+     * box of about a metre, where 4 ulps of 2 km (0.5 mm) are 5e-4 of it.
+     */
+    private static double rounding(LightBox box, Vector3d point) {
+        return 4 * Math.ulp((float) maxAbs(point)) / (box.texelSize() * RESOLUTION / 2);
+    }
+
     private static double maxAbs(Vector3d v) {
         return Math.max(Math.abs(v.x), Math.max(Math.abs(v.y), Math.abs(v.z)));
     }
@@ -112,10 +121,12 @@ class LightFitTest {
                     double s = maxAbs(clip(stable, point));
                     double c = maxAbs(clip(covering, point));
                     String label = "trial " + trial + ", point " + point + ", " + scene;
-                    assertTrue(s <= 1 + CLIP_SLACK, "stable fit misses it by " + (s - 1) + ": " + label);
-                    assertTrue(c <= 1 + CLIP_SLACK, "covering fit misses it by " + (c - 1) + ": " + label);
+                    assertTrue(s <= 1 + CLIP_SLACK + rounding(stable, point), "stable fit misses it by " + (s - 1)
+                            + ": " + label);
+                    assertTrue(c <= 1 + CLIP_SLACK + rounding(covering, point), "covering fit misses it by "
+                            + (c - 1) + ": " + label);
                     worstStable = Math.max(worstStable, s);
-                    worstCovering = Math.max(worstCovering, c);
+                    worstCovering = Math.max(worstCovering, c - rounding(covering, point));
                 }
             }
         }

@@ -2,12 +2,14 @@ package org.openworld.engine.sky;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.openworld.engine.sky.SkyColours.luminance;
 
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.util.Map;
 
 import org.joml.Vector3d;
 import org.junit.jupiter.api.BeforeAll;
@@ -120,16 +122,26 @@ class SkyViewTest {
         assertEquals(-Math.PI / 2, SkyView.direction(0, 0)[1], 1e-15);
     }
 
+    /**
+     * The shader reads the tables by the sizes Java builds them with: the sky system hands them to every program as
+     * defines, and the include holds no size of its own but the one-texel stand-in's (no sky, no tables).
+     */
     @Test
     void theShaderIncludeUsesTheJavaSizes() throws IOException {
         String glsl;
         try (InputStream in = SkyViewTest.class.getResourceAsStream("/shaders/sky/atmosphere.glsl")) {
             glsl = new String(in.readAllBytes(), StandardCharsets.UTF_8);
         }
-        assertTrue(glsl.contains("vec2(" + SkyView.WIDTH + ".0, " + SkyView.HEIGHT + ".0)"));
-        assertTrue(glsl.contains("vec3(" + AerialPerspective.WIDTH + ".0, " + AerialPerspective.HEIGHT + ".0, "
-                + AerialPerspective.DEPTH + ".0)"));
-        assertTrue(glsl.contains("AERIAL_MAX_DISTANCE = " + (int) AerialPerspective.MAX_DISTANCE + ".0"));
+        Map<String, Number> constants = new SkySystem().shaderConstants();
+        assertEquals(Map.of("SKY_VIEW_WIDTH", SkyView.WIDTH, "SKY_VIEW_HEIGHT", SkyView.HEIGHT,
+                "AERIAL_WIDTH", AerialPerspective.WIDTH, "AERIAL_HEIGHT", AerialPerspective.HEIGHT,
+                "AERIAL_DEPTH", AerialPerspective.DEPTH, "AERIAL_MAX_DISTANCE", AerialPerspective.MAX_DISTANCE),
+                constants);
+        for (String name : constants.keySet()) {
+            assertTrue(glsl.contains(name), name + " is read by the include");
+        }
+        assertTrue(glsl.contains("vec2(SKY_VIEW_WIDTH, SKY_VIEW_HEIGHT)"), "the sky view's size from the defines");
+        assertFalse(glsl.contains("vec2(" + SkyView.WIDTH + ".0"), "no size of Java's written out in the include");
     }
 
     /** World direction at an azimuth (radians from +X toward +Z) and elevation. */
