@@ -31,7 +31,7 @@ class GuiRenderTest {
     static void start() {
         RenderOptions options = CommandLine.populateCommand(new RenderOptions(), "--size", W + "x" + H, "--time",
                 "16:30", "--set", "terrain.world=tile", "--set", "terrain.size=256", "--set",
-                "shadow.resolution=256");
+                "shadow.resolution=256", "--set", "antialias.method=off"); // TAA jitters each frame: not one picture
         launch = Launch.startWithGui(options, false, "gui test");
         launch.engine.world().resource(Camera.class).setPose(DemoScene.DEFAULT_POSE);
         glfwSetWindowSize(launch.gl.window(), W, H); // the display size Dear ImGui lays out in
