@@ -261,9 +261,7 @@ public final class Engine implements AutoCloseable {
         scene.fit(width(), height(), renderScale(), antialias.enabled()); // either may have changed (the panel)
         var eye = world.resource(Camera.class).view((float) width() / height());
         PassView viewer = shared.viewer(world, antialiasing.viewer(eye, frame, scene.scene(), antialias), scene.scene());
-        // the viewer's view as a resource too, for a system that draws another pass with the viewer in mind (the
-        // terrain's shadow casters are no finer than the ground the viewer sees)
-        world.setResource(viewer);
+        world.setResource(viewer); // for a pass drawn with the viewer in mind (shadow casters at the viewer's detail)
         shared.beginFrame(owners.values());
         for (Pass pass : Pass.values()) {
             List<EngineSystem> drawing = drawingIn.get(pass);
