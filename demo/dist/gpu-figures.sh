@@ -10,7 +10,8 @@
 #
 # Steps, each under its own timeout and each recorded in OUT_DIR/steps.tsv (name, exit code, seconds) whatever the
 # others did: the machine (nvidia-smi, uname); openworld info; the default shot at 1920x1080; bench on
-# assets/paths/crossing.path at 1920x1080 and 3840x2160 with the default, ultra and low presets; bench on the peer's
+# assets/paths/crossing.path at 1920x1080 and 3840x2160 with the default, ultra and low presets; the default crossing
+# at 1920x1080 again with the vegetation off, the anti-aliasing off and the volumetric clouds on; bench on the peer's
 # four views (its imported map and camera circle, set as ../shared/peer/compare.sh sets them: terrain, shadows, water,
 # all) at 1920x1080. Each bench folder has summary.json: the GPU time per pass and system (timer queries,
 # passGpuMsMedian), the CPU time per system (systemCpuMsMedian), frame times, triangles and draw calls; at the end
@@ -88,7 +89,15 @@ for size in "$hd" "$uhd"; do
   done
 done
 
-# 4. The peer's four views: its map and circle, with what the peer has no counterpart for switched off (as
+# 4. What this release's features cost on the crossing at 1920x1080, default preset: each one switched off (or, for
+#    the volumetric clouds, on) against the default bench of step 3.
+for feature in vegetation=system.vegetation=off antialias=antialias.method=off clouds=clouds.mode=volumetric; do
+  step "bench-crossing-${feature%%=*}-$hd" "$bench_s" "$openworld" bench --path assets/paths/crossing.path \
+    --size "$hd" --frames "$frames" --warmup "$warmup" --set "${feature#*=}" \
+    --out "$out/bench-crossing-${feature%%=*}-$hd"
+done
+
+# 5. The peer's four views: its map and circle, with what the peer has no counterpart for switched off (as
 #    ../shared/peer/compare.sh does: a key this build lacks is left out).
 known=$("$openworld" settings 2>/dev/null | awk '{print $1}')
 same=(--set terrain.spacing=1 --set terrain.relief=150 --set terrain.import-file="$kit/heightmap-1025.f32")
@@ -108,7 +117,7 @@ for view in terrain shadows water all; do
     "${same[@]}" --set terrain.sea-fraction="$sea" "${set_view[@]}"
 done
 
-# 5. The figures at a glance, one line per bench.
+# 6. The figures at a glance, one line per bench.
 here=$(dirname "$0")
 if command -v python3 >/dev/null; then
   python3 "$here/gpu-table.py" --tsv "$out" >"$out/figures.tsv" || echo "gpu-figures: no figures.tsv" >&2
