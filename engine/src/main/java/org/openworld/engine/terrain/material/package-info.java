@@ -33,8 +33,8 @@
  * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
  * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
  * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. One way for every
- * source, on the GPU ({@code shaders/terrain/horizon.glsl}): the tile's once at start over its level of at most 512²
- * samples ({@link org.openworld.engine.terrain.material.TileSky}), the streamed world's per block; stored as the snow
+ * source, on the GPU ({@code shaders/terrain/material/horizon.glsl}): the tile's once at start over its level of at
+ * most 512² samples ({@link org.openworld.engine.terrain.material.TileSky}), the streamed world's per block; stored as the snow
  * texture's second channel, so no lookup is added. Limits:
  * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
  *
