@@ -11,7 +11,7 @@
 #include "common/fog.glsl"
 #include "common/environment.glsl"
 #ifdef TERRAIN_CLIPMAP
-#include "terrain/clipmap.glsl"
+#include "terrain/stream/clipmap.glsl"
 #endif
 
 layout(location = 0) in vec2 ringPos;  // x: azimuth, 0..1 of a turn; y: 0 on the inner edge, 1 on the outer

@@ -1,6 +1,6 @@
 #version 330 core
 // Terrain surface: the slope from the gradient map gives the tangent frame, the snow map and the height choose the
-// materials (terrain/material.glsl), then the shared fog and the display transform.
+// materials (terrain/material/material.glsl), then the shared fog and the display transform.
 // Variants, each its own program (#defines), chosen per patch on the CPU (engine: TerrainShading), so none pays for
 // another's work (a branch on a uniform runs both sides on a software rasteriser):
 //   (none)                 near patches: every material layer, fading into the far material over farBand;
@@ -17,9 +17,9 @@
 //   TERRAIN_FARFIELD       with TERRAIN_FAR: the far field's ring (terrain/farfield.vert, FarField) instead of patches
 #include "common/frame.glsl"
 #include "common/color.glsl"
-#include "terrain/material.glsl"
+#include "terrain/material/material.glsl"
 #ifdef TERRAIN_CLIPMAP
-#include "terrain/clipmap.glsl"
+#include "terrain/stream/clipmap.glsl"
 #endif
 
 in vec3 wsPos;

@@ -10,7 +10,7 @@
 #include "common/environment.glsl"
 #endif
 #ifdef TERRAIN_CLIPMAP
-#include "terrain/clipmap.glsl"
+#include "terrain/stream/clipmap.glsl"
 #endif
 
 layout(location = 0) in vec2 gridPos;         // column, row in 0..N

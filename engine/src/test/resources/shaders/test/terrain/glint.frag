@@ -4,7 +4,7 @@
 // the gloss of a polished texel (1). The left half is smooth; on the right half the detail normal tilts by uTilt
 // (tangent-space slope along x) on every other pixel, in a checkerboard: bumps smaller than a pixel, as far ground
 // shows them. The albedo is the material's own (so material.glsl's textures stay bound and read).
-#include "terrain/material.glsl"
+#include "terrain/material/material.glsl"
 uniform float uSkyVisibility; // the share of the sky the relief leaves (set to 1: open ground)
 #include "common/color.glsl"
 

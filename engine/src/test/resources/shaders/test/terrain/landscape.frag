@@ -2,7 +2,7 @@
 // The stand-in landscape shaded by material.glsl, to judge the materials from afar (engine test:
 // org.openworld.engine.terrain.material.MaterialRenderTest): the height field's normal gives the tangent frame, a made-up
 // snow map puts snow likelier higher up; with uSky = 1 the environment map behind it.
-#include "terrain/material.glsl"
+#include "terrain/material/material.glsl"
 uniform float uSkyVisibility; // the share of the sky the relief leaves (set to 1: open ground)
 #include "common/fog.glsl"
 #include "common/color.glsl"

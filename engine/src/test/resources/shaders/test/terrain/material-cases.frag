@@ -7,7 +7,7 @@
 //   height, 6 slope rising 0 -> 70 degrees under full snow-map cover, 7 flat rock at mid height.
 // Slopes fall towards the east (+X), facing the morning sun.
 // Every cell covers CELL_METRES of ground around uCentre, where the sun's mirror image is seen from the camera.
-#include "terrain/material.glsl"
+#include "terrain/material/material.glsl"
 uniform float uSkyVisibility; // the share of the sky the relief leaves (set to 1: open ground)
 #include "common/color.glsl"
 

@@ -67,7 +67,11 @@ public final class SystemSpec {
         return this;
     }
 
-    /** Systems, by name, that must run before this one (in update and in every pass). */
+    /**
+     * Systems, by name, that must run before this one (in update and in every pass). The shipped systems need none
+     * (what they read and write and their layers order them all); it orders two writers of one type, which
+     * {@link SystemOrder} otherwise refuses, and lets a scene's own system follow a named one.
+     */
     public SystemSpec after(String... systems) {
         after.addAll(List.of(systems));
         return this;

@@ -1,8 +1,8 @@
 package org.openworld.engine.origin;
 
 /**
- * Where the render origin lies on the terrain materials' lattices and tiles ({@code shaders/terrain/material.glsl}):
- * for each, the origin's coordinates on it, computed in double and split into a whole part, reduced modulo the hash's
+ * Where the render origin lies on the terrain materials' lattices and tiles
+ * ({@code shaders/terrain/material/material.glsl}): for each, the origin's coordinates on it, computed in double and split into a whole part, reduced modulo the hash's
  * period, and a fraction ({@link #split}). The shader adds the fraction to the point's own small coordinates and the
  * whole part to its cell, so a lattice point's hash and a tile's texel are those the world's coordinates give, with
  * no float ever larger than a few thousand cells. The maps are material.glsl's, restated here: a change there

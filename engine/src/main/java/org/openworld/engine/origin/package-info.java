@@ -15,7 +15,7 @@
  *       (from their placement's centre, itself given from o), the far field's square.</li>
  *   <li>What a shader reads by world position gets o's share reduced in double, modulo its own period: the tile's
  *       maps repeat every step, so they need nothing; the streamed clipmap adds o's samples in int
- *       ({@code shaders/terrain/clipmap.glsl}); the materials' noise lattices and tiles take o's coordinates on
+ *       ({@code shaders/terrain/stream/clipmap.glsl}); the materials' noise lattices and tiles take o's coordinates on
  *       each, split into a whole part modulo the hash's period and a fraction ({@link
  *       org.openworld.engine.origin.MaterialOrigin}: {@code c = floor(p + f) + w} is the world's cell exactly);
  *       the water's two ripple layers take o modulo their tiles.</li>

@@ -25,6 +25,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -36,9 +37,10 @@ import org.openworld.engine.gl.Uniform;
  */
 public final class TemporalAntialias implements AutoCloseable {
 
-    private static final int UNIT_SCENE = 0;
-    private static final int UNIT_DEPTH = 1;
-    private static final int UNIT_HISTORY = 2;
+    private static final TextureUnits UNITS = new TextureUnits();
+    private static final TextureUnits.Sampler SCENE = UNITS.add("scene");
+    private static final TextureUnits.Sampler DEPTH = UNITS.add("depth");
+    private static final TextureUnits.Sampler HISTORY = UNITS.add("history");
 
     private final GlContext gl;
     private final Owned owned = new Owned("temporal");
@@ -60,9 +62,9 @@ public final class TemporalAntialias implements AutoCloseable {
         try {
             fullScreen = owned.own("fullScreen", Mesh.fullScreenTriangle(gl));
             program = owned.own("taa", shaders.program("temporal/taa.vert", "temporal/taa.frag"));
-            program.sampler("scene", UNIT_SCENE);
-            program.sampler("depth", UNIT_DEPTH);
-            program.sampler("history", UNIT_HISTORY);
+            program.sampler(SCENE);
+            program.sampler(DEPTH);
+            program.sampler(HISTORY);
             reprojection = program.mat4("reprojection");
             weight = program.float1("weight");
         } catch (RuntimeException e) {
@@ -114,9 +116,9 @@ public final class TemporalAntialias implements AutoCloseable {
         // NDC now -> clip then; computed in double, as it is near the identity for a small motion
         reprojection.set(new Matrix4f().set(new Matrix4d(previous).mul(new Matrix4d(now).invert())));
         weight.set(n == 0 ? 1f : (float) Math.max(minWeight, 1.0 / (n + 1)));
-        scene.color().bind(UNIT_SCENE);
-        scene.depth().bind(UNIT_DEPTH);
-        histories[latest].color().bind(UNIT_HISTORY);
+        scene.color().bind(SCENE.unit());
+        scene.depth().bind(DEPTH.unit());
+        histories[latest].color().bind(HISTORY.unit());
         fullScreen.draw(stats);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, written.id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.id());

@@ -18,6 +18,12 @@
  *       ({@link org.openworld.engine.terrain.heights.HeightSource}) with the scheme that brings its levels to the
  *       GPU, a tile's whole pyramid or streamed levels; it asks both the same questions.</li>
  * </ol>
+ * The shaders lie by stage too, each including only its own stage's files and those before it (the test checks the
+ * includes): {@code shaders/terrain/material/} the surface ({@code material.glsl}), the far bake, the horizon search
+ * and the tile's sky; {@code shaders/terrain/stream/} the clipmap's addressing ({@code clipmap.glsl}) and the
+ * streamed blocks' sky; {@code shaders/terrain/} the system's programs that join the stages ({@code terrain.vert},
+ * {@code terrain.frag}, {@code depth.frag}, {@code farfield.vert}). The heights, the level of detail and the mesh hand
+ * the GPU textures, instances and uniforms, and have no shader of their own.
  *
  * <p><b>The far field.</b> Beyond the patches (the tile's copies, the unbounded world's roots: 14 to 35 km) the
  * {@link org.openworld.engine.terrain.FarField} carries the ground to the horizon: a polar ring of 256 × 64 cells

@@ -40,7 +40,7 @@ public record VegetationSettings(
 
     public static final VegetationSettings DEFAULTS = new VegetationSettings(
             100,   // 1/ha in the forest: a stand of grown trees, 10 m apart, with the ground seen between them
-            30,    // deg: steeper than most meadows, short of the rock that shows from 35 deg (terrain/material.glsl)
+            30,    // deg: steeper than most meadows, short of the rock that shows from 35 deg (material.glsl)
             8,     // m: a young spruce
             24,    // m: a grown one; mountain spruce rarely exceed 30 m
             1500,  // m: a 16 m tree is then 6 px tall at 1080p, small enough to go unnoticed as it shrinks away

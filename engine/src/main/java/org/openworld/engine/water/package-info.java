@@ -9,21 +9,14 @@
  * <p><b>Shaded only where seen.</b> Above the water the triangle carries the plane's own depth: a projection maps
  * planes to planes, so the plane's NDC depth is affine in the screen position, {@code z = a·x + b·y + c}, the plane
  * {@code (0, 1, 0, −level)} taken through {@code (VP⁻¹)ᵀ} ({@link org.openworld.engine.water.PlaneOnScreen}). The
- * corners carry it, a clip distance cuts the triangle at the horizon (the image of the plane through the eye), and
- * depth clamping keeps the water beyond the far plane on it, where the sky is, passing with {@code LEQUAL}. The
- * shader neither discards nor writes depth, so the depth test runs before it and the water under the terrain is
- * never shaded. Above and under the water are two programs picked on the CPU, since a software rasteriser runs both
- * sides of a branch.
+ * corners carry it, a clip distance cuts the triangle at the horizon, depth clamping keeps it beyond the far plane.
+ * The shader neither discards nor writes depth, so the water under the terrain is never shaded. Above and under the
+ * water are two programs ({@code fresnel.frag}, {@code underwater.frag}), picked on the CPU.
  *
- * <p><b>The paper's method</b> ({@code water.method=STENCIL}), step by step: (1) at the start of MAIN, before anything
- * is drawn ({@code WaterSystem.beginPass}), the stencil is cleared to 0xFF and every opaque fragment then writes 0;
- * (2) the water plane writes 0xFF where it is the nearest surface, and
- * only its alpha, the reflectivity {@code water.alpha}; (3) the reflection pass draws the scene upside down (the
- * mirrored camera, front faces culled by the flipped winding) into a second framebuffer; (4) a full-screen quad of
- * that picture, where the stencil is 0xFF, blended by destination alpha:
- * {@code colour = reflection · α + ground · (1 − α)}. Alpha 0 shows the ground, 1 only the mirror (figure 13).
- * Its limits are the paper's: one alpha for every angle, and nothing clips the mirrored scene, so the lake bed shows
- * in the reflection.
+ * <p><b>The paper's method</b> ({@code water.method=STENCIL}, {@code stencil.frag}): the stencil cleared to 0xFF at
+ * the start of MAIN ({@code WaterSystem.beginPass}), 0 written by every opaque fragment, 0xFF again where the water
+ * plane is nearest, with its alpha {@code water.alpha}; the scene drawn upside down into a second framebuffer; that
+ * picture blended where the stencil is 0xFF: {@code colour = reflection · α + ground · (1 − α)} (figure 13).
  *
  * <p><b>The Fresnel method</b> (default, {@code water.method=FRESNEL}):
  * <ul>
@@ -46,14 +39,10 @@
  *       successive frames (RG and BA) so the blend between frames is one texture read; their slope variance is Cox
  *       and Munk's for the wind, the part the texture cannot resolve spreads the sun's glitter (a Beckmann lobe).
  *       Ripples bend where the reflection and the refraction are looked up.</li>
- *   <li>Two guards on the bent reflection (fresnel.frag). A look-up is kept only where the scene copy shows water or
- *       sky at its texel and one mirror texel above (else the plain mirror at the pixel): near a far shore seen at a
- *       grazing angle the ripples tilt the reflected ray by more than the shore's angle below the horizon, and
- *       the look-up by direction lands in the part of the mirror picture the shore hides (sky or far ground, a
- *       pale band of blocks). And the slopes fade with the pixel's footprint on the water {@code w}: Phillips'
- *       {@code k⁻⁴} puts equal slope variance in every octave, so a layer of tile {@code L} keeps the share
- *       {@code log2(L / (8 w)) / log2(size / 2)} (waves under 8 footprints dropped), and the variance dropped widens
- *       the glitter's lobe (specular anti-aliasing): distant water is a calm mirror, not a mosaic.</li>
+ *   <li>Two guards on the bent reflection ({@code fresnel.frag}): a look-up is kept only where the scene copy shows
+ *       water or sky at its texel and one mirror texel above (else the plain mirror); and a ripple layer of tile
+ *       {@code L} keeps the share {@code log2(L / (8 w)) / log2(size / 2)} of its slopes for a pixel footprint
+ *       {@code w} on the water, the variance dropped widening the glitter's lobe.</li>
  *   <li>Where the bent reflected ray leaves the reflection picture, the sky's cube map answers.</li>
  *   <li>Under the water the reflection pass rests; every pixel is seen through {@code exp(−σ d)} of water glowing
  *       with its in-water colour, and the surface from below shows the world above through Snell's window and
@@ -64,10 +53,10 @@
  * the sky, below the horizon; the water shades only the pixels where it is seen, about 11 texture reads each, plus a
  * copy of the scene; at start-up the ripple field, 64 frames of 128² by FFT. Measured in docs/water.md, "Cost".
  *
- * <p><b>Limits.</b> A plane, not a height field: no lakes above sea level, no waves that move the geometry, no
- * foam. The reflection is exact only for a flat surface; the ripples bend its look-up as if what they reflect were
- * far away, and where that would reach past a shore's mirrored waterline the pixel shows the unbent mirror. Far
- * water keeps its ripples' variance only in the glitter: the reflection there is sharp, not blurred. The pictures
- * are mixed after tone mapping. The eye within 5 cm of the surface has no reflection pass.
+ * <p><b>Files.</b> {@link org.openworld.engine.water.WaterSystem} (the passes), {@code WaterPrograms} (the
+ * programs); {@code shaders/water/}: {@code water.vert}, {@code surface.glsl} (the plane per pixel),
+ * {@code optics.glsl} (what both programs share: ripples, Fresnel table, light in the water), the fragment programs.
+ * <b>Limits.</b> A plane, not a height field: no lakes above sea level, no waves that move the geometry, no foam;
+ * the reflection is exact only for a flat surface. The page has them all ("Limits") and why the guards are there.
  */
 package org.openworld.engine.water;

@@ -4,11 +4,38 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 class TextureUnitsTest {
+
+    /** The main sources of both modules (the tests run in engine/). */
+    static final List<Path> SOURCES = List.of(Path.of("src/main/java"), Path.of("../demo/src/main/java"));
+    /**
+     * A unit numbered by hand: an int constant named {@code UNIT_...} given a number, a sampler set to a number, a
+     * texture bound to a number.
+     */
+    static final Pattern BY_HAND = Pattern.compile(
+            "int UNIT_\\w+ = \\d|\\.sampler\\(\"\\w+\", *\\d|\\.bind\\(\\d");
+
+    /** The places in {@code source} that number a unit by hand, one line each. */
+    static List<String> byHand(String file, String source) {
+        List<String> found = new ArrayList<>();
+        Matcher m = BY_HAND.matcher(source);
+        while (m.find()) {
+            found.add(file + ": " + m.group());
+        }
+        return found;
+    }
 
     @Test
     void samplersGetTheUnitsFromZeroInTheOrderAdded() {
@@ -47,5 +74,30 @@ class TextureUnitsTest {
             assertTrue(texture.unit() < 16 && units.add(texture.unit()), texture + " on unit " + texture.unit());
         }
         assertEquals(15, SharedTexture.values()[SharedTexture.values().length - 1].unit());
+    }
+
+    @Test
+    void noSourceNumbersAUnitByHand() throws IOException {
+        List<String> found = new ArrayList<>();
+        for (Path root : SOURCES) {
+            try (Stream<Path> files = Files.walk(root)) {
+                for (Path f : files.filter(p -> p.toString().endsWith(".java")).sorted().toList()) {
+                    found.addAll(byHand(f.toString(), Files.readString(f)));
+                }
+            }
+        }
+        assertEquals(List.of(), found, "texture units come from a TextureUnits, not from numbers");
+    }
+
+    @Test
+    void aUnitNumberedByHandIsFound() {
+        String source = """
+                static final int UNIT_FIELD = 0;
+                program.sampler("cloudField", 1);
+                field.bind(2);
+                program.sampler(FIELD);
+                field.bind(FIELD.unit());
+                """;
+        assertEquals(3, byHand("Clouds.java", source).size(), byHand("Clouds.java", source).toString());
     }
 }

@@ -19,7 +19,9 @@ import org.junit.jupiter.api.Test;
  * map its {@code package-info} prints ({@code <li>{@code terrain.heights}: ...}), and the system's own package comes
  * last. Read from the main sources, without compiling or loading anything: every {@code import} line and every name
  * written out in full outside comments ({@code org.openworld.engine.terrain.stage.Type}) is a dependency. A Javadoc
- * link may point ahead (written in full inside the comment), since reading on is not depending.
+ * link may point ahead (written in full inside the comment), since reading on is not depending. The shaders mirror
+ * the packages: {@code shaders/terrain/<stage>/} holds a stage's files, {@code shaders/terrain/} the system's
+ * programs, and an {@code #include} is a dependency too.
  */
 class TerrainStagesTest {
 
@@ -29,6 +31,10 @@ class TerrainStagesTest {
     static final Pattern STAGE = Pattern.compile("<li>\\{@code terrain(\\.(\\w+))?}");
     /** A reference to a terrain package: a stage's name after the terrain's, or a type of the terrain's own. */
     static final Pattern REFERENCE = Pattern.compile(Pattern.quote(PACKAGE) + "\\.(\\w+)(\\.[A-Z]\\w*)?");
+    /** The terrain's shaders, one folder per stage that has any, the system's programs at the top. */
+    static final Path SHADERS = Path.of("../shaders/terrain");
+    /** An include of a terrain shader: {@code #include "terrain/material/material.glsl"}, the stage in group 2. */
+    static final Pattern INCLUDE = Pattern.compile("#include \"terrain/((\\w+)/)?[\\w.]+\"");
 
     /** The stages in the map's order, by sub-package name; "" for the system's own package. */
     static List<String> stages() throws IOException {
@@ -92,6 +98,48 @@ class TerrainStagesTest {
             }
         }
         assertTrue(found.isEmpty(), String.join("\n", found));
+    }
+
+    /** The includes of a shader of stage {@code stage} from later stages, one message each. */
+    static List<String> backwardIncludes(String file, String stage, String source, List<String> stages) {
+        List<String> found = new ArrayList<>();
+        Matcher m = INCLUDE.matcher(source);
+        while (m.find()) {
+            String other = m.group(2) == null ? "" : m.group(2);
+            if (stages.indexOf(other) > stages.indexOf(stage)) {
+                found.add(file + " (stage '" + stage + "') includes " + m.group() + " of the later stage '" + other
+                        + "'");
+            }
+        }
+        return found;
+    }
+
+    @Test
+    void theShadersMirrorTheStages() throws IOException {
+        List<String> stages = stages();
+        List<String> found = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(SHADERS)) {
+            for (Path f : files.filter(Files::isRegularFile).sorted().toList()) {
+                Path dir = SHADERS.relativize(f).getParent();
+                String stage = dir == null ? "" : dir.toString();
+                if (!stages.contains(stage)) {
+                    found.add(f + " lies in '" + stage + "', which is no stage of the map " + stages);
+                }
+                found.addAll(backwardIncludes(SHADERS.relativize(f).toString(), stage, Files.readString(f), stages));
+            }
+        }
+        assertTrue(found.isEmpty(), String.join("\n", found));
+    }
+
+    @Test
+    void aLaterStageIncludedByAnEarlierShaderIsFound() {
+        List<String> stages = List.of("heights", "material", "stream", "");
+        String source = "#include \"common/frame.glsl\"\n#include \"terrain/material/horizon.glsl\"\n"
+                + "#include \"terrain/stream/clipmap.glsl\"\n#include \"terrain/terrain.vert\"\n";
+        List<String> found = backwardIncludes("material/x.frag", "material", source, stages);
+        assertEquals(2, found.size(), "the later stream's and the system's includes, not its own: " + found);
+        assertTrue(found.get(0).contains("stream/clipmap") && found.get(1).contains("terrain/terrain.vert"),
+                found.toString());
     }
 
     @Test

@@ -5,6 +5,7 @@ import org.joml.Vector3fc;
 import org.joml.Vector4fc;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
 /**
@@ -13,14 +14,17 @@ import org.openworld.engine.gl.Uniform;
  */
 final class CloudPrograms {
 
-    /** Texture units: the field and the optics table (shadow, march), then each pass's own inputs. */
-    static final int UNIT_FIELD = 0;
-    static final int UNIT_OPTICS = 1;
-    static final int UNIT_SCENE_DEPTH = 2;
-    static final int UNIT_LIGHT = 3;
-    static final int UNIT_DEPTH = 4;
-    static final int UNIT_HISTORY = 5;
-    static final int UNIT_DETAIL = 6;
+    /** The samplers and their texture units: the field and the optics table (shadow, march), then each pass's own. */
+    private static final TextureUnits UNITS = new TextureUnits();
+    static final TextureUnits.Sampler FIELD = UNITS.add("cloudField");
+    static final TextureUnits.Sampler OPTICS = UNITS.add("cloudOptics");
+    static final TextureUnits.Sampler SCENE_DEPTH = UNITS.add("sceneDepth");
+    static final TextureUnits.Sampler FRESH_LIGHT = UNITS.add("freshLight");
+    static final TextureUnits.Sampler FRESH_DEPTH = UNITS.add("freshDepth");
+    static final TextureUnits.Sampler HISTORY = UNITS.add("historyLight");
+    static final TextureUnits.Sampler DETAIL = UNITS.add("cloudDetail");
+    static final TextureUnits.Sampler LIGHT = UNITS.add("cloudLight");
+    static final TextureUnits.Sampler DEPTH = UNITS.add("cloudDepth");
 
     final ShaderProgram shadow;
     final ShaderProgram march;
@@ -43,8 +47,8 @@ final class CloudPrograms {
 
     CloudPrograms(EngineContext context) {
         shadow = program(context, "shadowProgram", "clouds/shadow.frag");
-        shadow.sampler("cloudField", UNIT_FIELD);
-        shadow.sampler("cloudOptics", UNIT_OPTICS);
+        shadow.sampler(FIELD);
+        shadow.sampler(OPTICS);
         shadowLayer = shadow.vec4("uLayer");
         shadowMotion = shadow.vec4("uMotion");
         shadowSize = shadow.vec2("uSize");
@@ -52,27 +56,27 @@ final class CloudPrograms {
         shadowSun = shadow.vec3("uSunDir");
 
         march = program(context, "marchProgram", "clouds/march.frag");
-        march.sampler("cloudField", UNIT_FIELD);
-        march.sampler("cloudOptics", UNIT_OPTICS);
-        march.sampler("cloudDetail", UNIT_DETAIL);
-        march.sampler("sceneDepth", UNIT_SCENE_DEPTH);
+        march.sampler(FIELD);
+        march.sampler(OPTICS);
+        march.sampler(DETAIL);
+        march.sampler(SCENE_DEPTH);
         marchLayer = march.vec4("uLayer");
         marchMotion = march.vec4("uMotion");
         marchGrid = march.vec4("uGrid");
         marchEvery = march.float1("uEveryTexel");
 
         resolve = program(context, "resolveProgram", "clouds/resolve.frag");
-        resolve.sampler("sceneDepth", UNIT_SCENE_DEPTH);
-        resolve.sampler("freshLight", UNIT_LIGHT);
-        resolve.sampler("freshDepth", UNIT_DEPTH);
-        resolve.sampler("historyLight", UNIT_HISTORY);
+        resolve.sampler(SCENE_DEPTH);
+        resolve.sampler(FRESH_LIGHT);
+        resolve.sampler(FRESH_DEPTH);
+        resolve.sampler(HISTORY);
         resolvePrevious = resolve.mat4("uPreviousViewProjection");
         resolveGrid = resolve.vec4("uGrid");
         resolveEvery = resolve.float1("uEveryTexel");
 
         composite = program(context, "compositeProgram", "clouds/composite.frag");
-        composite.sampler("cloudLight", UNIT_LIGHT);
-        composite.sampler("cloudDepth", UNIT_DEPTH);
+        composite.sampler(LIGHT);
+        composite.sampler(DEPTH);
         compositeGrid = composite.vec2("uGridSize");
         compositeSky = composite.float1("uSky");
     }

@@ -163,8 +163,8 @@ public final class CloudVolumeSystem implements EngineSystem {
             int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
             int[] viewport = new int[4];
             glGetIntegerv(GL_VIEWPORT, viewport);
-            field.bind(CloudPrograms.UNIT_FIELD);
-            optics.bind(CloudPrograms.UNIT_OPTICS);
+            field.bind(CloudPrograms.FIELD.unit());
+            optics.bind(CloudPrograms.OPTICS.unit());
             shadowTarget.bind();
             CameraPose pose = world.resource(Camera.class).pose();
             Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
@@ -212,10 +212,10 @@ public final class CloudVolumeSystem implements EngineSystem {
             haveHistory = false;
         }
         // bound after the targets are made: making a texture binds it to the active unit
-        scene.depth().bind(CloudPrograms.UNIT_SCENE_DEPTH); // read while another target is drawn into
-        field.bind(CloudPrograms.UNIT_FIELD);
-        detail.bind(CloudPrograms.UNIT_DETAIL);
-        optics.bind(CloudPrograms.UNIT_OPTICS);
+        scene.depth().bind(CloudPrograms.SCENE_DEPTH.unit()); // read while another target is drawn into
+        field.bind(CloudPrograms.FIELD.unit());
+        detail.bind(CloudPrograms.DETAIL.unit());
+        optics.bind(CloudPrograms.OPTICS.unit());
 
         // 1. the march: the frame's slot of every 2 x 2 block, or every texel without a usable history
         boolean every = !haveHistory || !c.equals(historySettings) || jumped(context);
@@ -231,17 +231,17 @@ public final class CloudVolumeSystem implements EngineSystem {
         int read = written;
         written = 1 - written;
         targets.history[written].bind();
-        targets.freshLight.bind(CloudPrograms.UNIT_LIGHT);
-        targets.freshDepth.bind(CloudPrograms.UNIT_DEPTH);
-        targets.historyLight[read].bind(CloudPrograms.UNIT_HISTORY);
+        targets.freshLight.bind(CloudPrograms.FRESH_LIGHT.unit());
+        targets.freshDepth.bind(CloudPrograms.FRESH_DEPTH.unit());
+        targets.historyLight[read].bind(CloudPrograms.HISTORY.unit());
         programs.useResolve(previousViewProjection, gw, gh, slot, every);
         fullScreen.draw(context.stats());
 
         // 3. the composite over the picture: the sky's pixels, then the surfaces', chosen by the depth test
         glBindFramebuffer(GL_FRAMEBUFFER, previousFramebuffer);
         glViewport(0, 0, scene.width(), scene.height());
-        targets.historyLight[written].bind(CloudPrograms.UNIT_LIGHT);
-        targets.historyDepth[written].bind(CloudPrograms.UNIT_DEPTH);
+        targets.historyLight[written].bind(CloudPrograms.LIGHT.unit());
+        targets.historyDepth[written].bind(CloudPrograms.DEPTH.unit());
         glEnable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

@@ -17,10 +17,10 @@ import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.terrain.heights.HeightMap;
 
 /**
- * The far terrain's material, baked: steps 1–3 of {@code shaders/terrain/material.glsl} (which material, how they
- * layer, their albedo, detail slope and gloss) evaluated once per texel of two textures laid over the map tile, as a
- * viewer far away sees them ({@code shaders/terrain/bake.frag}). Far patches read them with two lookups where the near
- * ones sample every layer at two scales (twelve lookups) and evaluate two 4-octave noises; their mips serve ever
+ * The far terrain's material, baked: steps 1–3 of {@code shaders/terrain/material/material.glsl} (which material,
+ * how they layer, their albedo, detail slope and gloss) evaluated once per texel of two textures laid over the map
+ * tile, as a viewer far away sees them ({@code shaders/terrain/material/bake.frag}). Far patches read them with two
+ * lookups where the near ones sample every layer at two scales (twelve lookups) and evaluate two 4-octave noises; their mips serve ever
  * farther ground.
  *
  * <p><b>Size.</b> One texel per height sample up to {@value #MAX_SIZE}² (2 m at the default 4 km tile, 1 m on a
@@ -79,7 +79,8 @@ public final class FarMaterial {
         triangle = context.own(Mesh.fullScreenTriangle(gl));
         for (MaterialSettings.Tiling tiling : MaterialSettings.Tiling.values()) {
             ShaderProgram program = context.own("bake" + tiling.roleSuffix(),
-                    context.shaders().program(tiling.defines(), "terrain/bake.vert", "terrain/bake.frag"));
+                    context.shaders().program(tiling.defines(), "terrain/material/bake.vert",
+                            "terrain/material/bake.frag"));
             bakes.put(tiling, bakeUniforms(program, base, lowest, highest, size, unitHeights));
         }
     }

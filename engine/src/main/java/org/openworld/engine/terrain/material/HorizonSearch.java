@@ -7,8 +7,8 @@ import org.openworld.engine.gl.Uniform;
 
 /**
  * How much of its sky each place of the ground sees (the light in the shadows): horizon-based ambient occlusion
- * from the heights, made on the GPU by {@code shaders/terrain/horizon.glsl} for the samples of one level at a time,
- * the tile's ({@link TileSky}) or a streamed block's ({@code stream.StreamedSky}). This class holds the search's
+ * from the heights, made on the GPU by {@code shaders/terrain/material/horizon.glsl} for the samples of one level
+ * at a time, the tile's ({@link TileSky}) or a streamed block's ({@code stream.StreamedSky}). This class holds the search's
  * parameters, which both set as uniforms.
  *
  * <p>Along each of {@value #DIRECTIONS} azimuths φ the horizon is the highest elevation at which the ground is seen,
@@ -75,7 +75,7 @@ public final class HorizonSearch {
         return List.of("SKY_DIRECTIONS " + DIRECTIONS, "SKY_STEPS " + Math.max(1, distances(finest).length));
     }
 
-    /** The search's uniforms in a program that includes {@code terrain/horizon.glsl}. */
+    /** The search's uniforms in a program that includes {@code terrain/material/horizon.glsl}. */
     public static final class Uniforms {
         private final Uniform.Int level;
         private final Uniform.Int steps;

@@ -15,7 +15,7 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param skyOcclusion let the relief hide its share of the sky's light ({@link HorizonSearch}): in valleys and at the
  *                    feet of cliffs that share is lit by the terrain instead, warmer, and darker under a low sun
  * @param detailScale side of the fine texture tile (the synthesised exemplar) on the ground; the coarse tile that is
- *                    blended in to hide the repetition is {@code shaders/terrain/material.glsl}'s
+ *                    blended in to hide the repetition is {@code shaders/terrain/material/material.glsl}'s
  *                    {@code MAT_COARSE_FACTOR} times larger; each quilted Wang tile is one such tile
  * @param farTexels   distance from the eye beyond which the terrain reads the {@link FarMaterial} baked once instead
  *                    of every material layer, in texels of that material (2 m each on the default map, 1 m on a
@@ -61,7 +61,7 @@ public record MaterialSettings(
 
     /**
      * How the detail textures cover the ground; each tiling is a variant of the near terrain and the bake programs
-     * ({@code MAT_WANG} and {@code MAT_STOCHASTIC} in {@code shaders/terrain/material.glsl}), so none pays for
+     * ({@code MAT_WANG} and {@code MAT_STOCHASTIC} in {@code shaders/terrain/material/material.glsl}), so none pays for
      * another.
      */
     public enum Tiling {

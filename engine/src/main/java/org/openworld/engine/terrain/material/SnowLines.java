@@ -15,7 +15,7 @@ import org.openworld.engine.terrain.material.MaterialSettings.SnowMode;
  *   <li>{@link SnowMode#SNOW_MAP} (figure 1b): from {@code terrain.snow-base} to {@code terrain.snow-full}, where the
  *       snow map's chance rises from 0 to 1;</li>
  *   <li>{@link SnowMode#ALTITUDE_BANDS} (figure 1a): the band {@link #BAND_LINE} ± {@link #BAND_EDGE}, whose
- *       ends {@code shaders/terrain/material.glsl} gets from here as {@code uMatSnowBand}.</li>
+ *       ends {@code shaders/terrain/material/material.glsl} gets from here as {@code uMatSnowBand}.</li>
  * </ul>
  * Limits: the line is the rule's, not every pixel's. The snow map's opening keeps closed snow fields only where the
  * chance is near 1, just under the full line, and leaves a speckled fringe below; snow slides off slopes steeper

@@ -14,8 +14,8 @@ import org.openworld.engine.terrain.material.TerrainTextures.Material;
 /**
  * The GPU side of the terrain materials (paper 2.2): the synthesised {@link TerrainTextures} as two mipmapped
  * texture arrays (albedo, detail; one layer per {@link Material}), plus the binding of
- * {@code shaders/terrain/material.glsl}'s samplers and settings. Glossy surfaces reflect the sky's environment map,
- * which the engine binds for every shader ({@code shaders/common/environment.glsl}).
+ * {@code shaders/terrain/material/material.glsl}'s samplers and settings. Glossy surfaces reflect the sky's
+ * environment map, which the engine binds for every shader ({@code shaders/common/environment.glsl}).
  *
  * <p>Use: once per program, {@code Uniforms u = TerrainMaterials.uniforms(program)}; per draw,
  * {@code materials.bind(u, settings, firstUnit)}, which takes texture units {@code firstUnit} to

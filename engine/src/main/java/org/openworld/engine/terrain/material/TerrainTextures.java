@@ -47,7 +47,7 @@ public final class TerrainTextures {
      */
     public static final int SIZE = 512;
 
-    /** The materials, in texture-array layer order (shaders/terrain/material.glsl's MAT_GRASS, MAT_ROCK, MAT_SNOW). */
+    /** The materials, in texture-array layer order (terrain/material/material.glsl's MAT_GRASS, MAT_ROCK, MAT_SNOW). */
     public enum Material { GRASS, ROCK, SNOW }
 
     private final int size;

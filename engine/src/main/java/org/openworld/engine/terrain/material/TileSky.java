@@ -15,8 +15,8 @@ import org.openworld.engine.terrain.heights.HeightPyramid;
 
 /**
  * The tile's share of the sky seen ({@link HorizonSearch}), made on the GPU when the world is built, as the streamed
- * world's blocks make theirs: {@code shaders/terrain/tilesky.frag} runs the search for every sample of the first
- * pyramid level of at most {@value #MAX_SIZE}² samples (8 m apart on the default map: occlusion varies over tens of
+ * world's blocks make theirs: {@code shaders/terrain/material/tilesky.frag} runs the search for every sample of the
+ * first pyramid level of at most {@value #MAX_SIZE}² samples (8 m apart on the default map: occlusion varies over tens of
  * metres), reading the pyramid's levels from the height texture's mips, wrapped on a periodic tile. The tile is one
  * block: one full-screen triangle over an R8 target of that level's size, read back and resampled to the snow map's
  * grid, whose texture carries it in g ({@link TerrainMaps}).
@@ -53,7 +53,7 @@ public final class TileSky {
         int n = pyramid.level(level).size();
         boolean periodic = pyramid.base().periodic();
         try (ShaderProgram program = shaders.program(HorizonSearch.defines(pyramid.spacing(level)),
-                "terrain/bake.vert", "terrain/tilesky.frag");
+                "terrain/material/bake.vert", "terrain/material/tilesky.frag");
              Mesh triangle = Mesh.fullScreenTriangle(gl);
              OffscreenState state = OffscreenState.enter();
              Framebuffer target = new Framebuffer(gl, n, n, Format.R8, null, Sampling.NEAREST_CLAMP)) {

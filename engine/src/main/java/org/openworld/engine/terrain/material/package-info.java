@@ -14,27 +14,21 @@
  * All textures are synthesised by {@link org.openworld.engine.terrain.material.TerrainTextures} (periodic noise, a recipe per
  * material, the packing into RGBA8); two scales are blended to hide the tiling the paper complains of in section 6.
  * {@code materials.tiling=quilted} does what the paper proposes, image quilting (Efros and Freeman 2001), made
- * aperiodic as quilted Wang tiles (Cohen et al. 2003, {@link org.openworld.engine.terrain.material.WangTiles}): at start-up 16
- * tiles are cut from each 512² tile, one per choice of two colours on each edge; each colour is a diamond of the
- * exemplar straddling the edge, so tiles that share an edge colour share its texels; inside a tile the diamonds meet
- * along minimum-error cuts of the diagonals ({@link org.openworld.engine.terrain.material.ImageQuilting}, dynamic
- * programming), and a centre block of its own is sewn in along cuts of its border strips. The shader hashes each
- * edge's colour from the tile grid and reads the tile from a 4 × 4 atlas that is itself a valid Wang tiling (so its
- * mips agree across tile edges): one lookup per scale, 16 times the texture memory (128 MiB), about a second at
- * start; the repetition measure reads 0.20 / 0.31 / 0.17 from 20 / 100 / 500 m
- * (against the tiles' 0.69 / 0.97 / 0.54). {@code materials.tiling=stochastic} removes the repeat (Heitz and Neyret
- * 2018): a triangle grid in skewed space, each corner shifting the texture by a hash of its lattice point, the three
- * lookups blended by barycentric weights w around the texture's mean m as {@code m + Σ w_i (x_i − m) / sqrt(Σ w_i²)},
- * which keeps the contrast a plain blend would wash out. Three times the lookups of the near material and the bake;
- * the repetition measure reads 0.06 / 0.08 / 0.04 (docs/terrain.md section 4).
+ * aperiodic as quilted Wang tiles (Cohen et al. 2003, {@link org.openworld.engine.terrain.material.WangTiles}): 16
+ * tiles cut from each texture along minimum-error seams ({@link org.openworld.engine.terrain.material.ImageQuilting}),
+ * edges matched by colour, laid by a hash of the tile grid: one lookup per scale, 16 times the texture memory.
+ * {@code materials.tiling=stochastic} removes the repeat (Heitz and Neyret 2018): a triangle grid in skewed space,
+ * each corner shifting the texture by a hash of its lattice point, the three lookups blended by barycentric weights w
+ * around the texture's mean m as {@code m + Σ w_i (x_i − m) / sqrt(Σ w_i²)}, which keeps the contrast; three times
+ * the lookups. How much each still repeats: docs/terrain.md, section 4.
  *
  * <p><b>The sky the relief hides.</b> Shadowed ground is lit by the sky's irradiance for its normal,
  * E(n) from nine spherical-harmonic factors (the sky system's); {@link org.openworld.engine.terrain.material.HorizonSearch}
  * takes out what the relief hides: along 8 azimuths the horizon's rise above the tangent plane α, searched over the
  * pyramid to 3 km, gives the visible share {@code V = (1/8) Σ cos² α}, and the light becomes
  * {@code V · E(n) + (1 − V) · E_hidden}, E_hidden that of terrain under the sky and half the sun. One way for every
- * source, on the GPU ({@code shaders/terrain/horizon.glsl}): the tile's once at start over its level of at most 512²
- * samples ({@link org.openworld.engine.terrain.material.TileSky}), the streamed world's per block; stored as the snow
+ * source, on the GPU ({@code shaders/terrain/material/horizon.glsl}): the tile's once at start over its level of at
+ * most 512² samples ({@link org.openworld.engine.terrain.material.TileSky}), the streamed world's per block; stored as the snow
  * texture's second channel, so no lookup is added. Limits:
  * gullies narrower than two samples, a uniform sky, occluders lit the same everywhere.
  *
@@ -45,9 +39,8 @@
  * weighs most, 1.06 on a 70° face), and the planes mix only between about 35° and 55° of slope. The normal map's
  * slope is read along each plane's texture axes and swizzled into the terrain's frame T, B: on (z, y) it is
  * {@code (±s_v, s_u)}, on (x, y) {@code (s_u, ±s_v)}, the sign that of the frame vector's rise, so bumps stay lit from
- * the sun's side. Cost: 8 more texture reads in the near program (20 instead of 12), about a tenth of the frame on
- * {@code valley.path} on llvmpipe, so the default stays {@code planar}; the setting is read when the world is built
- * and compiles the near programs with or without {@code MAT_TRIPLANAR}. Limits: the far material is baked over
+ * the sun's side. Cost: 8 more texture reads in the near program (20 instead of 12), so the default stays
+ * {@code planar}; the near programs are compiled with or without {@code MAT_TRIPLANAR}. Limits: the far material is baked over
  * (x, z) and keeps a texel every 2 m / cos a down a far cliff; inside the blend band two patches of rock show
  * through each other.
  *

@@ -26,8 +26,8 @@ import org.openworld.engine.terrain.material.HorizonSearch;
 /**
  * The unbounded world's share of the sky seen, made on the GPU as the blocks stream ({@link UnboundedWorld}): the
  * {@link HorizonSearch} the tile's {@code TileSky} runs (the same azimuths, distances, level choice and
- * {@code V = (1/N) Σ cos² α_φ}), by {@code shaders/terrain/sky.frag} over the 64² texels of one block of level L,
- * reading the clipmap's own height levels, and written into the g channel of the snow map's layer L (the snow in r is masked off). One full-screen
+ * {@code V = (1/N) Σ cos² α_φ}), by {@code shaders/terrain/stream/sky.frag} over the 64² texels of one block of
+ * level L, reading the clipmap's own height levels, and written into the g channel of the snow map's layer L (the snow in r is masked off). One full-screen
  * triangle per block, the viewport on the block's texels: GL 3.3, no compute.
  *
  * <p><b>When.</b> A block is shaded once the heights its search reads have arrived ({@link StreamedWorld#skyReady}):
@@ -92,7 +92,7 @@ final class StreamedSky {
         this.unit = unit;
         int levels = stream.levels();
         program = context.own("sky", context.shaders().program(HorizonSearch.defines(heights.spacing(0)),
-                "terrain/bake.vert", "terrain/sky.frag"));
+                "terrain/material/bake.vert", "terrain/stream/sky.frag"));
         search = new HorizonSearch.Uniforms(program, levels, heights.spacing(0), heights.spacing(0));
         program.sampler("heights", unit);
         program.sampler("slopes", unit + 1);

@@ -7,7 +7,7 @@
 //                                             steps 1-3: albedo, detail slope and gloss, unlit
 //   vec3 lightTerrain(TerrainSurface s, MatTexel m)   steps 4-5: the detail normal and the light
 // The far variant of the terrain (terrain.frag with TERRAIN_FAR) reads steps 1-3 baked once into world textures
-// (terrain/bake.frag, engine: FarMaterial) and lights them with lightTerrain; on the unbounded world, which has no
+// (bake.frag, engine: FarMaterial) and lights them with lightTerrain; on the unbounded world, which has no
 // bake, it runs steps 1-3 at the coarse scale alone (MAT_COARSE_ONLY: half the lookups).
 //
 // Steps of shadeTerrain:

@@ -6,7 +6,7 @@
 // (this pass's own derivatives choose it), the macro variation made periodic over a repeating tile.
 // Far terrain then reads albedo, gloss, the detail slope and the ground's gradient with two lookups (terrain.frag,
 // TERRAIN_FAR).
-#include "terrain/material.glsl"
+#include "terrain/material/material.glsl"
 
 uniform sampler2D heights;     // the height pyramid; level bakeLevel is read
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered

@@ -1,5 +1,5 @@
 #version 330 core
-// The unbounded world's share of the sky seen (StreamedSky): the horizon search (terrain/horizon.glsl) for the
+// The unbounded world's share of the sky seen (StreamedSky): the horizon search (terrain/material/horizon.glsl) for the
 // texels of one streamed block of level L, marched over the clipmap's own levels, written into the g channel of the
 // snow map's layer L (the caller masks r, the snow, off).
 
@@ -40,7 +40,7 @@ bool heightOf(int k, ivec2 base, vec2 offset, out float h) {
     return true;
 }
 
-#include "terrain/horizon.glsl"
+#include "terrain/material/horizon.glsl"
 
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);

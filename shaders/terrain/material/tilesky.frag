@@ -1,5 +1,5 @@
 #version 330 core
-// The tile's share of the sky seen (TileSky): the horizon search (terrain/horizon.glsl) for the samples of pyramid
+// The tile's share of the sky seen (TileSky): the horizon search (horizon.glsl) for the samples of pyramid
 // level L, marched over the pyramid's levels (the height texture's mips), written into r of an R8 target of level L's
 // size. The tile wraps (periodic) or repeats its edge samples (imported), as its heights do.
 
@@ -27,7 +27,7 @@ bool heightOf(int k, ivec2 base, vec2 offset, out float h) {
     return true;
 }
 
-#include "terrain/horizon.glsl"
+#include "terrain/material/horizon.glsl"
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
