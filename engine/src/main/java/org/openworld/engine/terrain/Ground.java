@@ -11,10 +11,12 @@ import org.openworld.engine.terrain.lod.TerrainQuadtree;
 import org.openworld.engine.terrain.mesh.PatchLayout;
 
 /**
- * The ground the terrain system draws: a height source with the level-of-detail scheme that brings its levels to the
- * GPU. The system asks the same questions of every kind ({@link TileGround}: a generated or imported tile, its
- * whole pyramid on the GPU, drawn as copies around the camera; {@link StreamedGround}: the unbounded world's levels
- * streamed around the camera), so that it holds no branch on the kind it draws.
+ * The ground the terrain system draws: a height source with the way its levels reach the GPU, its layout for the
+ * programs and its shading. The system asks the same questions of every kind ({@link TileGround}: a generated or
+ * imported tile, its whole pyramid on the GPU, drawn as copies around the camera; {@link StreamedGround}: the
+ * unbounded world's levels streamed around the camera), so that it holds no branch on the kind it draws; the
+ * setting {@code terrain.world} picks the kind once. The level-of-detail scheme ({@code lod.mode}) is a separate
+ * choice, which asks only the ground's {@link Residency}.
  */
 public interface Ground {
 

@@ -1,5 +1,6 @@
 package org.openworld.engine.terrain;
 
+import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.NodeHeights;
@@ -25,6 +26,14 @@ public final class StreamedGround implements Ground {
     private final StreamedWorld stream;
     private final PatchLayout layout;
     private final TerrainShading shading;
+
+    /** The bands, streamed around where the camera starts, and the programs that read them. */
+    static StreamedGround make(EngineContext context, TerrainSettings terrain, int seed, int cells, int unitHeights,
+                               StageTimes times, Consumer<String> progress) {
+        progress.accept("terrain: the unbounded world, seed " + seed);
+        return new StreamedGround(context.own(new UnboundedWorld(context, terrain, seed, cells, unitHeights, times,
+                progress)), context, seed, unitHeights, times);
+    }
 
     StreamedGround(UnboundedWorld world, EngineContext context, int seed, int unitHeights,
                    StageTimes times) {

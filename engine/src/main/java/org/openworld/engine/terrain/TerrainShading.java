@@ -104,7 +104,7 @@ final class TerrainShading {
      */
     static TerrainShading baked(EngineContext context, PatchLayout layout, HeightMap base, int seed, int unitHeights,
                                 StageTimes times) {
-        return new TerrainShading(context, layout, seed, unitHeights, times,
+        return new TerrainShading(context, layout, TerrainVariant.Layout.TILE, seed, unitHeights, times,
                 shading -> shading.new Baked(new FarMaterial(context, base, layout.lowest(), layout.highest(),
                         unitHeights)));
     }
@@ -115,15 +115,16 @@ final class TerrainShading {
      */
     static TerrainShading coarse(EngineContext context, PatchLayout layout, int seed, int unitHeights,
                                  StageTimes times) {
-        return new TerrainShading(context, layout, seed, unitHeights, times, shading -> shading.new Coarse());
+        return new TerrainShading(context, layout, TerrainVariant.Layout.CLIPMAP, seed, unitHeights, times,
+                shading -> shading.new Coarse());
     }
 
     /**
      * Makes the programs, the materials (quilted if the settings of the start ask for it, timed as the
      * {@code quilting} stage) and the far look, handed to the system's owner.
      */
-    private TerrainShading(EngineContext context, PatchLayout layout, int seed, int unitHeights, StageTimes times,
-                           Function<TerrainShading, Far> far) {
+    private TerrainShading(EngineContext context, PatchLayout layout, TerrainVariant.Layout heights, int seed,
+                           int unitHeights, StageTimes times, Function<TerrainShading, Far> far) {
         unitGradients = unitHeights + 1;
         unitMaterials = unitHeights + 3;
         unitFar = unitMaterials + TerrainMaterials.UNITS; // and the next: colour, slope
@@ -134,7 +135,7 @@ final class TerrainShading {
         tiles = TerrainTextures.generate(seed);
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         this.layout = layout;
-        heights = TerrainVariant.Layout.of(layout.streamed());
+        this.heights = heights;
         this.far = far.apply(this);
         MaterialSettings.Cliffs cliffs = context.settings().get(MaterialSettings.class).cliffs();
         shadowed = lit(context, Light.SHADOWED, cliffs, unitHeights);
@@ -189,6 +190,13 @@ final class TerrainShading {
         p.sampler("snowMap", unitHeights + 2);
         farFieldUniforms = far.reads(p, unitHeights);
         layout.extentUniforms(p);
+        return p;
+    }
+
+    /** The program of the passes that need depth alone (the sun's), its vertex stage's uniforms set. */
+    ShaderProgram depth(EngineContext context, int unitHeights) {
+        ShaderProgram p = TerrainVariant.of(Kind.DEPTH, heights).program(context);
+        layout.apply(p, unitHeights);
         return p;
     }
 

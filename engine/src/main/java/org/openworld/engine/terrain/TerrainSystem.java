@@ -2,7 +2,6 @@ package org.openworld.engine.terrain;
 
 import static org.lwjgl.opengl.GL11C.*;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Consumer;
 import org.joml.Vector3f;
@@ -22,9 +21,6 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
-import org.openworld.engine.drainage.Wetness;
-import org.openworld.engine.elevation.ElevationImport;
-import org.openworld.engine.erosion.TileErosion;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.SunShadow;
 import org.openworld.engine.gl.ShaderProgram;
@@ -32,7 +28,6 @@ import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
-import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.lod.CopyLattice;
@@ -48,7 +43,6 @@ import org.openworld.engine.terrain.mesh.PatchLayout;
 import org.openworld.engine.terrain.mesh.PatchOrder;
 import org.openworld.engine.terrain.mesh.PatchPatterns;
 import org.openworld.engine.terrain.mesh.PatchRenderer;
-import org.openworld.engine.terrain.stream.UnboundedWorld;
 
 /**
  * The mountains: generates (or imports) the height field with its pyramid and snow map, publishes it as the world's
@@ -147,8 +141,11 @@ public final class TerrainSystem implements EngineSystem {
         int cells = settings.get(LodSettings.class).patchVertices() - 1;
         patterns = new PatchPatterns(cells);
         renderer = context.own(new PatchRenderer(context, patterns));
-        ground = terrain.world() == TerrainSettings.World.UNBOUNDED
-                ? unbounded(context, terrain, seed, cells, times) : tile(context, terrain, seed, cells, times);
+        ground = switch (terrain.world()) {
+            case TILE -> TileGround.make(context, tiles, terrain, seed, cells, UNIT_HEIGHTS, UNIT_GRADIENTS, UNIT_SNOW,
+                    times, progress);
+            case UNBOUNDED -> StreamedGround.make(context, terrain, seed, cells, UNIT_HEIGHTS, times, progress);
+        };
         context.world().setResource(HeightField.class, ground.heights());
         tree = ground.tree();
         selection = new PatchSelection(tree, ground.residency());
@@ -159,35 +156,9 @@ public final class TerrainSystem implements EngineSystem {
         context.world().setResource(new RenderOrigin(tree.extent()));
         copyOffsets = new float[] {0, 0};
         context.world().add(entity, new Cullable(tree.bounds(), copyOffsets, ground.cullHeights()));
-        depthProgram = TerrainVariant.of(TerrainVariant.Kind.DEPTH, TerrainVariant.Layout.of(layout.streamed()))
-                .program(context);
-        layout.apply(depthProgram, UNIT_HEIGHTS);
+        depthProgram = shading.depth(context, UNIT_HEIGHTS);
         publishSnowLine(context.world(), settings);
         farField = ground.farField(context, UNIT_HEIGHTS);
-    }
-
-    /** A generated or imported tile. */
-    private Ground tile(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
-        Path file = Path.of(terrain.importFile());
-        progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
-                + (ElevationImport.handles(file) ? ": " + ElevationImport.describe(file, terrain, seed) : "")
-                : "generating " + terrain.size() + "² samples, seed " + seed));
-        TerrainData data = tiles.make(terrain, seed, times);
-        HeightMap base = data.pyramid().base();
-        if (base.periodic()) {
-            // how wet each place is, from the water that drains through it (drainage.Wetness)
-            HeightMap routed = data.pyramid().level(TileErosion.routingLevel(base));
-            context.world().setResource(times.time("wetness",
-                    () -> Wetness.ofTile(routed.heights(), routed.size(), routed.spacing())));
-        }
-        return new TileGround(context, data, seed, cells, UNIT_HEIGHTS, UNIT_GRADIENTS, UNIT_SNOW, times);
-    }
-
-    /** The unbounded world: bands, streamed around where the camera starts, and the programs that read them. */
-    private Ground unbounded(EngineContext context, TerrainSettings terrain, int seed, int cells, StageTimes times) {
-        progress.accept("terrain: the unbounded world, seed " + seed);
-        return new StreamedGround(context.own(new UnboundedWorld(context, terrain, seed, cells, UNIT_HEIGHTS, times,
-                progress)), context, seed, UNIT_HEIGHTS, times);
     }
 
     /** The snow line in metres of the snow rule in use (the snow map's, or the altitude bands') over the heights. */

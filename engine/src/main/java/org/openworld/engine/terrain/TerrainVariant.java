@@ -49,12 +49,8 @@ record TerrainVariant(Kind kind, Tiling tiling, Cliffs cliffs, Light light, Layo
     enum Layout {
         /** A tile's pyramid. */
         TILE,
-        /** The unbounded world's streamed clipmap. */
-        CLIPMAP;
-
-        static Layout of(boolean streamed) {
-            return streamed ? CLIPMAP : TILE;
-        }
+        /** Streamed levels' clipmap. */
+        CLIPMAP
     }
 
     /** Sets what the kind does not read to its first value, so equal sources make equal variants. */

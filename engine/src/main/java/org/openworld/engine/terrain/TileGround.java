@@ -1,12 +1,18 @@
 package org.openworld.engine.terrain;
 
+import java.nio.file.Path;
+import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.core.Pass;
+import org.openworld.engine.drainage.Wetness;
+import org.openworld.engine.elevation.ElevationImport;
+import org.openworld.engine.erosion.TileErosion;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.HeightSource;
 import org.openworld.engine.terrain.heights.StageTimes;
+import org.openworld.engine.terrain.heights.TerrainSettings;
 import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.PatchList;
 import org.openworld.engine.terrain.lod.Residency;
@@ -33,6 +39,28 @@ public final class TileGround implements Ground {
     private final PatchLayout layout;
     private final TerrainMaps maps;
     private final TerrainShading shading;
+
+    /**
+     * A generated or imported tile, made by {@code tiles}, and how wet each place is ({@link Wetness}, published
+     * to the world) where it repeats; its maps bound to these units as it bakes.
+     */
+    static TileGround make(EngineContext context, TerrainData.Maker tiles, TerrainSettings terrain, int seed,
+                           int cells, int unitHeights, int unitGradients, int unitSnow, StageTimes times,
+                           Consumer<String> progress) {
+        Path file = Path.of(terrain.importFile());
+        progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
+                + (ElevationImport.handles(file) ? ": " + ElevationImport.describe(file, terrain, seed) : "")
+                : "generating " + terrain.size() + "² samples, seed " + seed));
+        TerrainData data = tiles.make(terrain, seed, times);
+        HeightMap base = data.pyramid().base();
+        if (base.periodic()) {
+            // how wet each place is, from the water that drains through it (drainage.Wetness)
+            HeightMap routed = data.pyramid().level(TileErosion.routingLevel(base));
+            context.world().setResource(times.time("wetness",
+                    () -> Wetness.ofTile(routed.heights(), routed.size(), routed.spacing())));
+        }
+        return new TileGround(context, data, seed, cells, unitHeights, unitGradients, unitSnow, times);
+    }
 
     /** The tile's data off the GPU, its quadtree, its maps, then the materials (which bake on them). */
     TileGround(EngineContext context, TerrainData data, int seed, int cells, int unitHeights, int unitGradients,

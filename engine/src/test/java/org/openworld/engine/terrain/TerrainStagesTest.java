@@ -36,6 +36,24 @@ class TerrainStagesTest {
     /** An include of a terrain shader: {@code #include "terrain/material/material.glsl"}, the stage in group 2. */
     static final Pattern INCLUDE = Pattern.compile("#include \"terrain/((\\w+)/)?[\\w.]+\"");
 
+    /**
+     * Code that asks which kind of world it is in: a layout's {@code streamed()}, the {@code terrain.world} setting
+     * compared with {@code ==} or {@code !=}, or a ground tested with {@code instanceof}. The setting picks the
+     * ground once, in a {@code switch} over its values; everything after asks the ground.
+     */
+    static final Pattern WORLD_BRANCH = Pattern.compile("\\.streamed\\(\\)|\\.world\\(\\)\\s*[!=]="
+            + "|[!=]=\\s*(\\w+\\.)*World\\.\\w+|instanceof\\s+\\w*Ground\\b");
+
+    /** The branches on the world kind in a file's code, one message each. */
+    static List<String> worldBranches(String file, String source) {
+        List<String> found = new ArrayList<>();
+        Matcher m = WORLD_BRANCH.matcher(code(source));
+        while (m.find()) {
+            found.add(file + " branches on the world kind: " + m.group());
+        }
+        return found;
+    }
+
     /** The stages in the map's order, by sub-package name; "" for the system's own package. */
     static List<String> stages() throws IOException {
         List<String> order = new ArrayList<>();
@@ -154,5 +172,33 @@ class TerrainStagesTest {
                 + found);
         assertTrue(found.get(0).contains(".mesh.PatchPatterns") && found.get(1).contains(".TerrainSystem"), found
                 .toString());
+    }
+
+    /**
+     * No class of the terrain branches on the kind of world it draws: the ground, the layout and the residency
+     * answer for their kind (polymorphism), and the setting picks the ground once, in a {@code switch}.
+     */
+    @Test
+    void noCodeBranchesOnTheWorldKind() throws IOException {
+        List<String> found = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(TERRAIN)) {
+            for (Path f : files.filter(p -> p.toString().endsWith(".java")).sorted().toList()) {
+                found.addAll(worldBranches(TERRAIN.relativize(f).toString(), Files.readString(f)));
+            }
+        }
+        assertTrue(found.isEmpty(), String.join("\n", found));
+    }
+
+    @Test
+    void aBranchOnTheWorldKindIsFound() {
+        String source = "class Pick {\n"
+                + "  /** Not in a comment: layout.streamed() */\n"
+                + "  Layout a = Layout.of(layout.streamed());\n"
+                + "  boolean b = s.world() == TerrainSettings.World.UNBOUNDED;\n"
+                + "  boolean c = ground instanceof TileGround;\n"
+                + "  Ground d = switch (s.world()) { case TILE -> tile(); case UNBOUNDED -> streamed(); };\n"
+                + "}\n";
+        List<String> found = worldBranches("Pick.java", source);
+        assertEquals(3, found.size(), "the three branches, not the comment nor the switch: " + found);
     }
 }

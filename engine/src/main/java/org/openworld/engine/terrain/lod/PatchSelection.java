@@ -13,28 +13,26 @@ public final class PatchSelection {
 
     private final TerrainQuadtree tree;
     private final QuadtreeLod quadtree;
-    /** The paper's flat grid, over a tile made whole only: null for a streamed world. */
+    /** The paper's flat grid, over a residency that is {@link Residency#whole} only; null otherwise. */
     private final FlatGridLod flatGrid;
     private LodScheme last;
     private int visible;
 
-    /** Patches over a tile whose heights are all on the GPU. */
+    /** Patches over a tile whose heights are all on the GPU ({@link Residency#ALL}). */
     public PatchSelection(TerrainQuadtree tree) {
-        this.tree = tree;
-        this.quadtree = new QuadtreeLod(tree, Residency.ALL);
-        this.flatGrid = new FlatGridLod(tree);
-        this.last = quadtree;
+        this(tree, Residency.ALL);
     }
 
     /**
-     * Patches over a streamed world, whose nodes are drawn only once {@code residency} has them. The paper's flat
-     * grid puts every leaf of every copy in its cut, a tile's worth of work for each root of the unbounded world and
-     * all at the finest streamed level: the quadtree stands in for it ({@link LodMode#FLAT_GRID} draws the quadtree).
+     * Patches whose nodes are drawn only once {@code residency} has them. The paper's flat grid puts every leaf of
+     * every copy in its cut, so it needs every node there ({@link Residency#whole}); over a residency that streams
+     * its levels (a tile's worth of leaves for each root of the unbounded world, all at the finest level, most not
+     * there) the quadtree stands in for it: {@link LodMode#FLAT_GRID} then draws the quadtree's cut.
      */
     public PatchSelection(TerrainQuadtree tree, Residency residency) {
         this.tree = tree;
         this.quadtree = new QuadtreeLod(tree, residency);
-        this.flatGrid = null;
+        this.flatGrid = residency.whole() ? new FlatGridLod(tree) : null;
         this.last = quadtree;
     }
 

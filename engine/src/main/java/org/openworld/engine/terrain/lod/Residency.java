@@ -12,6 +12,11 @@ public interface Residency {
     /** Every node of every copy, always, with the heights its box gives: a tile made whole at start. */
     Residency ALL = new Residency() {
         @Override
+        public boolean whole() {
+            return true;
+        }
+
+        @Override
         public boolean drawable(int node, float offsetX, float offsetZ) {
             return true;
         }
@@ -21,6 +26,14 @@ public interface Residency {
             return false;
         }
     };
+
+    /**
+     * Whether every node of every copy is on the GPU from the start, so that a scheme may draw any of them: the
+     * paper's flat grid puts every leaf in its cut ({@link PatchSelection}). False unless a residency says so.
+     */
+    default boolean whole() {
+        return false;
+    }
 
     /**
      * @param node    a node of the quadtree

@@ -32,6 +32,15 @@
  * bound: it holds at the samples, for a patch's own level; a side stitched to a coarser neighbour reads that
  * neighbour's level, whose own bound covers the side, and the strip between blends the two.
  *
+ * <p><b>The scheme and the source.</b> The scheme ({@code lod.mode}) is chosen apart from the height source: both
+ * schemes cut the quadtree that any source's heights give ({@link org.openworld.engine.terrain.lod.TerrainQuadtree}),
+ * and ask a {@link org.openworld.engine.terrain.lod.Residency} which nodes they may draw, so how the levels reach
+ * the GPU (a tile's mips, the unbounded world's streamed clipmap) is the ground's, not the scheme's. The one
+ * property of the source a scheme needs is {@link org.openworld.engine.terrain.lod.Residency#whole}: the flat grid
+ * puts every leaf of every copy in its cut, so it runs only where every node is there from the start; over
+ * streamed levels (each root a tile's worth of leaves, most of them not yet there) the quadtree's cut stands in
+ * ({@link org.openworld.engine.terrain.lod.PatchSelection}).
+ *
  * <p><b>Geomorphing (CDLOD-style after Strugar 2009).</b> In the quadtree cut each patch morphs into its
  * parent's surface before it merges: it carries a factor k that rises from 0 to 1, by its box's distance D, over the
  * last 30 % of the way from its own merge distance to its parent's ({@link org.openworld.engine.terrain.lod.DetailLimit#fineFrom}:

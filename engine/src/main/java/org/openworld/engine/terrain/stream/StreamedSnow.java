@@ -6,16 +6,15 @@ import org.openworld.engine.terrain.material.SnowMap;
 import org.openworld.engine.terrain.material.TerrainMaps;
 
 /**
- * The unbounded world's snow map (paper 2.2, as {@link SnowMap} makes it for a tile), made block by block as the
- * clipmap streams ({@link UnboundedWorld}): each block of level 0 gets the tile's probabilistic snow, its opening and
- * closing and its blur; coarser levels get what that snow averages to.
+ * The unbounded world's snow map (paper 2.2), made block by block as the clipmap streams ({@link UnboundedWorld}):
+ * each block of level 0 gets the snow every height source gets ({@link SnowMap#cover}) and the tile's blur; coarser
+ * levels get what that snow averages to.
  *
- * <p><b>Level 0.</b> A sample is snow when a uniform number u is below p(n) ({@link SnowMap#probability}, n the
- * normalised height h / relief + seaFraction). Unlike the tile's row-seeded stream, u is a hash of the seed and the
- * world sample's index, so a sample's chance is its place's whatever block made it. The opening and closing of
- * radius r ({@code terrain.snow-morphology}) and the blur ({@link TerrainMaps#SNOW_BLUR_PASSES} binomial passes)
- * reach {@link #border} samples, which the block carries around it: its interior is then what one map over the
- * whole world would hold there, and blocks join without a seam.
+ * <p><b>Level 0.</b> {@link SnowMap#cover} over the block and its border: a sample's random draw is a hash of its
+ * place, whatever block made it. The opening and closing of radius r ({@code terrain.snow-morphology}) and the blur
+ * ({@link TerrainMaps#SNOW_BLUR_PASSES} binomial passes) reach {@link #border} samples, which the block carries
+ * around it: its interior is then what one map over the whole world would hold there, and blocks join without a
+ * seam.
  *
  * <p><b>Coarser levels.</b> A level-L texel stands for 4^L level-0 samples, so it shows their expected snow: the
  * share c(p) of a field of chance p that the opening and closing leave as snow. c is measured once, when the world is
@@ -34,19 +33,19 @@ final class StreamedSnow {
     static final int TABLE_STEPS = 16;
     /** Side of the random field c(p) is measured on, samples. */
     private static final int TABLE_FIELD = 128;
-    /** Distinguishes the snow's hash from the other users of the world seed. */
+    /** Distinguishes the table's random fields from the other users of the world seed. */
     private static final long STREAM = 0x5EED_5A0E_0000_0003L;
 
     private final TerrainSettings settings;
-    private final long seed;
+    private final int seed;
     private final float[] expected;
 
     /** The snow of this world's settings and seed, its table c(p) measured now. */
     StreamedSnow(TerrainSettings settings, int seed) {
         this.settings = settings;
-        this.seed = seed ^ STREAM;
+        this.seed = seed;
         this.expected = new float[TABLE_STEPS + 1];
-        SplittableRandom random = new SplittableRandom(this.seed);
+        SplittableRandom random = new SplittableRandom(seed ^ STREAM);
         byte[] field = new byte[TABLE_FIELD * TABLE_FIELD];
         for (int k = 0; k <= TABLE_STEPS; k++) {
             double p = (double) k / TABLE_STEPS;
@@ -104,14 +103,7 @@ final class StreamedSnow {
             throw new IllegalArgumentException("level 0's snow needs a border of " + border(settings)
                     + " samples, got " + border);
         }
-        byte[] snow = new byte[side * side];
-        for (int j = 0; j < side; j++) {
-            for (int i = 0; i < side; i++) {
-                double u = uniform(ix0 - border + i, iz0 - border + j);
-                snow[j * side + i] = u < probability(bordered[j * side + i]) ? SnowMap.SNOW : 0;
-            }
-        }
-        SnowMap.openAndClose(snow, side, settings.snowMorphology(), false);
+        byte[] snow = SnowMap.cover(bordered, side, ix0 - border, iz0 - border, 0, settings, seed);
         byte[] soft = TerrainMaps.blur(snow, side, false);
         for (int j = 0; j < block; j++) {
             System.arraycopy(soft, (j + border) * side + border, out, j * block, block);
@@ -121,14 +113,5 @@ final class StreamedSnow {
 
     private double probability(float height) {
         return SnowMap.probability(height / settings.relief() + settings.seaFraction(), settings);
-    }
-
-    /** A uniform number in [0, 1) for a level-0 sample: its index and the seed, mixed (SplitMix64's finaliser). */
-    private double uniform(long ix, long iz) {
-        long z = seed + ix * 0x9E37_79B9_7F4A_7C15L + iz * 0xC2B2_AE3D_27D4_EB4FL;
-        z = (z ^ (z >>> 30)) * 0xBF58_476D_1CE4_E5B9L;
-        z = (z ^ (z >>> 27)) * 0x94D0_49BB_1331_11EBL;
-        z ^= z >>> 31;
-        return (z >>> 11) * 0x1.0p-53;
     }
 }

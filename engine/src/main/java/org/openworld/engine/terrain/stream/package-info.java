@@ -14,7 +14,7 @@
  * not made yet shows as coarser ground, never a hole ({@link org.openworld.engine.terrain.stream.StreamedWorld}). Cost:
  * {@code 10 · levels · S²} bytes of GPU memory (heights, slopes, snow), 20 MiB by default whatever the distance
  * flown; a 64² block takes 0.57–1.95 ms of a worker. Its snow ({@link org.openworld.engine.terrain.stream.StreamedSnow}) is
- * the tile's rule with a hash for a random stream, so blocks join without seams; coarser levels show its mean.
+ * the tile's, made over each block with its border, so blocks join without seams; coarser levels show its mean.
  * Its sky occlusion ({@link org.openworld.engine.terrain.stream.StreamedSky}) is the tile's V
  * ({@link org.openworld.engine.terrain.material.HorizonSearch}), the same search run for each block by a fragment
  * pass that marches the clipmap's own levels once the heights it reads have arrived (a

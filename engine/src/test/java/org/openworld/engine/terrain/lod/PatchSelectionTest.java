@@ -137,6 +137,44 @@ class PatchSelectionTest {
     }
 
     /**
+     * The flat grid is a choice of its own over any residency that holds every node ({@link Residency#whole}), as the
+     * terrain system hands a tile's: its cut is every leaf of every copy (the leaves a side: size / cells), where
+     * the quadtree's cut under the same distance rule merges the far leaves. Over a residency that streams, the
+     * quadtree stands in for it.
+     */
+    @Test
+    void theFlatGridIsDrawnOverAWholeResidency() {
+        World world = hills(256, 1, 8, true);
+        int leavesPerSide = world.tree.size() / world.tree.cells();
+        int everyLeaf = world.offsets.length / 2 * leavesPerSide * leavesPerSide;
+        Vector3f camera = new Vector3f(0, 5, 0);
+        DetailLimit limit = DetailLimit.paper(1);
+        PatchList flat = new PatchList();
+        PatchList cut = new PatchList();
+        new PatchSelection(world.tree, Residency.ALL).select(camera, world.offsets, limit, LodMode.FLAT_GRID, null,
+                flat);
+        new PatchSelection(world.tree, Residency.ALL).select(camera, world.offsets, limit, LodMode.QUADTREE, null,
+                cut);
+        assertEquals(everyLeaf, flat.size(), "the flat grid draws every leaf of every copy");
+        assertTrue(cut.size() < everyLeaf, "the quadtree merges far leaves: " + cut.size());
+        Residency streaming = new Residency() {
+            @Override
+            public boolean drawable(int node, float x, float z) {
+                return true;
+            }
+
+            @Override
+            public boolean heightRange(int node, float x, float z, float[] out) {
+                return false;
+            }
+        };
+        PatchList standIn = new PatchList();
+        new PatchSelection(world.tree, streaming).select(camera, world.offsets, limit, LodMode.FLAT_GRID, null,
+                standIn);
+        assertEquals(cut.size(), standIn.size(), "over a streaming residency the quadtree's cut stands in");
+    }
+
+    /**
      * A streamed world's node is split only when its children are resident: with the copy east of the centre
      * holding nothing finer than level 3, its cut stops there (its parents drawn instead), every copy is still
      * covered once, and the other copies are as fine as before.

@@ -104,6 +104,40 @@ class SnowMapTest {
         return count;
     }
 
+    /**
+     * One way for every height source: a block cut from a periodic tile's heights with a border of 4r samples, as
+     * the unbounded world cuts its blocks ({@code stream.StreamedSnow}), holds exactly what the tile's own map holds
+     * there, in the middle of the tile and across its wrap. The opening and closing reach 4r samples, so the border
+     * is exactly enough: the block's filters clamp at its edges, where the tile's wrap, and the two differ only
+     * in the border.
+     */
+    @Test
+    void aBlockWithItsBorderHoldsWhatTheTileHolds() {
+        TerrainSettings s = TestTerrain.settings("terrain.size=256");
+        HeightMap map = SpectralSynthesis.generate(s, 5);
+        int n = map.size();
+        SnowMap tile = SnowMap.generate(HeightPyramid.build(map), s, 5);
+        assertTrue(tile.fraction() > 0.01 && tile.fraction() < 0.99, "a snow line to compare: " + tile.fraction());
+        int border = 4 * s.snowMorphology();
+        int block = 48;
+        int side = block + 2 * border;
+        for (int[] at : new int[][] {{100, 60}, {n - 20, n - 30}, {-10, 5}}) {
+            float[] heights = new float[side * side];
+            for (int j = 0; j < side; j++) {
+                for (int i = 0; i < side; i++) {
+                    heights[j * side + i] = map.sample(at[0] - border + i, at[1] - border + j);
+                }
+            }
+            byte[] cut = SnowMap.cover(heights, side, at[0] - border, at[1] - border, n, s, 5);
+            for (int j = 0; j < block; j++) {
+                for (int i = 0; i < block; i++) {
+                    assertEquals(tile.snowAt(at[0] + i, at[1] + j), cut[(j + border) * side + i + border] != 0,
+                            "sample " + (at[0] + i) + ", " + (at[1] + j) + " of the block at " + at[0] + ", " + at[1]);
+                }
+            }
+        }
+    }
+
     @Test
     void sameSeedSameMapOtherSeedOtherMap() {
         TerrainSettings s = TestTerrain.settings("terrain.size=512");
