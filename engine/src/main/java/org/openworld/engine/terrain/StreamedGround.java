@@ -97,10 +97,10 @@ public final class StreamedGround implements Ground {
         return stream.rootRadius();
     }
 
-    /** The share of the sky seen where the shading reads it, and a few blocks more with the picture. */
+    /** The share of the sky seen where the shading reads it, and a budget's worth more with the picture. */
     @Override
     public void prepare(PatchList patches, float[] copyOffsets, Pass pass) {
-        world.shadeFor(patches, copyOffsets, pass == Pass.MAIN ? StreamedWorld.UPLOADS_PER_FRAME : 0);
+        world.shadeFor(patches, copyOffsets, pass == Pass.MAIN);
     }
 
     /** Reads the coarsest streamed level, its snow the coverage at the mean height. */

@@ -203,7 +203,7 @@ public final class HeightClipmap implements AutoCloseable {
             });
         }
         if (!queued.isEmpty()) {
-            queued.sort(Comparator.comparingLong((Slot s) -> priority(s.level(), s.wantedX(), s.wantedZ()))
+            queued.sort(Comparator.comparingLong((Slot s) -> priority(s.level().index, s.wantedX(), s.wantedZ()))
                     .reversed());
             feed();
         }
@@ -229,7 +229,7 @@ public final class HeightClipmap implements AutoCloseable {
             }
             return stale;
         });
-        ready.sort(Comparator.comparingLong(f -> priority(f.slot.level(), f.bx, f.bz)));
+        ready.sort(Comparator.comparingLong(f -> priority(f.slot.level().index, f.bx, f.bz)));
         int n = Math.min(maxBlocks, ready.size());
         for (Finished f : ready.subList(0, n)) {
             ClipmapLevel level = f.slot.level();
@@ -362,9 +362,9 @@ public final class HeightClipmap implements AutoCloseable {
         return level(level);
     }
 
-    /** The sort key of a block: its ring around the camera's block first, then coarser levels first. */
-    private long priority(ClipmapLevel level, long bx, long bz) {
-        return level.ring(bx, bz, cameraX, cameraZ) * levels.length + (levels.length - 1 - level.index);
+    /** The sort key of level {@code l}'s block: its ring around the camera's block first, then coarser levels first. */
+    long priority(int l, long bx, long bz) {
+        return level(l).ring(bx, bz, cameraX, cameraZ) * levels.length + (levels.length - 1 - l);
     }
 
     /** Sends the best queued slots to the workers while fewer than {@link #maxInFlight} jobs are out. */

@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -34,9 +35,16 @@ import org.openworld.engine.terrain.material.HorizonSearch;
  * on each level, those within its reach of the block, as far as that level's window holds them. Until then its g is
  * 1, the whole sky. A colour pass about to draw its patches first shades the waiting blocks they read, so no pass
  * reads a block before its turn and a picture does not depend on the order the blocks came in; the picture's pass
- * then shades a few more, as many as may arrive in a step, in the order they came. At start, and after a jump,
- * every block is waiting, and the first frame shades only those its passes draw (107 of 512 at the demo's default
- * shot); the rest follow over the next frames. A block whose slot moves on before its turn is forgotten.
+ * then shades others, nearest the camera first, within a budget per frame ({@link #BUDGET_BLOCKS}, a
+ * {@link FrameBudget}; what the drawn blocks took counts against it). The driver runs a block's pass when a later
+ * draw reads the snow map, so the passes a frame asks for are waited for by that frame's picture: shading the
+ * blocks of a column of level 0 eight at once took the terrain's CPU time to 200–850 ms in the frames it arrived
+ * in, against a median of 85 ms (the crossing at 240×135 on a loaded llvmpipe); one a frame spreads it over 8
+ * frames, and a block, which arrives 256 to 384 samples ahead of the camera, is seldom drawn before its turn
+ * (2 or 3 blocks, a few times in the first 400 frames of the crossing, while the start's blocks still wait). At
+ * start, and after a jump, every block is waiting, and the first frame shades only
+ * those its passes draw (107 of 512 at the demo's default shot); the rest follow over the next frames, one
+ * level-0 block's worth a frame. A block whose slot moves on before its turn is forgotten.
  *
  * <p><b>What the window holds.</b> At distance r the search reads the level whose samples lie about r / 4 apart.
  * Near the edge of a window that level may not hold the point (a block near the edge of a fine window reaches
@@ -63,6 +71,13 @@ final class StreamedSky {
      * under 10⁵ within the 10 000 km before it repeats).
      */
     private static final int NOTHING = Integer.MIN_VALUE;
+    /**
+     * The passes a frame may run for blocks no pass draws yet, in level-0 blocks' worth (one level-0 block: 64² texels
+     * of 23 distances; a level-7 block, of 9, costs 0.4 of it). The crossing's 300 m/s with a 1/60 s step brings
+     * 37 blocks a second, 0.6 a frame, so one a frame keeps up with room to spare (a column of 8 level-0 blocks is
+     * done 8 frames after it arrives); on a quiet llvmpipe it is 6 ms of a frame.
+     */
+    static final int BUDGET_BLOCKS = 1;
 
     private final BandedHeights heights;
     private final int size;
@@ -77,9 +92,12 @@ final class StreamedSky {
     private final Uniform.Int originZ;
     private final ByteBuffer heldStaging;
     private final int unit;
-    /** Blocks uploaded and not yet given their visibility, in the order they came. */
+    /** Blocks uploaded and not yet given their visibility. */
     private final Set<Block> pending = new LinkedHashSet<>();
     private final DrawStats stats = new DrawStats();
+    /** Per level: a block's pass in texel-distances (block² · the search's distances), what the budget counts. */
+    private final long[] costs;
+    private final FrameBudget budget;
 
     /**
      * The program ({@code terrain.sky}), the table of held blocks ({@code terrain.clipmap.held}) and a target for each
@@ -113,6 +131,11 @@ final class StreamedSky {
             }
             held.upload(l, 0, 0, slots, slots, heldStaging.flip());
         }
+        costs = new long[levels];
+        for (int l = 0; l < levels; l++) {
+            costs[l] = (long) block * block * HorizonSearch.distances(heights.spacing(l)).length;
+        }
+        budget = new FrameBudget(BUDGET_BLOCKS * costs[0]);
         targets = new Framebuffer[levels];
         for (int l = 0; l < levels; l++) {
             targets[l] = context.own("sky.level" + l, Framebuffer.onLayer(context.gl(), snow, l));
@@ -134,19 +157,34 @@ final class StreamedSky {
 
     /**
      * Writes the visibility of the waiting blocks whose surroundings have arrived ({@link StreamedWorld#skyReady}),
-     * {@code most} at most, in the order they came; forgets those whose slot has moved on. Returns how many it wrote.
+     * nearest the camera first ({@link StreamedWorld#priority}, the order a pass comes to draw them), as many as
+     * what is left of this frame's {@link #BUDGET_BLOCKS} pays for (at least one if the drawn blocks took none of
+     * it), and ends the frame's budget; forgets those whose slot has moved on. The coarsest level's blocks are
+     * drawn where no patch lies (the far field reads them), so they are shaded as soon as they can be, as the drawn
+     * blocks are: 8 of them a 16 km column, a few times a flight. Returns how many it wrote.
      */
-    int shadeSome(StreamedWorld stream, TextureArray heightTexture, TextureArray slopeTexture, int most) {
-        List<Block> ready = new ArrayList<>();
-        for (Iterator<Block> it = pending.iterator(); it.hasNext() && ready.size() < most; ) {
+    int shadeSome(StreamedWorld stream, TextureArray heightTexture, TextureArray slopeTexture) {
+        List<Block> candidates = new ArrayList<>();
+        for (Iterator<Block> it = pending.iterator(); it.hasNext(); ) {
             Block b = it.next();
             if (!stream.holds(b.level, b.x, b.z)) {
                 it.remove();
             } else if (stream.skyReady(b.level, b.x, b.z)) {
-                ready.add(b);
-                it.remove();
+                candidates.add(b);
             }
         }
+        candidates.sort(Comparator.comparingLong(b -> stream.priority(b.level, b.x, b.z)));
+        List<Block> ready = new ArrayList<>();
+        for (Block b : candidates) {
+            if (b.level == targets.length - 1) {
+                budget.spend(cost(b.level)); // the far field reads the coarsest level wherever its window holds it
+            } else if (!budget.take(cost(b.level))) {
+                continue;
+            }
+            ready.add(b);
+            pending.remove(b);
+        }
+        budget.nextFrame();
         return shade(ready, heightTexture, slopeTexture);
     }
 
@@ -172,11 +210,17 @@ final class StreamedSky {
                     if (pending.contains(b) && stream.skyReady(l, bx, bz)) {
                         pending.remove(b);
                         ready.add(b);
+                        budget.spend(cost(l));
                     }
                 }
             }
         }
         return shade(ready, heightTexture, slopeTexture);
+    }
+
+    /** A level-{@code l} block's pass, in texel-distances: its texels times the distances its search reads. */
+    private long cost(int l) {
+        return costs[l];
     }
 
     /** Blocks uploaded and not yet given their visibility. */

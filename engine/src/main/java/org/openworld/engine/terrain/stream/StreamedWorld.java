@@ -299,6 +299,15 @@ public final class StreamedWorld implements Residency, AutoCloseable {
         return true;
     }
 
+    /**
+     * The order in which level {@code level}'s block (bx, bz) is wanted, smallest first: nearest the camera by its
+     * level's blocks, then coarser levels first, the order the clipmap makes blocks in (so, about, the order a
+     * pass comes to draw them).
+     */
+    long priority(int level, long bx, long bz) {
+        return clipmap.priority(level, bx, bz);
+    }
+
     /** One past the last level-k sample (dk apart) a search reaching {@code reach} from block b (d apart) reads. */
     private static long end(long b, double d, double reach, double dk) {
         return (long) Math.floor(((b + 1) * BLOCK * d + reach) / dk) + 2;

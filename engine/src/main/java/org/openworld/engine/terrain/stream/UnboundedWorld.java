@@ -95,14 +95,15 @@ public final class UnboundedWorld implements AutoCloseable {
     }
 
     /**
-     * Before a pass shades these patches: the sky's pass over the waiting blocks they read, then over up to
-     * {@code more} others whose surroundings are there, in the order they came (the picture's pass takes as many
-     * as may arrive in a step, so the sky keeps pace with the streaming and a block is seldom left for the pass
-     * that first draws it). At start, and after a jump, every block is waiting, and the first frame shades only
+     * Before a pass shades these patches: the sky's pass over the waiting blocks they read, and with the picture's
+     * pass ({@code picture}, the frame's last colour pass) over others whose surroundings are there, nearest
+     * first, within the sky's budget per frame ({@link StreamedSky#BUDGET_BLOCKS}), so the sky keeps pace with
+     * the streaming without stalling the frame a burst of blocks arrives in, and a block is seldom left for the pass
+     * that first draws it. At start, and after a jump, every block is waiting, and the first frame shades only
      * those its passes draw: on a software rasteriser the whole windows' pass was most of the start. The first
      * call after the start's streaming is timed.
      */
-    public void shadeFor(PatchList patches, float[] copyOffsets, int more) {
+    public void shadeFor(PatchList patches, float[] copyOffsets, boolean picture) {
         long start = System.nanoTime();
         int blocks = sky.shadeUnder(patches, copyOffsets, stream, heightTexture, slopeTexture);
         if (!skyTimed && blocks + sky.waiting() > 0) { // a window's first frame may come before its first step
@@ -111,12 +112,24 @@ public final class UnboundedWorld implements AutoCloseable {
                     + "%d to come)", "sky view", (System.nanoTime() - start) / 1e6, blocks, sky.waiting()));
             skyTimed = true;
         }
-        sky.shadeSome(stream, heightTexture, slopeTexture, more);
+        if (picture) {
+            sky.shadeSome(stream, heightTexture, slopeTexture);
+        }
     }
 
     /** Blocks whose share of the sky seen has not been written yet. */
     int skyWaiting() {
         return sky.waiting();
+    }
+
+    /**
+     * Runs the sky's pass over every waiting block whose surroundings have arrived, a frame's budget at a time
+     * without the frames between (tests: the sky as it stands once the streaming has settled).
+     */
+    void settleSky() {
+        while (sky.shadeSome(stream, heightTexture, slopeTexture) > 0) {
+            continue;
+        }
     }
 
     /**

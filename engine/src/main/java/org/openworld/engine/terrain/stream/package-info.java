@@ -19,7 +19,9 @@
  * ({@link org.openworld.engine.terrain.material.HorizonSearch}), the same search run for each block by a fragment
  * pass that marches the clipmap's own levels once the heights it reads have arrived (a
  * table of which block each slot holds keeps it off stale texels; beyond a window it falls back on a coarser level):
- * on llvmpipe several milliseconds a block, so the start shades only the blocks its first frame draws. Limits: one
+ * on llvmpipe several milliseconds a block, so the start shades only the blocks its first frame draws, and the blocks
+ * no pass draws yet wait for a budget of one level-0 block's pass a frame ({@link
+ * org.openworld.engine.terrain.stream.FrameBudget}): a burst of arrivals never stalls the frame it arrives in. Limits: one
  * geometric error per level (the world is statistically uniform), boxes the world's height bounds where no blocks
  * narrow them; no baked far material: its far program samples the coarse tile alone ({@link
  * org.openworld.engine.terrain.TerrainShading}).

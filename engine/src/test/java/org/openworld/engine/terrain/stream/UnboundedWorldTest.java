@@ -226,7 +226,7 @@ class UnboundedWorldTest {
                     end.pitch(), end.fov());
             camera.setPose(there);
             Image image = null;
-            for (int hover = 0; hover < 200; hover++) { // a few hundred blocks at most, eight a frame
+            for (int hover = 0; hover < 200; hover++) { // the windows catch up; what is drawn is shaded first
                 image = frame(engine);
             }
             return image;
