@@ -21,6 +21,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.environment.CloudPanorama;
 import org.openworld.engine.environment.CloudShadow;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.gl.DrawStats;
@@ -51,8 +52,8 @@ import org.openworld.engine.sky.SkySystem;
  *       and over the surfaces' (the depth test picks them), each from the grid texels marched against the same.</li>
  * </ol>
  * With {@code clouds.mode=layer} it draws nothing and its shadow block says "no clouds"; the sky draws the layer.
- * The water's reflection and the environment map show the sky's layer of the same field at the volume's middle
- * height (the sky system's panorama), not the volume.
+ * In the frame's first pass (the water's REFLECTION, else MAIN) a band of the clouds' panorama is marched
+ * ({@link CloudPanoramaMarch}); the reflection draws it over its sky, the sky's environment map reads it.
  *
  * <p>Counter: {@code clouds.full} (1 when every grid texel was marched this frame).
  */
@@ -101,6 +102,9 @@ public final class CloudVolumeSystem implements EngineSystem {
     private final Vector3f shadowSun = new Vector3f();
     private CloudSettings shadowSettings;
     private CloudTargets targets;
+    private CloudPanoramaMarch panorama;
+    /** The frame whose panorama band was marched (in its first pass: the reflection's, or MAIN's without one). */
+    private long panoramaFrame = -1;
     private int written;          // the history the last resolve wrote
     private long frame;
     private boolean haveHistory;
@@ -114,8 +118,9 @@ public final class CloudVolumeSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("clouds").reads(Settings.class, Sun.class, Camera.class).publishes(CloudShadow.class)
-                .updatesOnGpu().layer(Layer.TRANSPARENT).draws(Pass.MAIN);
+        return SystemSpec.named("clouds").reads(Settings.class, Sun.class, Camera.class)
+                .publishes(CloudShadow.class, CloudPanorama.class).updatesOnGpu().layer(Layer.TRANSPARENT)
+                .draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -143,6 +148,8 @@ public final class CloudVolumeSystem implements EngineSystem {
         shadowTarget = context.own("shadowTarget", Framebuffer.onTextures(gl, map));
         shadow = new CloudShadow(map, context.own("shadowBlock", SharedBlock.CLOUD_SHADOW.standIn(gl)));
         context.world().setResource(shadow);
+        panorama = new CloudPanoramaMarch(context);
+        context.world().setResource(panorama.resource());
     }
 
     @Override
@@ -200,22 +207,32 @@ public final class CloudVolumeSystem implements EngineSystem {
             return;
         }
         Framebuffer scene = context.target();
-        int previousFramebuffer = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+        int previousFramebuffer = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING); // before making targets, which binds them
         Vector4f layer = layer(c);
         Vector4f motion = motion(c);
-        glDisable(GL_DEPTH_TEST);
-        glDepthMask(false);
-
-        if (targets == null || !targets.fits(scene.width(), scene.height())) {
+        if (pass == Pass.MAIN && (targets == null || !targets.fits(scene.width(), scene.height()))) {
             targets = this.context.owned().replace("targets", targets, new CloudTargets(gl, scene.width(),
                     scene.height()));
             haveHistory = false;
         }
         // bound after the targets are made: making a texture binds it to the active unit
-        scene.depth().bind(CloudPrograms.UNIT_SCENE_DEPTH); // read while another target is drawn into
         field.bind(CloudPrograms.UNIT_FIELD);
         detail.bind(CloudPrograms.UNIT_DETAIL);
         optics.bind(CloudPrograms.UNIT_OPTICS);
+        // 0. the panorama's band, in the frame's first pass: the reflection draws it, the environment map reads it
+        if (panoramaFrame != frame) {
+            CameraPose viewer = context.world().resource(Camera.class).pose();
+            panorama.march(layer, motion, c, new Vector3f((float) viewer.x(), (float) viewer.y(), (float) viewer.z()),
+                    viewer.y(), c.base(), c.base() + c.thickness(), fullScreen, context.stats());
+            panoramaFrame = frame;
+        }
+        if (pass == Pass.REFLECTION) {
+            panorama.drawReflection(fullScreen, context.stats());
+            return;
+        }
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(false);
+        scene.depth().bind(CloudPrograms.UNIT_SCENE_DEPTH); // read while another target is drawn into
 
         // 1. the march: the frame's slot of every 2 x 2 block, or every texel without a usable history
         boolean every = !haveHistory || !c.equals(historySettings) || jumped(context);
