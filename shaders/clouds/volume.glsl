@@ -56,6 +56,9 @@ float cloudShape(vec3 wsPos, float h) {
     vec2 st = (wsPos.xz - uMotion.xy) / uLayer.z;
     float field = texture(cloudField, vec3(st, uMotion.z + uMotion.w)).r;
     float cover = clamp((field - uLayer.w) / COVER_SPREAD, 0.0, 1.0);
+    if (cover <= 0.0) {
+        return 0.0; // the profile is at most 1, so no cover is no cloud: the profile's read is spared
+    }
     float profile = texture(cloudOptics, vec2(clamp(h, 0.0, 1.0), 0.5)).r;
     return clamp(cover + profile - 1.0, 0.0, 1.0) * step(0.0, h) * step(h, 1.0);
 }

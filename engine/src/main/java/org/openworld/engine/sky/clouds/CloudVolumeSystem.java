@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Vector2d;
 import org.joml.Vector3f;
@@ -33,6 +34,7 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Texture3D;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.sky.CloudField;
@@ -109,7 +111,9 @@ public final class CloudVolumeSystem implements EngineSystem {
     private long frame;
     private boolean haveHistory;
     private CloudSettings historySettings;
-    private final Matrix4f previousViewProjection = new Matrix4f();
+    /** The last frame's view (world, double) and projection: its world-to-clip from this frame's origin. */
+    private final Matrix4d previousView = new Matrix4d();
+    private final Matrix4f previousProjection = new Matrix4f();
     private final Vector3f previousEye = new Vector3f();
     private final Vector3f previousForward = new Vector3f();
     private double simTime;
@@ -156,7 +160,8 @@ public final class CloudVolumeSystem implements EngineSystem {
     public void update(World world, double step) {
         simTime += step;
         CloudSettings c = world.resource(Settings.class).get(CloudSettings.class);
-        Vector2d wind = c.windOffset(simTime, new Vector2d());
+        RenderOrigin origin = world.resource(RenderOrigin.class);
+        Vector2d wind = c.windOffset(simTime, new Vector2d()).sub(originInTile(origin, c));
         boolean volumetric = c.mode() == CloudSettings.Mode.VOLUMETRIC;
         shadow.write((float) c.base(), (float) c.tileSize(), (float) wind.x, (float) wind.y, volumetric ? 1 : 0);
         if (!volumetric) {
@@ -174,8 +179,8 @@ public final class CloudVolumeSystem implements EngineSystem {
             optics.bind(CloudPrograms.UNIT_OPTICS);
             shadowTarget.bind();
             CameraPose pose = world.resource(Camera.class).pose();
-            Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
-            programs.useShadow(layer(c), motion(c), SHADOW_SIZE, eye, sun.direction());
+            programs.useShadow(layer(c), motion(c, origin), SHADOW_SIZE, origin.relative(pose.x(), pose.y(), pose.z()),
+                    sun.direction());
             fullScreen.draw(updateDraws);
             glBindFramebuffer(GL_FRAMEBUFFER, previous);
             glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
@@ -193,10 +198,19 @@ public final class CloudVolumeSystem implements EngineSystem {
 
     /**
      * The {@code uMotion} uniform: the wind's offset and the time phase ({@link CloudSettings#cloudMotion}), and half a
-     * frame of the field's time axis (its texel centres).
+     * frame of the field's time axis (its texel centres). The offset is taken from the render origin, as the GPU's
+     * positions are: the clouds stay where they are in the world when the origin moves.
      */
-    private Vector4f motion(CloudSettings c) {
-        return c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0.5f / c.frames());
+    private Vector4f motion(CloudSettings c, RenderOrigin origin) {
+        Vector2d shift = originInTile(origin, c);
+        Vector4f m = c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0.5f / c.frames());
+        return m.set((float) (m.x - shift.x), (float) (m.y - shift.y), m.z, m.w);
+    }
+
+    /** The render origin modulo the field's tile (the field and its detail repeat over a tile), metres. */
+    private static Vector2d originInTile(RenderOrigin origin, CloudSettings c) {
+        return new Vector2d(RenderOrigin.reduce(origin.x(), c.tileSize()), RenderOrigin.reduce(origin.z(),
+                c.tileSize()));
     }
 
     @Override
@@ -209,7 +223,8 @@ public final class CloudVolumeSystem implements EngineSystem {
         Framebuffer scene = context.target();
         int previousFramebuffer = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING); // before making targets, which binds them
         Vector4f layer = layer(c);
-        Vector4f motion = motion(c);
+        RenderOrigin origin = context.world().resource(RenderOrigin.class);
+        Vector4f motion = motion(c, origin);
         if (pass == Pass.MAIN && (targets == null || !targets.fits(scene.width(), scene.height()))) {
             targets = this.context.owned().replace("targets", targets, new CloudTargets(gl, scene.width(),
                     scene.height()));
@@ -251,7 +266,10 @@ public final class CloudVolumeSystem implements EngineSystem {
         targets.freshLight.bind(CloudPrograms.UNIT_LIGHT);
         targets.freshDepth.bind(CloudPrograms.UNIT_DEPTH);
         targets.historyLight[read].bind(CloudPrograms.UNIT_HISTORY);
-        programs.useResolve(previousViewProjection, gw, gh, slot, every);
+        // the last frame's world-to-clip from this frame's origin, as the resolve's points are
+        Matrix4f previous = new Matrix4f(previousProjection).mul(new Matrix4f(new Matrix4d(previousView)
+                .translate(origin.x(), 0, origin.z())));
+        programs.useResolve(previous, gw, gh, slot, every);
         fullScreen.draw(context.stats());
 
         // 3. the composite over the picture: the sky's pixels, then the surfaces', chosen by the depth test
@@ -305,7 +323,8 @@ public final class CloudVolumeSystem implements EngineSystem {
     }
 
     private void remember(RenderContext context) {
-        previousViewProjection.set(context.camera().viewProjection());
+        previousView.set(context.camera().exactView());
+        previousProjection.set(context.camera().projection());
         previousEye.set(context.camera().position());
         forward(context, previousForward);
     }

@@ -20,6 +20,7 @@ import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.sky.CloudField;
 import org.openworld.engine.sky.CloudSettings;
 import org.openworld.engine.sky.SkySystem;
@@ -47,6 +48,12 @@ class CloudVolumeRenderTest {
      * below the 20° of a cut, which would march every texel.
      */
     private static final double MOVE = 15;
+    /**
+     * Metres east of the world's origin where the reprojection test flies: the render origin is then 16 384 m away
+     * from the world's (four steps of 4 096 m), so a reprojection that took the GPU's positions, which are from the
+     * render origin, as the world's would miss by that much.
+     */
+    private static final double FAR = 18000;
 
     private static Engine engine(int width, int height, List<String> settings) {
         List<String> all = new ArrayList<>(List.of("clouds.mode=volumetric", "clouds.wind-speed=0"));
@@ -195,18 +202,20 @@ class CloudVolumeRenderTest {
      * an edge in most 6 × 6-texel neighbourhoods, so the clamp to this frame's marched neighbours cannot put a
      * history read in the wrong place right.
      * Bound: a third of what the turn changes in the fully marched picture (the first frame against the second's
-     * pose marched whole; measured 6.1). A history read without the turn carries that change into three texels in
-     * four, and the clamp takes back only what lies in its neighbourhood's range: measured 3.5, above it. A right
-     * reprojection carries none of it and keeps only the resampling and the jitter, which do not grow with the turn:
-     * measured 1.6 (1.5 after a 6° turn).
+     * pose marched whole). A history read without the turn carries that change into three texels in four, and the
+     * clamp takes back only what lies in its neighbourhood's range; a right reprojection carries none of it and keeps
+     * only the resampling and the jitter, which do not grow with the turn. Measured at the world's origin: the turn
+     * 6.1, the history read in place 3.5, the reprojection 1.6 (1.5 after a 6° turn). Here, {@link #FAR} out, the
+     * turn changes 4.4 and a reprojection through the last frame's world-to-clip matrix from the world's origin
+     * rather than the render origin's gives 2.2: both fail.
      */
     @Test
     void aFrameReprojectedAfterATurnMatchesAFullyMarchedOne() {
         int width = 160;
         int height = 90;
         List<String> settings = List.of("clouds.cover=0.4", "clouds.tile-size=6000");
-        CameraPose before = new CameraPose(0, 1200, 0, 20, 15, 60);
-        CameraPose after = new CameraPose(0, 1200, 0, 20 + MOVE, 15, 60);
+        CameraPose before = new CameraPose(FAR, 1200, 0, 20, 15, 60);
+        CameraPose after = new CameraPose(FAR, 1200, 0, 20 + MOVE, 15, 60);
         Image first;
         Image reprojected;
         try (Engine engine = engine(width, height, settings)) {
@@ -225,6 +234,29 @@ class CloudVolumeRenderTest {
         assertTrue(moved > 4, "the turn changes the picture by a mean ΔE00 of only " + moved);
         assertTrue(error < moved / 3, "mean ΔE00 between the reprojected and the full frame " + error + ", above a"
                 + " third of what the turn changes, " + moved / 3);
+    }
+
+    /**
+     * The clouds stay in the world when the render origin moves: the same pose far from the world's origin, drawn
+     * with the origin's step at 4 096 m (the origin 16 384 m away) and at 1 000 m (18 000 m), gives the same picture.
+     * The GPU's positions differ by 1 616 m and the field's offset by the same, so only float rounding of metres at
+     * 20 km (a few millimetres) is left: bound a tenth of a just noticeable difference. Clouds that followed the
+     * origin would be 1.6 km apart.
+     */
+    @Test
+    void theCloudsStayInTheWorldWhenTheRenderOriginMoves() {
+        CameraPose pose = new CameraPose(FAR, 1200, 0, 20, 15, 60);
+        Image[] pictures = new Image[2];
+        double[] steps = {RenderOrigin.DEFAULT_STEP, 1000};
+        for (int i = 0; i < 2; i++) {
+            try (Engine engine = engine(160, 90, List.of("clouds.cover=0.4", "clouds.tile-size=6000"))) {
+                engine.world().setResource(new TimeOfDay(15, 0));
+                engine.world().setResource(new RenderOrigin(steps[i]));
+                pictures[i] = render(engine, pose);
+            }
+        }
+        double difference = ImageComparison.of(pictures[0], pictures[1]).meanDeltaE();
+        assertTrue(difference < 0.1, "the clouds moved with the render origin: mean ΔE00 " + difference);
     }
 
     /** Where the view ray through pixel (x, y) (y from the bottom) meets the ground plane y = 0, or null. */
