@@ -11,7 +11,7 @@
 
 out vec4 fragColor;
 
-uniform sampler2D cloudLight; // the resolved quarter grid: rgb light, a transmittance
+uniform sampler2D cloudLight; // the resolved quarter grid: rgb light, a transmittance; bilinear
 uniform sampler2D cloudDepth; // y: the scene's distance each texel was marched against
 uniform vec2 uGridSize;       // the quarter grid's size, texels
 uniform float uSky;           // 1: this draw covers the sky's pixels; 0: the surfaces'
@@ -24,6 +24,12 @@ const float MIN_OPACITY = 1e-3;
 
 void main() {
     vec2 uv = gl_FragCoord.xy * frame.viewport.zw;
+    // 1. one bilinear read first: where none of the four texels holds a cloud (the clear sky, and nearly every
+    // surface, which lies under the clouds), the pixel is done at a quarter of the reads
+    if (1.0 - textureLod(cloudLight, uv, 0.0).a < MIN_OPACITY) {
+        discard;
+    }
+    // 2. the depth-aware weights
     vec2 position = uv * uGridSize - 0.5;
     vec2 origin = floor(position);
     vec2 f = position - origin;

@@ -18,7 +18,8 @@ uniform vec4 uMotion;          // xy: the wind's offset of the field (m, world x
                                // frame of the field's time axis (1 / 2 frames: frame i's texel centre is (i + 0.5) / n)
 
 // The Earth's radius, metres (the atmosphere's: org.openworld.engine.sky.Atmosphere). The layer is curved around a
-// centre below the eye, so it falls away towards the horizon as a real one does.
+// centre below the viewer's eye (in every pass, so the reflection's clouds are the picture's), so it falls away
+// towards the horizon as a real one does.
 const float EARTH_RADIUS = 6360e3;
 // Standard deviations of the field above the threshold over which the cover's strength rises from 0 to 1: the
 // width of a cloud's soft rim in the base shape.
@@ -42,7 +43,7 @@ const float OCTAVE_B = 0.5;
 const vec3 SUN_STEPS = vec3(50.0, 180.0, 450.0);
 
 vec3 earthCentre() {
-    return vec3(cameraPos().x, -EARTH_RADIUS, cameraPos().z);
+    return vec3(viewerPos().x, -EARTH_RADIUS, viewerPos().z);
 }
 
 // 0 at the base, 1 at the top of the layer (outside it: below 0 or above 1).
@@ -55,6 +56,9 @@ float cloudShape(vec3 wsPos, float h) {
     vec2 st = (wsPos.xz - uMotion.xy) / uLayer.z;
     float field = texture(cloudField, vec3(st, uMotion.z + uMotion.w)).r;
     float cover = clamp((field - uLayer.w) / COVER_SPREAD, 0.0, 1.0);
+    if (cover <= 0.0) {
+        return 0.0; // the profile is at most 1, so no cover is no cloud: the profile's read is spared
+    }
     float profile = texture(cloudOptics, vec2(clamp(h, 0.0, 1.0), 0.5)).r;
     return clamp(cover + profile - 1.0, 0.0, 1.0) * step(0.0, h) * step(h, 1.0);
 }

@@ -11,12 +11,18 @@
 
 uniform sampler3D aerialPerspective; // bound by the engine (gl.SharedTexture.AERIAL_PERSPECTIVE)
 
+// The air over distance metres along the unit direction dir from the eye (the table's eye: its altitude): rgb the
+// light it scatters towards the eye, a its transmittance.
+vec4 airAlong(vec3 dir, float distance) {
+    vec4 table = texture(aerialPerspective, aerialPerspectiveUvw(dir, sunDir(), distance));
+    return mix(vec4(0.0, 0.0, 0.0, 1.0), table, aerialPerspectiveWeight(distance));
+}
+
 // The air between the eye and wsPos: rgb the light it scatters towards the eye, a its transmittance.
 vec4 airTo(vec3 wsPos) {
     vec3 toPoint = wsPos - cameraPos();
     float distance = length(toPoint);
-    vec4 table = texture(aerialPerspective, aerialPerspectiveUvw(toPoint / max(distance, 1e-3), sunDir(), distance));
-    return mix(vec4(0.0, 0.0, 0.0, 1.0), table, aerialPerspectiveWeight(distance));
+    return airAlong(toPoint / max(distance, 1e-3), distance);
 }
 
 // The colour seen at wsPos after the air between it and the eye.

@@ -14,6 +14,9 @@ out vec4 fragColor;
 uniform int uCubeFace;             // 0: the camera's view; 1: a face of the environment map (sky.vert)
 uniform float uSunDisc;            // 1: draw the sun's disc; 0 in the water's reflection, whose shader adds the sun's
                                    // glitter on the ripples itself (the disc's mirror image would count it twice)
+uniform sampler2D cloudVolume;     // the volumetric clouds' panorama (clouds/panorama.frag): rgb their light after
+                                   // the air in front, display units; a: the transmittance
+uniform float uCloudVolume;        // 1: the environment map takes the volumetric clouds over the sky; 0: none
 
 // The sun's angular radius, radians (0.2666 degrees, seen from Earth).
 const float SUN_RADIUS = 0.004654;
@@ -39,6 +42,10 @@ void main() {
     float alpha;
     vec3 radiance = skyBehind(wsDir, alpha);
     if (uCubeFace == 1) {
+        if (uCloudVolume > 0.5) {
+            vec4 cloud = textureLod(cloudVolume, panoramaUv(wsDir, vec2(textureSize(cloudVolume, 0))), 0.0);
+            radiance = radiance * cloud.a + cloud.rgb;
+        }
         fragColor = vec4(radiance, 1.0);
         return;
     }

@@ -43,6 +43,8 @@ final class SkyPanorama {
     /** The panorama itself, sky and clouds, where the sky and the stars are drawn from it. */
     static final TextureUnits.Sampler SKY_PANORAMA = DRAWN_WITH.add("skyPanorama");
     static final TextureUnits.Sampler CLOUD_PANORAMA = DRAWN_WITH.add("cloudPanorama");
+    /** The volumetric clouds' panorama ({@link org.openworld.engine.environment.CloudPanorama}), where there is one. */
+    static final TextureUnits.Sampler CLOUD_VOLUME = DRAWN_WITH.add("cloudVolume");
 
     private final ShaderProgram program;
     private final Texture2D sky;

@@ -24,7 +24,7 @@ import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
-import org.openworld.engine.environment.CloudShadow;
+import org.openworld.engine.environment.CloudPanorama;
 import org.openworld.engine.environment.Exposure;
 import org.openworld.engine.environment.SkyIrradiance;
 import org.openworld.engine.environment.SkyMaps;
@@ -132,6 +132,7 @@ public final class SkySystem implements EngineSystem {
     private Uniform.Mat3 faceAxes;
     private Uniform.Float sunDisc;
     private Uniform.Float cloudLayer;
+    private Uniform.Float cloudVolume;
     private Mesh fullScreen;
     private SkyPanorama panorama;
     private Texture2D skyView;
@@ -173,10 +174,12 @@ public final class SkySystem implements EngineSystem {
         program = context.own("program", context.shaders().program("sky/sky.vert", "sky/sky.frag"));
         program.sampler(SkyPanorama.SKY_PANORAMA);
         program.sampler(SkyPanorama.CLOUD_PANORAMA);
+        program.sampler(SkyPanorama.CLOUD_VOLUME);
         cubeFace = program.int1("uCubeFace");
         faceAxes = program.mat3("uFaceAxes");
         sunDisc = program.float1("uSunDisc");
         cloudLayer = program.float1("uCloudLayer");
+        cloudVolume = program.float1("uCloudVolume");
         nightUniforms = new StarField.NightUniforms(program);
         stars = new StarField(context, StarCatalogue.generate(seed));
         panorama = new SkyPanorama(context);
@@ -246,7 +249,17 @@ public final class SkySystem implements EngineSystem {
         world.setResource(new Sun(toSun, vector(light.sun()), vector(ambient), irradiance));
         world.setResource(exposure(s, light.sun().mul(Math.max(toSun.y, 0)).add(ambient)));
         world.setResource(new Wind(settings.get(CloudSettings.class).windVelocity(new Vector3f())));
-        refresh(settings, world.resource(Sun.class), counters);
+        refresh(settings, world.resource(Sun.class), volume(world), counters);
+    }
+
+    /**
+     * The volumetric clouds' panorama, where a clouds system marches them ({@code clouds.mode=volumetric} and the
+     * system present): the sky then draws no layer, and its environment map takes the volume's clouds.
+     */
+    private static CloudPanorama volume(World world) {
+        boolean volumetric = world.resource(Settings.class).get(CloudSettings.class).mode()
+                == CloudSettings.Mode.VOLUMETRIC;
+        return volumetric ? world.findResource(CloudPanorama.class).orElse(null) : null;
     }
 
     /**
@@ -254,7 +267,7 @@ public final class SkySystem implements EngineSystem {
      * settings or the ground changed, the sun moved {@link #PANORAMA_SUN_STEP}, or the clouds drifted for
      * {@link #PANORAMA_REFRESH} seconds.
      */
-    private void refresh(Settings settings, Sun sun, Counters counters) {
+    private void refresh(Settings settings, Sun sun, CloudPanorama volume, Counters counters) {
         if (uploaded != tables) {
             uploadTables(tables);
             uploaded = tables;
@@ -283,7 +296,11 @@ public final class SkySystem implements EngineSystem {
         panorama.sky().bind(SkyPanorama.SKY_PANORAMA.unit());
         panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(1);
-        cloudLayer.set(1);
+        cloudLayer.set(volume == null ? 1 : 0);
+        cloudVolume.set(volume == null ? 0 : 1);
+        if (volume != null) {
+            volume.texture().bind(SkyPanorama.CLOUD_VOLUME.unit());
+        }
         nightUniforms.set(night, panoramaScale);
         environment.render(face -> {
             faceAxes.set(CubeMapTexture.faceAxes(face));
@@ -342,11 +359,9 @@ public final class SkySystem implements EngineSystem {
         panorama.clouds().bind(SkyPanorama.CLOUD_PANORAMA.unit());
         cubeFace.set(0);
         sunDisc.set(pass == Pass.MAIN ? 1 : 0);
-        // the volumetric clouds, where a system draws them (it publishes their shadow), draw themselves over the
-        // picture; the reflection keeps the layer of the same field
-        boolean volumetric = context.world().resource(Settings.class).get(CloudSettings.class).mode()
-                == CloudSettings.Mode.VOLUMETRIC && context.world().findResource(CloudShadow.class).isPresent();
-        cloudLayer.set(pass == Pass.MAIN && volumetric ? 0 : 1);
+        // the volumetric clouds, where a system marches them, draw themselves over the picture and the reflection
+        cloudLayer.set(volume(context.world()) == null ? 1 : 0);
+        cloudVolume.set(0);
         nightUniforms.set(night, panoramaScale);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LEQUAL);

@@ -25,6 +25,8 @@ final class CloudPrograms {
     static final TextureUnits.Sampler DETAIL = UNITS.add("cloudDetail");
     static final TextureUnits.Sampler LIGHT = UNITS.add("cloudLight");
     static final TextureUnits.Sampler DEPTH = UNITS.add("cloudDepth");
+    /** The panorama's clouds, read by the water's reflection ({@link CloudPanoramaMarch}). */
+    static final TextureUnits.Sampler PANORAMA = UNITS.add("cloudPanorama");
 
     final ShaderProgram shadow;
     final ShaderProgram march;

@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL30C.*;
 
 import java.nio.FloatBuffer;
 import java.util.List;
+import org.joml.Matrix4d;
 import org.joml.Matrix4f;
 import org.joml.Vector2d;
 import org.joml.Vector3f;
@@ -21,6 +22,7 @@ import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.environment.CloudPanorama;
 import org.openworld.engine.environment.CloudShadow;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.gl.DrawStats;
@@ -32,6 +34,7 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.Texture3D;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.sky.CloudField;
@@ -51,8 +54,8 @@ import org.openworld.engine.sky.SkySystem;
  *       and over the surfaces' (the depth test picks them), each from the grid texels marched against the same.</li>
  * </ol>
  * With {@code clouds.mode=layer} it draws nothing and its shadow block says "no clouds"; the sky draws the layer.
- * The water's reflection and the environment map show the sky's layer of the same field at the volume's middle
- * height (the sky system's panorama), not the volume.
+ * In the frame's first pass (the water's REFLECTION, else MAIN) a band of the clouds' panorama is marched
+ * ({@link CloudPanoramaMarch}); the reflection draws it over its sky, the sky's environment map reads it.
  *
  * <p>Counter: {@code clouds.full} (1 when every grid texel was marched this frame).
  */
@@ -101,11 +104,16 @@ public final class CloudVolumeSystem implements EngineSystem {
     private final Vector3f shadowSun = new Vector3f();
     private CloudSettings shadowSettings;
     private CloudTargets targets;
+    private CloudPanoramaMarch panorama;
+    /** The frame whose panorama band was marched (in its first pass: the reflection's, or MAIN's without one). */
+    private long panoramaFrame = -1;
     private int written;          // the history the last resolve wrote
     private long frame;
     private boolean haveHistory;
     private CloudSettings historySettings;
-    private final Matrix4f previousViewProjection = new Matrix4f();
+    /** The last frame's view (world, double) and projection: its world-to-clip from this frame's origin. */
+    private final Matrix4d previousView = new Matrix4d();
+    private final Matrix4f previousProjection = new Matrix4f();
     private final Vector3f previousEye = new Vector3f();
     private final Vector3f previousForward = new Vector3f();
     private double simTime;
@@ -114,8 +122,9 @@ public final class CloudVolumeSystem implements EngineSystem {
 
     @Override
     public SystemSpec spec() {
-        return SystemSpec.named("clouds").reads(Settings.class, Sun.class, Camera.class).publishes(CloudShadow.class)
-                .updatesOnGpu().layer(Layer.TRANSPARENT).draws(Pass.MAIN);
+        return SystemSpec.named("clouds").reads(Settings.class, Sun.class, Camera.class)
+                .publishes(CloudShadow.class, CloudPanorama.class).updatesOnGpu().layer(Layer.TRANSPARENT)
+                .draws(Pass.REFLECTION, Pass.MAIN);
     }
 
     @Override
@@ -143,13 +152,16 @@ public final class CloudVolumeSystem implements EngineSystem {
         shadowTarget = context.own("shadowTarget", Framebuffer.onTextures(gl, map));
         shadow = new CloudShadow(map, context.own("shadowBlock", SharedBlock.CLOUD_SHADOW.standIn(gl)));
         context.world().setResource(shadow);
+        panorama = new CloudPanoramaMarch(context);
+        context.world().setResource(panorama.resource());
     }
 
     @Override
     public void update(World world, double step) {
         simTime += step;
         CloudSettings c = world.resource(Settings.class).get(CloudSettings.class);
-        Vector2d wind = c.windOffset(simTime, new Vector2d());
+        RenderOrigin origin = world.resource(RenderOrigin.class);
+        Vector2d wind = c.windOffset(simTime, new Vector2d()).sub(originInTile(origin, c));
         boolean volumetric = c.mode() == CloudSettings.Mode.VOLUMETRIC;
         shadow.write((float) c.base(), (float) c.tileSize(), (float) wind.x, (float) wind.y, volumetric ? 1 : 0);
         if (!volumetric) {
@@ -167,8 +179,8 @@ public final class CloudVolumeSystem implements EngineSystem {
             optics.bind(CloudPrograms.OPTICS.unit());
             shadowTarget.bind();
             CameraPose pose = world.resource(Camera.class).pose();
-            Vector3f eye = new Vector3f((float) pose.x(), (float) pose.y(), (float) pose.z());
-            programs.useShadow(layer(c), motion(c), SHADOW_SIZE, eye, sun.direction());
+            programs.useShadow(layer(c), motion(c, origin), SHADOW_SIZE, origin.relative(pose.x(), pose.y(), pose.z()),
+                    sun.direction());
             fullScreen.draw(updateDraws);
             glBindFramebuffer(GL_FRAMEBUFFER, previous);
             glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
@@ -186,10 +198,19 @@ public final class CloudVolumeSystem implements EngineSystem {
 
     /**
      * The {@code uMotion} uniform: the wind's offset and the time phase ({@link CloudSettings#cloudMotion}), and half a
-     * frame of the field's time axis (its texel centres).
+     * frame of the field's time axis (its texel centres). The offset is taken from the render origin, as the GPU's
+     * positions are: the clouds stay where they are in the world when the origin moves.
      */
-    private Vector4f motion(CloudSettings c) {
-        return c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0.5f / c.frames());
+    private Vector4f motion(CloudSettings c, RenderOrigin origin) {
+        Vector2d shift = originInTile(origin, c);
+        Vector4f m = c.cloudMotion(simTime, new Vector4f()).setComponent(3, 0.5f / c.frames());
+        return m.set((float) (m.x - shift.x), (float) (m.y - shift.y), m.z, m.w);
+    }
+
+    /** The render origin modulo the field's tile (the field and its detail repeat over a tile), metres. */
+    private static Vector2d originInTile(RenderOrigin origin, CloudSettings c) {
+        return new Vector2d(RenderOrigin.reduce(origin.x(), c.tileSize()), RenderOrigin.reduce(origin.z(),
+                c.tileSize()));
     }
 
     @Override
@@ -200,22 +221,33 @@ public final class CloudVolumeSystem implements EngineSystem {
             return;
         }
         Framebuffer scene = context.target();
-        int previousFramebuffer = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+        int previousFramebuffer = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING); // before making targets, which binds them
         Vector4f layer = layer(c);
-        Vector4f motion = motion(c);
-        glDisable(GL_DEPTH_TEST);
-        glDepthMask(false);
-
-        if (targets == null || !targets.fits(scene.width(), scene.height())) {
+        RenderOrigin origin = context.world().resource(RenderOrigin.class);
+        Vector4f motion = motion(c, origin);
+        if (pass == Pass.MAIN && (targets == null || !targets.fits(scene.width(), scene.height()))) {
             targets = this.context.owned().replace("targets", targets, new CloudTargets(gl, scene.width(),
                     scene.height()));
             haveHistory = false;
         }
         // bound after the targets are made: making a texture binds it to the active unit
-        scene.depth().bind(CloudPrograms.SCENE_DEPTH.unit()); // read while another target is drawn into
         field.bind(CloudPrograms.FIELD.unit());
         detail.bind(CloudPrograms.DETAIL.unit());
         optics.bind(CloudPrograms.OPTICS.unit());
+        // 0. the panorama's band, in the frame's first pass: the reflection draws it, the environment map reads it
+        if (panoramaFrame != frame) {
+            CameraPose viewer = context.world().resource(Camera.class).pose();
+            panorama.march(layer, motion, c, new Vector3f((float) viewer.x(), (float) viewer.y(), (float) viewer.z()),
+                    viewer.y(), c.base(), c.base() + c.thickness(), fullScreen, context.stats());
+            panoramaFrame = frame;
+        }
+        if (pass == Pass.REFLECTION) {
+            panorama.drawReflection(fullScreen, context.stats());
+            return;
+        }
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(false);
+        scene.depth().bind(CloudPrograms.SCENE_DEPTH.unit()); // read while another target is drawn into
 
         // 1. the march: the frame's slot of every 2 x 2 block, or every texel without a usable history
         boolean every = !haveHistory || !c.equals(historySettings) || jumped(context);
@@ -234,7 +266,10 @@ public final class CloudVolumeSystem implements EngineSystem {
         targets.freshLight.bind(CloudPrograms.FRESH_LIGHT.unit());
         targets.freshDepth.bind(CloudPrograms.FRESH_DEPTH.unit());
         targets.historyLight[read].bind(CloudPrograms.HISTORY.unit());
-        programs.useResolve(previousViewProjection, gw, gh, slot, every);
+        // the last frame's world-to-clip from this frame's origin, as the resolve's points are
+        Matrix4f previous = new Matrix4f(previousProjection).mul(new Matrix4f(new Matrix4d(previousView)
+                .translate(origin.x(), 0, origin.z())));
+        programs.useResolve(previous, gw, gh, slot, every);
         fullScreen.draw(context.stats());
 
         // 3. the composite over the picture: the sky's pixels, then the surfaces', chosen by the depth test
@@ -288,7 +323,8 @@ public final class CloudVolumeSystem implements EngineSystem {
     }
 
     private void remember(RenderContext context) {
-        previousViewProjection.set(context.camera().viewProjection());
+        previousView.set(context.camera().exactView());
+        previousProjection.set(context.camera().projection());
         previousEye.set(context.camera().position());
         forward(context, previousForward);
     }

@@ -51,9 +51,17 @@
  * {@code sunVisibility} ({@code common/shadow.glsl}, a shared texture and block the engine binds), so the ground,
  * the water, the trees and the snow are shadowed with one lookup, whoever draws them.
  *
+ * <h2>Reflection and environment map</h2>
+ * {@link org.openworld.engine.sky.clouds.CloudPanoramaMarch} marches the same rays from the viewer's eye in every
+ * direction into a panorama in the sky's layout (128² a hemisphere, {@code clouds/panorama.frag}), one band of 8 rows
+ * a frame (a whole panorama in 16 frames, 1 024 rays a frame against the picture's 14 400 at 1280 × 720), in the
+ * frame's first pass; the water's reflection looks it up per sky pixel along its mirrored ray
+ * ({@code clouds/reflection.frag}), and the sky's environment map per texel
+ * ({@link org.openworld.engine.environment.CloudPanorama}).
+ *
  * <h2>Limits</h2>
- * The water's reflection and the environment map show the sky's flat layer of the same field at the volume's middle
- * height, not the volume. The sun's light is the one at the eye, so the clouds darken when the sun sets at the
+ * The reflection's and the environment map's clouds are seen from the eye, not from the water's point, at 0.7° to
+ * 1.4° a texel; the environment map takes them at the sky's own refresh, one step late. The sun's light is the one at the eye, so the clouds darken when the sun sets at the
  * eye, not at their altitude. The composite knows sky from surface but not one surface's distance from another's,
  * so a cloud between two ridges is drawn over both. The cloud shadow takes the layer flat and the ground's point
  * carried to the base along the sun, at most 20 km away (the sun at least 3° up).

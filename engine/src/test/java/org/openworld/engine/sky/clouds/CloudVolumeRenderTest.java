@@ -20,6 +20,7 @@ import org.openworld.engine.colour.ImageComparison;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.TimeOfDay;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.origin.RenderOrigin;
 import org.openworld.engine.sky.CloudField;
 import org.openworld.engine.sky.CloudSettings;
 import org.openworld.engine.sky.SkySystem;
@@ -41,6 +42,18 @@ class CloudVolumeRenderTest {
 
     /** Degrees the camera turns per frame in the flight. */
     private static final double TURN = 1;
+    /**
+     * Degrees of the turn between the two frames of the reprojection test: 15°, ten texels of the quarter grid at
+     * 160 pixels over 60°, so a history read in place lies well beyond the clamp's 3 × 3 blocks (6 × 6 texels);
+     * below the 20° of a cut, which would march every texel.
+     */
+    private static final double MOVE = 15;
+    /**
+     * Metres east of the world's origin where the reprojection test flies: the render origin is then 16 384 m away
+     * from the world's (four steps of 4 096 m), so a reprojection that took the GPU's positions, which are from the
+     * render origin, as the world's would miss by that much.
+     */
+    private static final double FAR = 18000;
 
     private static Engine engine(int width, int height, List<String> settings) {
         List<String> all = new ArrayList<>(List.of("clouds.mode=volumetric", "clouds.wind-speed=0"));
@@ -143,9 +156,9 @@ class CloudVolumeRenderTest {
      * Bound: the just noticeable difference, a ΔE00 of 1 (Sharma et al. 2005), plus the march's own noise: each texel
      * starts its steps at a fixed jitter of its own (1/24 of its span), and a reprojected texel carries a
      * neighbour's, so even a perfect reprojection differs from the full march by that noise, measured 0.47 in
-     * straight flight, taken as 0.5. Below 1.5, the motion adds less than a noticeable difference to it. Without
-     * the reprojection and its clamp (the history read where the texel was on the screen) the clouds smear and the
-     * mean is above it.
+     * straight flight, taken as 0.5. Below 1.5, the motion adds less than a noticeable difference to it. This turn
+     * is slow (two thirds of a texel a frame), so the clamp alone keeps it under the bound; it guards the flight
+     * against smearing, and {@link #aFrameReprojectedAfterATurnMatchesAFullyMarchedOne} tests the reprojection.
      */
     @Test
     void aReprojectedFrameMatchesAFullyMarchedOneInFastFlight() {
@@ -177,6 +190,73 @@ class CloudVolumeRenderTest {
         }
         double mean = ImageComparison.of(amortised, full).meanDeltaE();
         assertTrue(mean < 1.5, "mean ΔE00 between the reprojected and the full frame " + mean);
+    }
+
+    /**
+     * One frame reached by reprojection: a first frame marched whole at one yaw, then the camera turns by
+     * {@link #MOVE}° and the second frame marches a quarter of the grid and reprojects the rest from the first;
+     * against the same pose marched whole. A turn moves every cloud the same angle whatever its distance, so a right
+     * reprojection finds each texel's point in a history that was marched whole, and differs from the full march only
+     * by the history's bilinear resampling (a texel moved by a fraction of a texel takes a blend of four) and the
+     * neighbour's jitter a reprojected texel's distance comes from. Many small clouds (cover 0.4 of a 6 km tile) put
+     * an edge in most 6 × 6-texel neighbourhoods, so the clamp to this frame's marched neighbours cannot put a
+     * history read in the wrong place right.
+     * Bound: a third of what the turn changes in the fully marched picture (the first frame against the second's
+     * pose marched whole). A history read without the turn carries that change into three texels in four, and the
+     * clamp takes back only what lies in its neighbourhood's range; a right reprojection carries none of it and keeps
+     * only the resampling and the jitter, which do not grow with the turn. Measured at the world's origin: the turn
+     * 6.1, the history read in place 3.5, the reprojection 1.6 (1.5 after a 6° turn). Here, {@link #FAR} out, the
+     * turn changes 4.4 and a reprojection through the last frame's world-to-clip matrix from the world's origin
+     * rather than the render origin's gives 2.2: both fail.
+     */
+    @Test
+    void aFrameReprojectedAfterATurnMatchesAFullyMarchedOne() {
+        int width = 160;
+        int height = 90;
+        List<String> settings = List.of("clouds.cover=0.4", "clouds.tile-size=6000");
+        CameraPose before = new CameraPose(FAR, 1200, 0, 20, 15, 60);
+        CameraPose after = new CameraPose(FAR, 1200, 0, 20 + MOVE, 15, 60);
+        Image first;
+        Image reprojected;
+        try (Engine engine = engine(width, height, settings)) {
+            engine.world().setResource(new TimeOfDay(15, 0));
+            first = render(engine, before);
+            reprojected = render(engine, after);
+        }
+        Image full;
+        try (Engine engine = engine(width, height, settings)) {
+            engine.world().setResource(new TimeOfDay(15, 0));
+            engine.update(); // the same simulation time as the second frame's
+            full = render(engine, after);
+        }
+        double moved = ImageComparison.of(first, full).meanDeltaE();
+        double error = ImageComparison.of(reprojected, full).meanDeltaE();
+        assertTrue(moved > 4, "the turn changes the picture by a mean ΔE00 of only " + moved);
+        assertTrue(error < moved / 3, "mean ΔE00 between the reprojected and the full frame " + error + ", above a"
+                + " third of what the turn changes, " + moved / 3);
+    }
+
+    /**
+     * The clouds stay in the world when the render origin moves: the same pose far from the world's origin, drawn
+     * with the origin's step at 4 096 m (the origin 16 384 m away) and at 1 000 m (18 000 m), gives the same picture.
+     * The GPU's positions differ by 1 616 m and the field's offset by the same, so only float rounding of metres at
+     * 20 km (a few millimetres) is left: bound a tenth of a just noticeable difference. Clouds that followed the
+     * origin would be 1.6 km apart.
+     */
+    @Test
+    void theCloudsStayInTheWorldWhenTheRenderOriginMoves() {
+        CameraPose pose = new CameraPose(FAR, 1200, 0, 20, 15, 60);
+        Image[] pictures = new Image[2];
+        double[] steps = {RenderOrigin.DEFAULT_STEP, 1000};
+        for (int i = 0; i < 2; i++) {
+            try (Engine engine = engine(160, 90, List.of("clouds.cover=0.4", "clouds.tile-size=6000"))) {
+                engine.world().setResource(new TimeOfDay(15, 0));
+                engine.world().setResource(new RenderOrigin(steps[i]));
+                pictures[i] = render(engine, pose);
+            }
+        }
+        double difference = ImageComparison.of(pictures[0], pictures[1]).meanDeltaE();
+        assertTrue(difference < 0.1, "the clouds moved with the render origin: mean ΔE00 " + difference);
     }
 
     /** Where the view ray through pixel (x, y) (y from the bottom) meets the ground plane y = 0, or null. */
