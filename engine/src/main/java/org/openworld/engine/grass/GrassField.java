@@ -11,10 +11,11 @@ import org.openworld.engine.vegetation.PlacementField;
  *
  * <p>The share is 0 where no grass grows: under {@link Rules#lowest} (the water and its wet rim), at or over the
  * {@link SnowLine}'s full line and where the ground is steeper than {@link Rules#maxGradient} (rock). Elsewhere it is
- * the vegetation's {@link PlacementField#ground}, the land's moisture and tree line, where the world has that field
- * (1 where it has none), times the chance of no snow ({@code 1 − SnowLine.chanceAt(h)}): between the snow line's start
- * and its full line the ground's snow lies in patches, and the grass thins as they close up. The samples lie on world multiples of the spacing, and each depends only
- * on its place and the land: a sample is the same in every square the viewer's moves make ({@code GrassFieldTest}).
+ * the vegetation's {@link PlacementField#ground}, the land's moisture (not its tree line), where the world has that
+ * field (1 where it has none), times the chance of no snow ({@code 1 − SnowLine.chanceAt(h)}): between the snow line's start
+ * and its full line the ground's snow lies in patches, and the grass thins as they close up. The samples lie on world
+ * multiples of the spacing, and each depends only on its place and the land: a sample is the same in every square the
+ * viewer's moves make ({@code GrassFieldTest}).
  *
  * <p>Cost: {@code (n + 2)²} height lookups and {@code n²} of the placement field (five height lookups each) for a
  * square of {@code n} samples a side; 110 samples for the default 40 m, some 75 000 lookups, a few milliseconds.

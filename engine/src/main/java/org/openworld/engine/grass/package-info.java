@@ -11,7 +11,8 @@
  *   share = 0                                            elsewhere (the water's rim, rock, the full snow)
  * </pre>
  * {@code ground} is the vegetation's {@link org.openworld.engine.vegetation.PlacementField#ground} (the land's
- * moisture and the tree line, the same field the trees grow from, published by the vegetation; 1 without it), and
+ * moisture, from the same field the trees grow from, published by the vegetation; 1 without it; not its tree line:
+ * grass grows above the trees), and
  * {@code chanceAt} the {@link org.openworld.engine.environment.SnowLine}'s: grass thins where the snow lies in
  * patches and is gone above its full line. A worker thread makes it again when the viewer has moved a quarter of
  * {@code grass.distance}; the GPU reads it as a texture.

@@ -22,12 +22,14 @@ import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.vegetation.VegetationSystem;
 
 /**
  * The grass on real GL, over an imported world of four strips from west to east, each running the world's length
  * north to south: a flat meadow 10 m above the water, a 45° slope (rock), a plateau above the snow line and a lake
  * bed 10 m under the water. Each strip is flat along its length and wider than twice the grass's distance here, so a
- * camera in its middle looking north sees only that strip's grass, or none.
+ * camera in its middle looking north sees only that strip's grass, or none. The vegetation is there without trees, for
+ * the placement field it publishes, which the grass grows from.
  */
 @GlTest
 class GrassRenderTest {
@@ -70,7 +72,8 @@ class GrassRenderTest {
         GRASS = grass;
         Engine engine = GlTestSupport.engine(GL.context(), W, H, List.of("terrain.import-file=" + strips,
                 "terrain.spacing=2", "terrain.relief=100", "terrain.sea-fraction=0.2",
-                "grass.distance=" + DISTANCE), new TerrainSystem(), grass);
+                "grass.distance=" + DISTANCE, "vegetation.density=0"), new TerrainSystem(), new VegetationSystem(),
+                grass);
         engine.world().setResource(new WaterLevel(0));
         return engine;
     }
