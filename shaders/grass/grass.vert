@@ -75,6 +75,16 @@ void main() {
     float d = distance(vec3(root.x, ground.x, root.y), viewerPos());
     float fade = 1.0 - smoothstep(uBlade.y, uBlade.z, d);
     bool drawn = inside && unit(hash(b ^ 0x3u)) < ground.y * fade;
+    if (!drawn) {
+        // a blade the land or the distance leaves out: folded away before the rasteriser, and the rest of its
+        // work skipped (on a software rasteriser the vertices are the grass's main cost)
+        wsPos = vec3(0.0);
+        wsFace = vec3(0.0, 1.0, 0.0);
+        vAlong = 0.0;
+        vTint = 0.0;
+        gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
+        return;
+    }
     // 3. the blade: turned, sized by the land's share, shrinking a little as it thins away, leaning and swinging
     float turn = 6.2831853 * unit(hash(b ^ 0x4u));
     vec2 face = vec2(cos(turn), sin(turn));
@@ -95,6 +105,5 @@ void main() {
     wsFace = normalize(cross(side, tangent));
     vAlong = t;
     vTint = unit(hash(b ^ 0x8u));
-    // a blade the land or the distance leaves out: folded away before the rasteriser
-    gl_Position = drawn ? frame.viewProjection * vec4(wsPos, 1.0) : vec4(0.0, 0.0, 2.0, 1.0);
+    gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }
