@@ -8,6 +8,7 @@ import org.openworld.engine.core.EngineSystem;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.CullingSystem;
+import org.openworld.engine.grass.GrassSystem;
 import org.openworld.engine.minimap.MinimapSystem;
 import org.openworld.engine.particles.ParticleSystem;
 import org.openworld.engine.sky.SkySystem;
@@ -52,6 +53,7 @@ final class DemoScene {
                 new TerrainSystem(line -> System.err.println(line)),
                 new ShadowSystem(),
                 new VegetationSystem(),
+                new GrassSystem(),
                 new WaterSystem(),
                 new MinimapSystem(),
                 new ParticleSystem());

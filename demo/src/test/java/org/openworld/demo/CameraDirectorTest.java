@@ -34,11 +34,11 @@ class CameraDirectorTest {
 
     /**
      * A small world that does not move: no clouds (they drift and evolve), no water (its ripples move), no plants
-     * (their crowns sway in the wind), no temporal anti-aliasing (it jitters every frame and blends it with the last,
+     * (their crowns and the grass sway in the wind), no temporal anti-aliasing (it jitters every frame and blends it with the last,
      * so frames at one pose differ by design).
      */
     private static final String[] STILL = {"--size", "160x90", "--time", "16:00", "--set", "terrain.size=256",
-            "--set", "clouds.cover=0", "--set", "system.water=off", "--set", "system.vegetation=off", "--set",
+            "--set", "clouds.cover=0", "--set", "system.water=off", "--set", "system.vegetation=off", "--set", "system.grass=off", "--set",
             "antialias.method=off"};
 
     @TempDir

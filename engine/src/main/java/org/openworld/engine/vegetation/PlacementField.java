@@ -26,8 +26,11 @@ import org.openworld.engine.environment.Moisture;
  *
  * <p><b>The kind</b>: bushes where the forest thins (its edges and the open), broadleaf trees low and wet, conifers
  * high and dry, each chosen with those odds from a uniform number the caller draws.
+ *
+ * <p>The vegetation publishes its field as a world resource, so what grows under the trees (the grass) thickens and
+ * thins with the same land: {@link #ground} is the field without the forest's patches and the tree line.
  */
-final class PlacementField {
+public final class PlacementField {
 
     /** Wavelengths of the two noise octaves, metres: forests a few hundred metres across, groves inside them. */
     static final double PATCH = 600;
@@ -64,7 +67,16 @@ final class PlacementField {
 
     /** The density at (x, z) on ground of height {@code h}, 0 to 1. */
     double density(double x, double z, double h) {
-        return patches(x, z) * Math.min(1, 0.5 + moisture(x, z, h)) * treeline(h);
+        return patches(x, z) * ground(x, z, h) * treeline(h);
+    }
+
+    /**
+     * What the land grows at (x, z) on ground of height {@code h}, 0 to 1, as the moisture allows:
+     * {@code min(1, 0.5 + moisture)}, the density without the forest's patches and the tree line (grass grows above
+     * the trees).
+     */
+    public double ground(double x, double z, double h) {
+        return Math.min(1, 0.5 + moisture(x, z, h));
     }
 
     /** Forest or open: {@link #FLOOR} to 1. */

@@ -32,6 +32,10 @@ final class TreePlacer {
         return world;
     }
 
+    PlacementField field() {
+        return field;
+    }
+
     /** The plants of the tiles meeting the disc of {@code radius} around (x, z); the tiles beyond it are forgotten. */
     TreePlacement.Layout around(double x, double z, double radius) {
         Map<Long, TreePlacement.Tile> kept = new HashMap<>();

@@ -72,6 +72,7 @@ public final class VegetationSystem implements EngineSystem {
         return SystemSpec.named("vegetation")
                 .reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class, SnowLine.class,
                         Moisture.class, Wind.class, Visibility.class)
+                .publishes(PlacementField.class)
                 .draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
     }
 
@@ -101,6 +102,7 @@ public final class VegetationSystem implements EngineSystem {
                 placing = null;
             }
             placer = new TreePlacer(now);
+            world.setResource(placer.field());
             place(world, () -> placer.around(pose.x(), pose.z(), radius), pose, true);
         } else if (placing != null && placing.isDone()) {
             take(world, placing.join());

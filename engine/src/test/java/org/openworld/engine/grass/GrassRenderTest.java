@@ -1,0 +1,136 @@
+package org.openworld.engine.grass;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
+import org.junit.jupiter.api.io.TempDir;
+import org.openworld.engine.Engine;
+import org.openworld.engine.GlTest;
+import org.openworld.engine.GlTestSupport;
+import org.openworld.engine.HeadlessGl;
+import org.openworld.engine.ImportedWorld;
+import org.openworld.engine.camera.Camera;
+import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.core.HeightField;
+import org.openworld.engine.environment.SnowLine;
+import org.openworld.engine.environment.WaterLevel;
+import org.openworld.engine.gl.Image;
+import org.openworld.engine.terrain.TerrainSystem;
+import org.openworld.engine.vegetation.VegetationSystem;
+
+/**
+ * The grass on real GL, over an imported world of four strips from west to east, each running the world's length
+ * north to south: a flat meadow 10 m above the water, a 45° slope (rock), a plateau above the snow line and a lake
+ * bed 10 m under the water. Each strip is flat along its length and wider than twice the grass's distance here, so a
+ * camera in its middle looking north sees only that strip's grass, or none. The vegetation is there without trees, for
+ * the placement field it publishes, which the grass grows from.
+ */
+@GlTest
+class GrassRenderTest {
+
+    @RegisterExtension
+    static final HeadlessGl GL = new HeadlessGl();
+
+    static final int W = 320;
+    static final int H = 180;
+    /** Samples per side, 2 m apart: a 512 m world from −256 to 256 m. */
+    static final int SAMPLES = 256;
+    /** Metres: the grass's distance here, under half the narrowest strip (the slope, 60 m). */
+    static final int DISTANCE = 25;
+
+    @TempDir
+    static Path dir;
+    static Path strips;
+
+    /**
+     * Normalised heights, 0 → −20 m and 1 → 80 m (relief 100): the meadow (x &lt; −100 m) at 0.3 (+10 m); the slope
+     * from −100 m to −40 m rising 0.3 to 0.9 (10 m to 70 m over 60 m: 45°); the plateau to 60 m at 0.95 (+75 m); the
+     * lake bed beyond at 0.1 (−10 m).
+     */
+    @BeforeAll
+    static void writeWorld() throws IOException {
+        strips = ImportedWorld.write(dir.resolve("strips.raw"), SAMPLES, (i, j) -> {
+            double x = 2.0 * (i - SAMPLES / 2);
+            if (j == SAMPLES - 1 && i == 0) {
+                return 0f; // the range's two ends, in corners behind every camera here
+            }
+            if (j == SAMPLES - 1 && i == SAMPLES - 1) {
+                return 1f;
+            }
+            return (float) (x < -100 ? 0.3 : x < -40 ? 0.3 + 0.6 * (x + 100) / 60 : x < 60 ? 0.95 : 0.1);
+        });
+    }
+
+    static GrassSystem GRASS;
+    static Engine engine(GrassSystem grass) {
+        GRASS = grass;
+        Engine engine = GlTestSupport.engine(GL.context(), W, H, List.of("terrain.import-file=" + strips,
+                "terrain.spacing=2", "terrain.relief=100", "terrain.sea-fraction=0.2",
+                "grass.distance=" + DISTANCE, "vegetation.density=0"), new TerrainSystem(), new VegetationSystem(),
+                grass);
+        engine.world().setResource(new WaterLevel(0));
+        return engine;
+    }
+
+    /**
+     * The share of the picture's pixels that the grass changes, standing 3 m over the ground at (x, 0) looking north
+     * and 35° down: the ground fills the picture from 3 m to about 30 m ahead.
+     */
+    static double grassShare(Engine engine, double x) {
+        double ground = engine.world().resource(HeightField.class).heightAt(x, 0);
+        engine.world().resource(Camera.class).setPose(new CameraPose(x, Math.max(ground, 0) + 3, 0, 0, -35, 60));
+        Image off = frame(engine, false);
+        Image on = frame(engine, true);
+        int changed = 0;
+        for (int y = 0; y < H; y++) {
+            for (int px = 0; px < W; px++) {
+                for (int c = 0; c < 3; c++) {
+                    // the same frame but for the grass: any change of over two levels is a blade
+                    if (Math.abs(on.channel(px, y, c) - off.channel(px, y, c)) > 2) {
+                        changed++;
+                        break;
+                    }
+                }
+            }
+        }
+        return (double) changed / (W * H);
+    }
+
+    static Image frame(Engine engine, boolean grass) {
+        engine.setEnabled("grass", grass);
+        engine.update();
+        GRASS.settle(engine.world());
+        engine.render();
+        return engine.readImage();
+    }
+
+    @Test
+    void grassGrowsOnTheMeadowAndNotOnTheSlopeTheSnowOrUnderWater() {
+        GrassSystem grass = new GrassSystem();
+        try (Engine engine = engine(grass)) {
+            engine.update();
+            SnowLine snow = engine.world().resource(SnowLine.class);
+            // the premises: the plateau is above the full snow line and the meadow below its start
+            assertTrue(snow.full() < 75 && snow.start() > 10, "snow line from " + snow.start() + " m to " + snow.full()
+                    + " m");
+            double meadow = grassShare(engine, -180);
+            double slope = grassShare(engine, -70);
+            double plateau = grassShare(engine, 10);
+            double lake = grassShare(engine, 160);
+            // the meadow: blades of 0.35 to 0.65 m, four to a cell of 0.4 m, seen from 3 m: the ground is covered
+            // by blades over most of the picture's lower half; a fifth of the whole picture is far less than that
+            assertTrue(meadow > 0.2, "the meadow's pixels the grass changed: " + meadow);
+            // elsewhere no blade may stand within the distance: not one pixel may change
+            assertEquals(0, slope, "pixels changed on the 45° slope");
+            assertEquals(0, plateau, "pixels changed above the snow line");
+            assertEquals(0, lake, "pixels changed on the lake bed under the water");
+        }
+        assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
+    }
+}
