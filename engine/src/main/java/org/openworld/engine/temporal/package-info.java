@@ -40,17 +40,18 @@
  * pixel by less than five levels, and the history would stick.
  *
  * <p><b>Cost.</b> Nine colour fetches and one depth fetch for the clamp and the point, one bilinear history fetch, a
- * matrix product, and the blit of one RGBA16F target into RGBA8. Measured as the span {@code antialias.engine} on
- * llvmpipe (the peer comparison's terrain view, 1280 × 720, profiled, one sitting on a loaded machine): 28 % of the
- * frame against FXAA's 23 %, 1.1 times FXAA's span (docs/benchmarks.md, "Temporal stability"). Memory: two RGBA16F
+ * matrix product, the motion's length and one more mix for the clamp's share (a few arithmetic operations beside the
+ * ten fetches, not measurable on the loaded machine), and the blit of one RGBA16F target into RGBA8. Measured as
+ * the span {@code antialias.engine} on llvmpipe (the peer comparison's terrain view, 1280 × 720, profiled, one
+ * sitting on a loaded machine): 28 % of the frame against FXAA's 23 %, 1.1 times FXAA's span (docs/benchmarks.md, "Temporal stability"). Memory: two RGBA16F
  * targets of the scene's size (14 MiB at 1280 × 720). A still picture settles in one cycle of frames.
  *
  * <p><b>Limits.</b> In motion the history is read between texels, a slight blur that the next frames sharpen again;
  * a thing that moves on its own (the falling snow) has no motion vector and is kept only within the clamp, so it
  * may leave a faint trail (not measured), and under a still view, where nothing is clamped, a plant's sway or a
  * cloud's drift is averaged over the history's half second; in motion, a thin feature that the neighbourhood of one
- * frame misses entirely is clamped away. The clamp's box of colours lets a pixel keep what its neighbours show, so a flicker smaller than
- * the local contrast (in a textured region) survives; a larger one is cut. A layer drawn without writing depth (the
- * falling snow) is reprojected by the depth beneath it.
+ * frame misses entirely is clamped away. The clamp's box of colours lets a pixel keep what its neighbours show, so
+ * a flicker smaller than the local contrast (in a textured region) survives; a larger one is cut. A layer drawn
+ * without writing depth (the falling snow) is reprojected by the depth beneath it.
  */
 package org.openworld.engine.temporal;
