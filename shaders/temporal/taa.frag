@@ -4,7 +4,10 @@
 //   2. reprojected: the previous frame's clip position of that point (reprojection = VP_prev * VP_now^-1, both
 //      without jitter), so a static world needs no motion vectors; a point that was off screen has no history
 //   3. the history there (bilinear), clamped to the box of colours of the pixel's 3x3 neighbourhood in this frame:
-//      what this frame cannot show near the pixel (a surface uncovered, a thing moved) is not kept (no ghosting)
+//      what this frame cannot show near the pixel (a surface uncovered, a thing moved) is not kept (no ghosting);
+//      the clamp's share grows with the pixel's motion, none where the view is still: there the history is the
+//      same surface, and clamping it to one jittered frame's box would cut what that frame's samples missed (a
+//      sub-pixel trunk, a ridge's thin edge), which the next frames add back: a still picture that keeps changing
 //   4. blended: history + weight * (current - history), the weight 1/n for the first frames (an exact mean of the
 //      samples so far) and never below the setting (an exponential average of about 2/weight frames)
 // The scene is tone-mapped and sRGB-encoded, so the blend and the clamp work on what the eye compares.
@@ -14,6 +17,10 @@ uniform sampler2D history;  // the last output, RGBA16F, linear filtering
 uniform mat4 reprojection;  // NDC now -> clip space of the previous frame
 uniform float weight;       // this frame's share of the output; 1 when there is no history
 out vec4 fragColor;
+
+// Pixels of motion from which the history is wholly clamped: a surface uncovered in one frame is at most the motion
+// wide, and from half a pixel on it is most of a pixel; below, the bilinear history blends it with its neighbours.
+const float FULL_CLAMP = 0.5;
 
 void main() {
     ivec2 size = textureSize(scene, 0);
@@ -35,6 +42,8 @@ void main() {
     vec2 then = previous.xy / previous.w * 0.5 + 0.5;
     bool seen = previous.w > 0.0 && all(greaterThanEqual(then, vec2(0.0))) && all(lessThanEqual(then, vec2(1.0)));
     // 3. and 4.
-    vec3 kept = clamp(texture(history, then).rgb, lo, hi);
+    vec3 held = texture(history, then).rgb;
+    float motion = length((then - uv) * vec2(size)); // pixels since the last frame
+    vec3 kept = mix(held, clamp(held, lo, hi), min(motion / FULL_CLAMP, 1.0));
     fragColor = vec4(seen ? mix(kept, current, weight) : current, 1.0);
 }

@@ -15,12 +15,18 @@
  * <pre>
  *   x      = (uv_p · 2 − 1, z · 2 − 1, 1)                       the pixel's point, normalised device coordinates
  *   x'     = VP_{n−1} · VP_n⁻¹ · x                               reprojected (both without jitter): no motion vectors
- *   h'     = clamp(h(x'), min₃ₓ₃ c, max₃ₓ₃ c)                    the history, clamped to the neighbourhood's colours
+ *   m      = |x' − x| in pixels                                  the pixel's motion since the last frame
+ *   h'     = mix(h(x'), clamp(h(x'), min₃ₓ₃ c, max₃ₓ₃ c), min(2m, 1))   clamped to the neighbourhood's colours
  *   out_n  = h' + w · (c − h'),   w = max(blend, 1 / (k + 1))      k frames in the run so far
  * </pre>
  * The world is static to the camera but for the snow, so the camera's two matrices and the depth give every pixel's
  * motion. The clamp is what keeps history from ghosting: a colour that no pixel of the 3×3 neighbourhood shows this
- * frame (a surface uncovered, the sky behind a ridge that moved) is pulled to the nearest that one does. The weight
+ * frame (a surface uncovered, the sky behind a ridge that moved) is pulled to the nearest that one does. It is needed
+ * only where the view moves: where it is still (m = 0) the history at the pixel is the same surface, and a clamp to
+ * one jittered frame's box would cut what that frame's samples happen to miss (a sub-pixel trunk, a ridge's thin
+ * edge, a glint), which the next frames add back, so a still picture would never settle to the mean of its samples
+ * and two stills a little apart would differ by that noise. The clamp's share therefore grows with the motion, whole
+ * from half a pixel a frame (m = ½). The weight
  * 1 / (k + 1) makes the first {@code 1 / blend} frames an exact mean; {@code antialias.blend} then keeps an
  * exponential mean over about {@code 2 / blend − 1} frames. A run starts when the pass was not drawn the frame
  * before (or the size changed); its first frame has no jitter and no history, so a single frame is the plain
@@ -34,16 +40,18 @@
  * pixel by less than five levels, and the history would stick.
  *
  * <p><b>Cost.</b> Nine colour fetches and one depth fetch for the clamp and the point, one bilinear history fetch, a
- * matrix product, and the blit of one RGBA16F target into RGBA8. Measured as the span {@code antialias.engine} on
- * llvmpipe (the peer comparison's terrain view, 1280 × 720, profiled, one sitting on a loaded machine): 28 % of the
- * frame against FXAA's 23 %, 1.1 times FXAA's span (docs/benchmarks.md, "Temporal stability"). Memory: two RGBA16F
+ * matrix product, the motion's length and one more mix for the clamp's share (a few arithmetic operations beside the
+ * ten fetches, not measurable on the loaded machine), and the blit of one RGBA16F target into RGBA8. Measured as
+ * the span {@code antialias.engine} on llvmpipe (the peer comparison's terrain view, 1280 × 720, profiled, one
+ * sitting on a loaded machine): 28 % of the frame against FXAA's 23 %, 1.1 times FXAA's span (docs/benchmarks.md, "Temporal stability"). Memory: two RGBA16F
  * targets of the scene's size (14 MiB at 1280 × 720). A still picture settles in one cycle of frames.
  *
  * <p><b>Limits.</b> In motion the history is read between texels, a slight blur that the next frames sharpen again;
  * a thing that moves on its own (the falling snow) has no motion vector and is kept only within the clamp, so it
- * may leave a faint trail (not measured); a thin feature that the neighbourhood of one frame misses entirely is
- * clamped away. The clamp's box of colours lets a pixel keep what its neighbours show, so a flicker smaller than
- * the local contrast (in a textured region) survives; a larger one is cut. A layer drawn without writing depth (the
- * falling snow) is reprojected by the depth beneath it.
+ * may leave a faint trail (not measured), and under a still view, where nothing is clamped, a plant's sway or a
+ * cloud's drift is averaged over the history's half second; in motion, a thin feature that the neighbourhood of one
+ * frame misses entirely is clamped away. The clamp's box of colours lets a pixel keep what its neighbours show, so
+ * a flicker smaller than the local contrast (in a textured region) survives; a larger one is cut. A layer drawn
+ * without writing depth (the falling snow) is reprojected by the depth beneath it.
  */
 package org.openworld.engine.temporal;
