@@ -121,7 +121,9 @@ final class FigureCatalogue {
                 "Perspective with fog (the layer's default): the far layer fades into the sky's own horizon colour.",
                 "11:00", CLOUDS_POSE, "clouds.mode=layer", "clouds.mapping=perspective-fog"));
 
-        // Figure 6: the paper's flat grid of geomipmaps, coloured by level (paper 2.5)
+        // Figure 6: the paper's flat grid of geomipmaps, coloured by level (paper 2.5). The terrain alone: the level
+        // colours keep a quarter of their brightness in the ground's shadows (terrain.frag), while a plant keeps its true light, so a
+        // bush in a ridge's shadow would show as a black dot on the bright ground
         String levels = "Figure 6: Geomipmapping with various base resolution levels";
         int[] bases = {32, 64, 128, 256};
         for (int i = 0; i < bases.length; i++) {
@@ -129,7 +131,8 @@ final class FigureCatalogue {
                     "B = " + bases[i] + " m: each colour one level L = floor(log2(D/B)) of the paper's flat grid "
                             + "(lod.mode=flat-grid, lod.rule=paper); doubling B moves every ring one level out.",
                     "16:30", RINGS_POSE, "lod.mode=flat-grid", "lod.rule=paper", "lod.patch-vertices=65",
-                    "terrain-debug.colouring=levels", "lod.base-resolution=" + bases[i]));
+                    "terrain-debug.colouring=levels", "lod.base-resolution=" + bases[i],
+                    "system.vegetation=off"));
         }
 
         // Figure 7: the scattering sums drawn, and the paper's findings on them measured (paper 3.1)

@@ -54,7 +54,7 @@ public record Lab(double l, double a, double b) {
     }
 
     /** Linear light (0 to 1) of an 8-bit sRGB code value. */
-    static double linear(int code) {
+    public static double linear(int code) {
         return LINEAR[code];
     }
 
