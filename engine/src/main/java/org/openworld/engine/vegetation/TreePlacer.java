@@ -32,6 +32,11 @@ final class TreePlacer {
         return world;
     }
 
+    /** The density field of this world: no state but the seed, safe to read from any thread. */
+    PlacementField field() {
+        return field;
+    }
+
     /** The plants of the tiles meeting the disc of {@code radius} around (x, z); the tiles beyond it are forgotten. */
     TreePlacement.Layout around(double x, double z, double radius) {
         Map<Long, TreePlacement.Tile> kept = new HashMap<>();
