@@ -1,5 +1,6 @@
 package org.openworld.engine.vegetation;
 
+import java.util.Arrays;
 import org.openworld.engine.core.HeightField;
 
 /**
@@ -15,8 +16,8 @@ import org.openworld.engine.core.HeightField;
  * covers a point: {@code exp(−ρ Σ p_k a_k)} (a Poisson count of crowns over the point). The canopy's colour mixes
  * the kinds by {@code p_k a_k}.
  *
- * <p>Cost: {@link #SIZE}² texels, each about 16 height lookups (the rules' slope and the moisture's probes): 70 to
- * 200 ms on a worker thread, once per {@link #RECENTRE} metres of travel. Limits: one sample per texel (128 m), so
+ * <p>Cost: {@link #SIZE}² texels of {@link #SUB}² points, each about 16 height lookups (the rules' slope and the
+ * moisture's probes), on a worker thread, once per {@link #RECENTRE} metres of travel. Limits: 128 m texels, so
  * groves under that size blur into their surroundings; the cover is as seen from straight above, so a forest seen
  * at a grazing angle, whose trunks and crowns hide more ground than that, looks a little sparser as a tint than as
  * trees.
@@ -27,6 +28,8 @@ final class FarForest {
     static final int SIZE = 256;
     /** Metres across the window: a power of two (ForestCover), 128 m texels, forests to 12 km round the viewer. */
     static final double EXTENT = 32768;
+    /** Samples per side of a texel: the rules and the field averaged over 3 × 3 points 43 m apart. */
+    static final int SUB = 3;
     /** Metres the viewer may move before the window is made again around it. */
     static final double RECENTRE = EXTENT / 8;
     /** Metres from the viewer the window always holds: half of it less the move before it is made again. */
@@ -63,29 +66,38 @@ final class FarForest {
             area[kind.ordinal()] = topArea[kind.ordinal()] * kind.scale * kind.scale * meanSquare;
         }
         byte[] rgba = new byte[SIZE * SIZE * 4];
+        double[] kinds = new double[TreePlacement.KINDS];
         for (int j = 0; j < SIZE; j++) {
             double pz = nearest((j + 0.5) * texel, z);
             for (int i = 0; i < SIZE; i++) {
                 double px = nearest((i + 0.5) * texel, x);
-                double h = heights.heightAt(px, pz);
-                if (!world.limits().allow(h, TreePlacement.gradient(heights, px, pz))) {
-                    continue;
+                // the crowns' area per square metre, averaged over SUB × SUB points of the texel: the rules pass or
+                // fail point by point (a slope, a shore), so one point would stand for the whole texel
+                Arrays.fill(kinds, 0);
+                for (int b = 0; b < SUB; b++) {
+                    for (int a = 0; a < SUB; a++) {
+                        double sx = px + ((a + 0.5) / SUB - 0.5) * texel;
+                        double sz = pz + ((b + 0.5) / SUB - 0.5) * texel;
+                        double h = heights.heightAt(sx, sz);
+                        if (!world.limits().allow(h, TreePlacement.gradient(heights, sx, sz))) {
+                            continue;
+                        }
+                        double perSquareMetre = s.density() / 10_000 * field.density(sx, sz, h) / (SUB * SUB);
+                        double[] shares = field.kindShares(sx, sz, h);
+                        for (int k = 0; k < TreePlacement.KINDS; k++) {
+                            kinds[k] += perSquareMetre * shares[k] * area[k];
+                        }
+                    }
                 }
-                double perSquareMetre = s.density() / 10_000 * field.density(px, pz, h);
-                double[] shares = field.kindShares(px, pz, h);
-                double hidden = 0;
-                for (int k = 0; k < TreePlacement.KINDS; k++) {
-                    shares[k] *= area[k];
-                    hidden += shares[k];
-                }
+                double hidden = kinds[0] + kinds[1] + kinds[2];
                 if (hidden <= 0) {
                     continue;
                 }
                 int o = (j * SIZE + i) * 4;
                 for (int k = 0; k < TreePlacement.KINDS; k++) {
-                    rgba[o + k] = (byte) Math.round(255 * shares[k] / hidden);
+                    rgba[o + k] = (byte) Math.round(255 * kinds[k] / hidden);
                 }
-                rgba[o + 3] = (byte) Math.round(255 * (1 - Math.exp(-perSquareMetre * hidden)));
+                rgba[o + 3] = (byte) Math.round(255 * (1 - Math.exp(-hidden)));
             }
         }
         return new Window(x, z, rgba);

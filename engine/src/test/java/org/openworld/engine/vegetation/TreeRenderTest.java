@@ -253,6 +253,8 @@ class TreeRenderTest {
     static final double MEAN_BOUND = 4.6;
 
     static Image draw(Engine engine, boolean on, double lodDistance) {
+        // no impostors, the farthest they may be: the first switch alone
+        engine.settings().set("vegetation.impostor-distance", "5000");
         engine.settings().set("vegetation.lod-distance", String.valueOf(lodDistance));
         return frame(engine, "vegetation", on);
     }
