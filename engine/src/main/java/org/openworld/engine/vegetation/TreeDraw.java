@@ -187,7 +187,7 @@ final class TreeDraw {
 
         static Bands of(Pass pass, VegetationSettings s) {
             float lod = (float) s.lodDistance();
-            float impostor = (float) s.impostorDistance();
+            float impostor = (float) s.impostorFrom();
             return switch (pass) {
                 case MAIN -> new Bands((1 - BAND) * lod, (1 + BAND) * lod, (1 - BAND) * impostor,
                         (1 + BAND) * impostor);

@@ -17,8 +17,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param lodDistance  the distance from the viewer where full shapes give way to simplified ones, metres,
  *                     cross-faded (dithered) over a tenth of this distance either side
  * @param impostorDistance the distance from the viewer where simplified shapes give way to impostors (cards showing
- *                     the plant baked from many directions), metres, cross-faded as the first switch; at least
- *                     {@code lodDistance}
+ *                     the plant baked from many directions), metres, cross-faded as the first switch; one nearer
+ *                     than {@code lodDistance} counts as that distance (no simplified shapes)
  * @param shoreMargin  how far above the water a plant's foot must be, metres (the wet rim holds none)
  */
 public record VegetationSettings(
@@ -41,10 +41,6 @@ public record VegetationSettings(
             throw new IllegalArgumentException("the tallest tree (" + maxHeight + " m) is shorter than the shortest ("
                     + minHeight + " m)");
         }
-        if (impostorDistance < lodDistance) {
-            throw new IllegalArgumentException("the impostors' distance (" + impostorDistance
-                    + " m) is nearer than the simplified shapes' (" + lodDistance + " m)");
-        }
     }
 
     public static final VegetationSettings DEFAULTS = new VegetationSettings(
@@ -59,6 +55,11 @@ public record VegetationSettings(
 
     public static final SettingsGroup<VegetationSettings> SETTINGS =
             SettingsGroup.of("vegetation", VegetationSettings.class, DEFAULTS);
+
+    /** The impostors' distance, metres, never nearer than the simplified shapes' (the keys are set one by one). */
+    public double impostorFrom() {
+        return Math.max(impostorDistance, lodDistance);
+    }
 
     /** The steepest ground as the tangent of its angle: rise over run, what the height field's gradient gives. */
     public double maxGradient() {

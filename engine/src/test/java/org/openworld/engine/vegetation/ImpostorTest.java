@@ -53,14 +53,8 @@ class ImpostorTest {
     }
 
     static Image draw(Engine engine, double lod, double impostor) {
-        // the impostors' distance first when it grows, so the two never cross (it may not be nearer than the other)
-        if (impostor >= engine.settings().get(VegetationSettings.class).impostorDistance()) {
-            engine.settings().set("vegetation.impostor-distance", String.valueOf(impostor));
-            engine.settings().set("vegetation.lod-distance", String.valueOf(lod));
-        } else {
-            engine.settings().set("vegetation.lod-distance", String.valueOf(lod));
-            engine.settings().set("vegetation.impostor-distance", String.valueOf(impostor));
-        }
+        engine.settings().set("vegetation.lod-distance", String.valueOf(lod));
+        engine.settings().set("vegetation.impostor-distance", String.valueOf(impostor));
         return TreeRenderTest.frame(engine, "vegetation", true);
     }
 
