@@ -30,7 +30,7 @@ import org.openworld.engine.gl.Texture2D;
  * the coverage (foliage, bark, nothing), and the shading normal (in the plant's own space) and the depth towards the
  * viewer ({@code shaders/vegetation/bake.frag}); one row of both per kind.
  *
- * <p>Cost: {@code 3 · 2 · 81} draws of at most 268 triangles at start (a few milliseconds), and one RGBA8 colour and
+ * <p>Cost: {@code 3 · 2 · 81} = 486 draws of at most 268 triangles at start, and one RGBA8 colour and
  * one depth attachment of {@code 2 · 9 · 64 × 3 · 9 · 64} = 1152 × 1728 texels, 15.2 MiB together, for as long as
  * the system lives. Limits: one frame per plant, the nearest view (no blend of the three nearest: a plant's picture
  * turns in 11° steps as the eye goes round it, unseen at the hundreds of metres impostors are drawn from); the
