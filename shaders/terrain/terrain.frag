@@ -21,6 +21,9 @@
 #ifdef TERRAIN_CLIPMAP
 #include "terrain/stream/clipmap.glsl"
 #endif
+#ifdef TERRAIN_FAR
+#include "common/forest.glsl"
+#endif
 
 in vec3 wsPos;
 in vec4 air;                   // the air to this point, per vertex (terrain.vert)
@@ -116,6 +119,11 @@ void main() {
     m.gloss = mix(m.gloss, far.a, toFar);
       #endif
     #endif
+  #endif
+  #ifdef TERRAIN_FAR // the forests past the plants' reach: their canopy's colour, matte (common/forest.glsl)
+    vec4 forest = forestCover(wsPos);
+    m.albedo = mix(m.albedo, forest.rgb, forest.a);
+    m.gloss *= 1.0 - forest.a;
   #endif
     vec3 color = lightTerrain(s, m);
   #ifdef TERRAIN_LEVELS

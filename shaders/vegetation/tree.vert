@@ -5,7 +5,7 @@
 // depth-only one (SHADOW).
 //
 // Plants shrink into the ground over the last fifth of the view distance, and switch from the full shape to the
-// simplified one at the LOD distance, both measured from the VIEWER (viewerPos(), the same in every pass): measured
+// simplified one at the LOD distance and from that to the impostors (impostor.vert) at theirs, all measured from the VIEWER (viewerPos(), the same in every pass): measured
 // from cameraPos(), which in the shadow pass is the sun's camera hundreds of metres away, most plants would be gone
 // from the shadow maps while still standing in the picture.
 #include "common/frame.glsl"
@@ -18,6 +18,7 @@ layout(location = 4) in vec2 turnTint;   // x: turn about the vertical (radians)
 
 uniform vec2 uFade; // x: distance from the viewer where plants start to shrink (m); y: where they are gone (m)
 uniform vec3 uLod;  // x, y: the cross-fade from the full shape to the simplified one (m); z: 0 full shape, 1 simplified
+uniform vec2 uImpostor; // the cross-fade from the simplified shape to the impostors (m); equal ends: a hard switch
 uniform vec2 uWind; // the wind among the plants, m/s, x east and z south
 uniform vec2 uPlaced; // where the feet's x and z are measured from: the layout's centre from the render origin (m)
 uniform vec3 uSway;   // xy: the swing's phase per metre east and south (rad/m); z: its phase at uPlaced (rad)
@@ -28,6 +29,7 @@ out vec3 msShape;         // the shape's point, for the leaves' and the bark's p
 flat out float vPart;
 flat out float vTint;
 flat out float vFar;      // the simplified shape's share at this plant, 0..1 (the cross-fade)
+flat out float vImpostor; // the impostor's share at this plant, 0..1
 
 const float WIDTH_LOW = 0.85;   // the narrowest plant's width, times the shape's
 const float WIDTH_SPREAD = 0.3; // ... to the widest, 1.15 times
@@ -44,7 +46,8 @@ void main() {
     float shrink = 1.0 - smoothstep(uFade.x, uFade.y, d);
     // the simplified shape's share: 0 before the band, 1 after it; a zero-width band is a hard switch
     vFar = clamp((d - uLod.x) / max(uLod.y - uLod.x, 1e-3), 0.0, 1.0);
-    bool other = uLod.z < 0.5 ? vFar >= 1.0 : vFar <= 0.0;
+    vImpostor = clamp((d - uImpostor.x) / max(uImpostor.y - uImpostor.x, 1e-3), 0.0, 1.0);
+    bool other = uLod.z < 0.5 ? vFar >= 1.0 : vFar <= 0.0 || vImpostor >= 1.0;
     float c = cos(turnTint.x);
     float s = sin(turnTint.x);
     mat2 turn = mat2(c, s, -s, c);

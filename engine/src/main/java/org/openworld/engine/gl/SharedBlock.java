@@ -23,7 +23,12 @@ public enum SharedBlock {
      * {@code CloudShadowBlock}: where the cloud shadow map lies ({@code shaders/common/shadow.glsl}), std140: two
      * vec4s. Its stand-in is zeros, whose strength 0 lets all the sunlight through.
      */
-    CLOUD_SHADOW("CloudShadowBlock", 2, 2 * 16);
+    CLOUD_SHADOW("CloudShadowBlock", 2, 2 * 16),
+    /**
+     * {@code ForestCoverBlock}: where the forest cover map lies and the canopy's colours
+     * ({@code shaders/common/forest.glsl}), std140: five vec4s. Its stand-in is zeros, whose strength 0 shows no forest.
+     */
+    FOREST_COVER("ForestCoverBlock", 3, 5 * 16);
 
     private final String block;
     private final int binding;

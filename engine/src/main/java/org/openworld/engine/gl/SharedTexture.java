@@ -18,7 +18,9 @@ public enum SharedTexture {
     /** {@code samplerCube environmentMap}: the sky around the scene ({@code shaders/common/environment.glsl}). */
     ENVIRONMENT("environmentMap"),
     /** {@code sampler3D aerialPerspective}: the air's in-scattering and transmittance ({@code common/fog.glsl}). */
-    AERIAL_PERSPECTIVE("aerialPerspective");
+    AERIAL_PERSPECTIVE("aerialPerspective"),
+    /** {@code sampler2D forestCoverMap}: the forests beyond the plants' reach ({@code shaders/common/forest.glsl}). */
+    FOREST_COVER("forestCoverMap");
 
     /**
      * The radiance of the stand-in {@link #ENVIRONMENT}, a uniform sky, linear RGB (1 = the white of noon on a clear
@@ -38,7 +40,7 @@ public enum SharedTexture {
     /**
      * A texture of one texel that stands in for this one where no shared resource binds it, and changes nothing:
      * a cloud shadow of transmittance 1, a shadow map at the far plane (everything lit), a uniform sky of {@link #NEUTRAL_SKY}, clear air (nothing
-     * scattered in, everything transmitted).
+     * scattered in, everything transmitted), no forest (its block's strength 0 is never past; the texel is unread).
      */
     public GlTexture standIn(GlContext gl) {
         return switch (this) {
@@ -46,6 +48,7 @@ public enum SharedTexture {
             case SHADOW_MAP -> DepthTextureArray.empty(gl);
             case ENVIRONMENT -> CubeMapTexture.fromDirections(gl, 1, d -> new Vector3f(NEUTRAL_SKY));
             case AERIAL_PERSPECTIVE -> clearAir(gl);
+            case FOREST_COVER -> Texture2D.empty(gl, 1, 1, Format.RGBA8, Sampling.NEAREST_CLAMP);
         };
     }
 

@@ -110,15 +110,25 @@ public final class PlacementField {
 
     /** The kind of plant at a place of this density and height, from a uniform number {@code u} in [0, 1). */
     TreeKind kind(double x, double z, double h, double u) {
+        double[] shares = kindShares(x, z, h);
+        // bushes first, then broadleaf trees, then conifers along u
+        int bush = TreeKind.BUSH.ordinal();
+        int broadleaf = TreeKind.BROADLEAF.ordinal();
+        return u < shares[bush] ? TreeKind.BUSH : u < shares[bush] + shares[broadleaf] ? TreeKind.BROADLEAF
+                : TreeKind.CONIFER;
+    }
+
+    /**
+     * Each kind's share of the plants at a place, in {@link TreeKind} order, summing to 1: bushes {@code 0.15 + 0.7 ·
+     * open}, and of the rest broadleaf trees the moisture times how low the place lies between the shore and the snow.
+     */
+    double[] kindShares(double x, double z, double h) {
         double open = 1 - (patches(x, z) - FLOOR) / (1 - FLOOR);
         double bush = 0.15 + 0.7 * open;
-        if (u < bush) {
-            return TreeKind.BUSH;
-        }
         double range = Double.isInfinite(limits.highest()) || Double.isInfinite(limits.lowest()) ? 0.5
                 : (h - limits.lowest()) / Math.max(1, limits.highest() - limits.lowest());
-        double broadleaf = moisture(x, z, h) * (1 - Math.min(1, Math.max(0, range)));
-        return (u - bush) / (1 - bush) < broadleaf ? TreeKind.BROADLEAF : TreeKind.CONIFER;
+        double broadleaf = (1 - bush) * moisture(x, z, h) * (1 - Math.min(1, Math.max(0, range)));
+        return new double[] {1 - bush - broadleaf, broadleaf, bush};
     }
 
     /** Value noise, 0 to 1: hashed values on the integer lattice, blended by a smooth cubic. */

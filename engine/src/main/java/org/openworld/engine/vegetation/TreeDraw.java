@@ -23,24 +23,26 @@ import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.origin.RenderOrigin;
 
 /**
- * The plants' GL side: the records on the GPU, the two shapes of each kind, the two programs, and the instanced
- * draws of one pass. Which representation a plant gets is decided by its distance from the viewer:
+ * The plants' GL side: the records on the GPU, the two shapes of each kind, the two programs, the impostors
+ * ({@link ImpostorDraw}) and the instanced draws of one pass. Which representation a plant gets is decided by its
+ * distance from the viewer:
  *
  * <ul>
- *   <li>{@link Pass#MAIN}: the full shape within {@code vegetation.lod-distance}, the simplified one beyond, the two
- *       cross-faded by an ordered dither over ±{@link #BAND} of the distance (each pixel of a plant in the band
- *       is drawn by one of the two, the share of the far one rising linearly across it), so nothing pops.</li>
- *   <li>{@link Pass#SHADOW}: the same switch, hard (a dither in the shadow maps would speckle the shadows), and no
- *       bushes beyond it: their shadows there are a few pixels under their own crowns.</li>
- *   <li>{@link Pass#REFLECTION}: the simplified shapes alone: the mirror's picture is rippled and dimmed by the
- *       water.</li>
+ *   <li>{@link Pass#MAIN}: the full shape within {@code vegetation.lod-distance}, the simplified one up to
+ *       {@code vegetation.impostor-distance}, the impostor beyond; each switch cross-faded by an ordered dither over
+ *       ±{@link #BAND} of its distance (each pixel of a plant in the band is drawn by one of the two, the share of
+ *       the farther one rising linearly across it), so nothing pops.</li>
+ *   <li>{@link Pass#SHADOW}: the same switches, hard (a dither in the shadow maps would speckle the shadows), so the
+ *       far cascades, which hold the far plants, draw cards; and no bushes beyond the first switch: their shadows
+ *       there are a few pixels under their own crowns.</li>
+ *   <li>{@link Pass#REFLECTION}: the impostors alone: the mirror's picture is rippled and dimmed by the water.</li>
  * </ul>
- * A tile (its box) wholly on one side of the band draws only that side's shape; a tile across it draws both, and the
- * vertex shader folds away the plants that are wholly on the other side.
+ * A tile (its box) wholly on one side of a band draws only that side's representation; a tile across it draws both,
+ * and the vertex shaders fold away the plants that are wholly on the other side.
  */
 final class TreeDraw {
 
-    /** The cross-fade's half width, a share of the switch distance: 15 m either side of the default 150 m. */
+    /** A cross-fade's half width, a share of its switch distance: 15 m either side of the default 150 m. */
     static final float BAND = 0.1f;
     /** Where the plants start to shrink away, as a share of the view distance. */
     static final float FADE_START = 0.8f;
@@ -64,17 +66,18 @@ final class TreeDraw {
     /** [kind][0 full, 1 simplified]. */
     private final Mesh[][] shapes = new Mesh[TreePlacement.KINDS][2];
     private final GpuBuffer records;
+    private final ImpostorDraw impostors;
 
     /** The lit program's kind: its colours (the depth-only program has none). */
     private final Uniform.Int kind;
 
     /** The uniforms both programs have. */
-    private record Uniforms(Uniform.Vec2 fade, Uniform.Vec3 lod, Uniform.Vec2 wind, Uniform.Vec2 placed,
-                            Uniform.Vec3 sway) {
+    private record Uniforms(Uniform.Vec2 fade, Uniform.Vec3 lod, Uniform.Vec2 impostor, Uniform.Vec2 wind,
+                            Uniform.Vec2 placed, Uniform.Vec3 sway) {
 
         static Uniforms of(ShaderProgram p) {
-            return new Uniforms(p.vec2("uFade"), p.vec3("uLod"), p.vec2("uWind"), p.vec2("uPlaced"),
-                    p.vec3("uSway"));
+            return new Uniforms(p.vec2("uFade"), p.vec3("uLod"), p.vec2("uImpostor"), p.vec2("uWind"),
+                    p.vec2("uPlaced"), p.vec3("uSway"));
         }
     }
 
@@ -97,6 +100,11 @@ final class TreeDraw {
                 shapes[kind.ordinal()][far] = mesh;
             }
         }
+        impostors = new ImpostorDraw(context, records, FOOT_HEIGHT, TURN_TINT);
+    }
+
+    ImpostorAtlas atlas() {
+        return impostors.atlas();
     }
 
     void upload(TreePlacement.Layout layout) {
@@ -113,50 +121,80 @@ final class TreeDraw {
      *
      * @param viewer     the viewer's eye from the layout's centre, metres
      * @param groundWind m/s of the wind among the plants, x (east) and z (south)
-     * @return the plants drawn, both shapes of a plant in the cross-fade counted
+     * @return the plants drawn, every representation of a plant in a cross-fade counted
      */
     int draw(Pass pass, RenderContext context, TreePlacement.Layout layout, Visibility visibility,
              VegetationSettings s, Vector3fc viewer, float[] groundWind) {
-        // 1. the program: depth alone for the sun's maps, lit otherwise; both measure the fade and the switch from
-        //    the VIEWER (viewerPos), so a plant leaves the shadow maps and the reflection where it leaves the picture
-        Uniforms u = pass == Pass.SHADOW ? depth : lit;
-        (pass == Pass.SHADOW ? depthProgram : program).use();
+        // 1. the bands: MAIN cross-fades full to simplified at the LOD distance and simplified to impostors at theirs;
+        //    the shadow maps switch hard at both; the reflection draws the impostors alone, from the viewer on
+        Bands b = Bands.of(pass, s);
         float end = (float) s.viewDistance();
-        u.fade().set(FADE_START * end, end);
-        u.wind().set(groundWind[0], groundWind[1]);
+        float[] fade = {FADE_START * end, end};
         // the feet are measured from the layout's centre: placed from the render origin in double, as is the swing's
         // phase there (reduced modulo a turn), so the GPU adds small numbers to small numbers 10 000 km out
         RenderOrigin origin = context.world().resource(RenderOrigin.class);
-        u.placed().set(origin.relativeX(layout.centreX()), origin.relativeZ(layout.centreZ()));
-        u.sway().set((float) SWAY_WAVE_X, (float) SWAY_WAVE_Z, (float) RenderOrigin.reduce(
-                SWAY_WAVE_X * layout.centreX() + SWAY_WAVE_Z * layout.centreZ(), 2 * Math.PI));
-        float lod = (float) s.lodDistance();
-        float band = pass == Pass.MAIN ? BAND * lod : 0;
+        float[] placed = {origin.relativeX(layout.centreX()), origin.relativeZ(layout.centreZ())};
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);
-        glEnable(GL_CULL_FACE);
         Containment root = visibility == null ? Containment.INSIDE : visibility.root(0);
         float[] boxes = layout.bounds().boxes();
         int drawn = 0;
-        for (TreeKind kind : TreeKind.values()) {
-            if (pass != Pass.SHADOW) {
-                this.kind.set(kind.ordinal());
-            }
-            for (int far = 0; far < 2; far++) {
-                boolean near = far == 0;
-                if (pass == Pass.REFLECTION && near || pass == Pass.SHADOW && !near && kind == TreeKind.BUSH) {
-                    continue;
+        // 2. the meshes: depth alone for the sun's maps, lit otherwise; every distance is measured from the VIEWER
+        //    (viewerPos), so a plant leaves the shadow maps and the reflection where it leaves the picture
+        if (pass != Pass.REFLECTION) {
+            Uniforms u = pass == Pass.SHADOW ? depth : lit;
+            (pass == Pass.SHADOW ? depthProgram : program).use();
+            u.fade().set(fade[0], fade[1]);
+            u.wind().set(groundWind[0], groundWind[1]);
+            u.placed().set(placed[0], placed[1]);
+            u.sway().set((float) SWAY_WAVE_X, (float) SWAY_WAVE_Z, (float) RenderOrigin.reduce(
+                    SWAY_WAVE_X * layout.centreX() + SWAY_WAVE_Z * layout.centreZ(), 2 * Math.PI));
+            u.impostor().set(b.impostorFrom(), b.impostorTo());
+            glEnable(GL_CULL_FACE);
+            for (TreeKind kind : TreeKind.values()) {
+                if (pass != Pass.SHADOW) {
+                    this.kind.set(kind.ordinal());
                 }
-                // the reflection's far shapes reach to the viewer: the switch at 0
-                float from = pass == Pass.REFLECTION ? 0 : lod - band;
-                float to = pass == Pass.REFLECTION ? 0 : lod + band;
-                u.lod().set(from, to, far);
-                drawn += drawRuns(context, layout, kind.ordinal(), shapes[kind.ordinal()][far], visibility, root,
-                        boxes, viewer, near ? 0 : from, near ? to : Float.POSITIVE_INFINITY);
+                u.lod().set(b.lodFrom(), b.lodTo(), 0);
+                drawn += drawRuns(context, layout, kind.ordinal(), shapes[kind.ordinal()][0], visibility, root,
+                        boxes, viewer, 0, b.lodTo());
+                // the far bushes' shadows are a few pixels under their own crowns: left out
+                if (pass != Pass.SHADOW || kind != TreeKind.BUSH) {
+                    u.lod().set(b.lodFrom(), b.lodTo(), 1);
+                    drawn += drawRuns(context, layout, kind.ordinal(), shapes[kind.ordinal()][1], visibility, root,
+                            boxes, viewer, b.lodFrom(), b.impostorTo());
+                }
+            }
+            glDisable(GL_CULL_FACE);
+        }
+        // 3. the impostors: cards, seen from either side
+        impostors.begin(pass, fade, new float[] {b.impostorFrom(), b.impostorTo()}, placed);
+        for (TreeKind kind : TreeKind.values()) {
+            if (pass != Pass.SHADOW || kind != TreeKind.BUSH) {
+                drawn += drawRuns(context, layout, kind.ordinal(), impostors.card(pass, kind), visibility, root,
+                        boxes, viewer, b.impostorFrom(), Float.POSITIVE_INFINITY);
             }
         }
-        glDisable(GL_CULL_FACE);
         return drawn;
+    }
+
+    /**
+     * Metres from the viewer where the full shapes give way to the simplified ones (from, to) and those to the
+     * impostors: cross-fades over ±{@link #BAND} of each distance in the picture, hard switches in the shadow maps,
+     * and the impostors from the viewer on in the reflection (the mirror's picture is rippled and dimmed).
+     */
+    record Bands(float lodFrom, float lodTo, float impostorFrom, float impostorTo) {
+
+        static Bands of(Pass pass, VegetationSettings s) {
+            float lod = (float) s.lodDistance();
+            float impostor = (float) s.impostorFrom();
+            return switch (pass) {
+                case MAIN -> new Bands((1 - BAND) * lod, (1 + BAND) * lod, (1 - BAND) * impostor,
+                        (1 + BAND) * impostor);
+                case REFLECTION -> new Bands(0, 0, 0, 0);
+                default -> new Bands(lod, lod, impostor, impostor);
+            };
+        }
     }
 
     /**

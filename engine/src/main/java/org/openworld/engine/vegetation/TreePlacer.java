@@ -32,6 +32,7 @@ final class TreePlacer {
         return world;
     }
 
+    /** The density field of this world: no state but the seed, safe to read from any thread. */
     PlacementField field() {
         return field;
     }

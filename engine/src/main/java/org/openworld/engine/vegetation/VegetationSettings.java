@@ -16,6 +16,9 @@ import org.openworld.engine.settings.SettingsGroup;
  *                     fifth of it, in every pass alike
  * @param lodDistance  the distance from the viewer where full shapes give way to simplified ones, metres,
  *                     cross-faded (dithered) over a tenth of this distance either side
+ * @param impostorDistance the distance from the viewer where simplified shapes give way to impostors (cards showing
+ *                     the plant baked from many directions), metres, cross-faded as the first switch; one nearer
+ *                     than {@code lodDistance} counts as that distance (no simplified shapes)
  * @param shoreMargin  how far above the water a plant's foot must be, metres (the wet rim holds none)
  */
 public record VegetationSettings(
@@ -28,6 +31,8 @@ public record VegetationSettings(
         double viewDistance,
         @Setting(doc = "distance from the viewer where full shapes give way to simplified ones", unit = "m",
                 min = 10, max = 5000) double lodDistance,
+        @Setting(doc = "distance from the viewer where simplified shapes give way to impostors", unit = "m",
+                min = 10, max = 5000) double impostorDistance,
         @Setting(doc = "height of a plant's foot above the water, at least", unit = "m", min = 0, max = 100)
         double shoreMargin) {
 
@@ -45,10 +50,16 @@ public record VegetationSettings(
             24,    // m: a grown one; mountain spruce rarely exceed 30 m
             1500,  // m: a 16 m tree is then 6 px tall at 1080p, small enough to go unnoticed as it shrinks away
             150,   // m: a 16 m tree is 110 px tall at 1080p there, and the two shapes differ little (TreeRenderTest)
+            400,   // m: a 16 m tree is 41 px tall at 1080p there, under the impostors' 64 px frames (ImpostorTest)
             2);    // m: above the lakes' wet rim
 
     public static final SettingsGroup<VegetationSettings> SETTINGS =
             SettingsGroup.of("vegetation", VegetationSettings.class, DEFAULTS);
+
+    /** The impostors' distance, metres, never nearer than the simplified shapes' (the keys are set one by one). */
+    public double impostorFrom() {
+        return Math.max(impostorDistance, lodDistance);
+    }
 
     /** The steepest ground as the tangent of its angle: rise over run, what the height field's gradient gives. */
     public double maxGradient() {

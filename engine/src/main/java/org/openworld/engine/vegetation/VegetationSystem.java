@@ -1,11 +1,13 @@
 package org.openworld.engine.vegetation;
 
+import java.nio.ByteBuffer;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.Supplier;
 import org.joml.Vector3f;
+import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
@@ -20,10 +22,15 @@ import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
+import org.openworld.engine.environment.ForestCover;
 import org.openworld.engine.environment.Moisture;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.environment.Wind;
+import org.openworld.engine.gl.Format;
+import org.openworld.engine.gl.Sampling;
+import org.openworld.engine.gl.SharedBlock;
+import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 
@@ -66,13 +73,20 @@ public final class VegetationSystem implements EngineSystem {
     private double placedZ;
     private CompletableFuture<Placed> placing;
     private int placements;
+    /** The far forests: the shared map, its window under way, where the viewer was for the one shown. */
+    private ForestCover cover;
+    private CompletableFuture<FarForest.Window> covering;
+    private double coveredX;
+    private double coveredZ;
+    /** Each kind's crown from above, units of its height squared, from the impostors' bake. */
+    private final double[] topArea = new double[TreePlacement.KINDS];
 
     @Override
     public SystemSpec spec() {
         return SystemSpec.named("vegetation")
                 .reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class, SnowLine.class,
                         Moisture.class, Wind.class, Visibility.class)
-                .publishes(PlacementField.class)
+                .publishes(PlacementField.class, ForestCover.class)
                 .draws(Pass.SHADOW, Pass.REFLECTION, Pass.MAIN);
     }
 
@@ -85,6 +99,14 @@ public final class VegetationSystem implements EngineSystem {
     public void init(EngineContext context) {
         draw = new TreeDraw(context);
         entity = context.world().spawn();
+        Settings settings = context.settings();
+        cover = context.own("forestCover", new ForestCover(Texture2D.empty(context.gl(), FarForest.SIZE,
+                FarForest.SIZE, Format.RGBA8, Sampling.LINEAR_REPEAT), SharedBlock.FOREST_COVER.standIn(context.gl()),
+                () -> settings.systemEnabled(spec().name())));
+        context.world().setResource(cover);
+        for (TreeKind kind : TreeKind.values()) {
+            topArea[kind.ordinal()] = draw.atlas().topArea(kind);
+        }
     }
 
     @Override
@@ -104,6 +126,11 @@ public final class VegetationSystem implements EngineSystem {
             placer = new TreePlacer(now);
             world.setResource(placer.field());
             place(world, () -> placer.around(pose.x(), pose.z(), radius), pose, true);
+            if (covering != null) {
+                covering.cancel(false);
+                covering = null;
+            }
+            takeCover(FarForest.around(now, placer.field(), topArea, pose.x(), pose.z()), s);
         } else if (placing != null && placing.isDone()) {
             take(world, placing.join());
             placing = null;
@@ -112,6 +139,35 @@ public final class VegetationSystem implements EngineSystem {
             TreePlacer p = placer;
             place(world, () -> p.around(pose.x(), pose.z(), radius), pose, false);
         }
+        // the forests past the plants' reach: made again on the worker once the viewer has moved an eighth of them
+        if (covering != null && covering.isDone()) {
+            takeCover(covering.join(), s);
+            covering = null;
+        } else if (covering == null && Math.hypot(pose.x() - coveredX, pose.z() - coveredZ) > FarForest.RECENTRE) {
+            TreePlacer p = placer;
+            coveredX = pose.x();
+            coveredZ = pose.z();
+            covering = CompletableFuture.supplyAsync(() -> FarForest.around(p.world(), p.field(), topArea, pose.x(),
+                    pose.z()), worker);
+        }
+    }
+
+    /** A window of far forests on the GPU, with the fade where the plants shrink away. */
+    private void takeCover(FarForest.Window window, VegetationSettings s) {
+        coveredX = window.x();
+        coveredZ = window.z();
+        ByteBuffer data = MemoryUtil.memAlloc(window.rgba().length).put(window.rgba()).flip();
+        try {
+            cover.map().upload(0, 0, FarForest.SIZE, data);
+        } finally {
+            MemoryUtil.memFree(data);
+        }
+        Vector3f[] colours = new Vector3f[TreePlacement.KINDS];
+        for (TreeKind kind : TreeKind.values()) {
+            colours[kind.ordinal()] = draw.atlas().meanAlbedo(kind);
+        }
+        cover.write(FarForest.EXTENT, FarForest.REACH, new float[] {(float) (TreeDraw.FADE_START * s.viewDistance()),
+            (float) s.viewDistance()}, colours);
     }
 
     /** A placement and the milliseconds of CPU it took (on whichever thread made it). */
@@ -188,6 +244,11 @@ public final class VegetationSystem implements EngineSystem {
      */
     float[] placed() {
         return layout == null ? new float[0] : layout.worldRecords();
+    }
+
+    /** The impostors' atlas (tests). */
+    ImpostorAtlas atlas() {
+        return draw.atlas();
     }
 
     /** The layout drawn now (tests). */

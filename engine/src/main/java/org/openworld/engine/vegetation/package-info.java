@@ -27,22 +27,40 @@
  * with the centre as their one copy's offset.
  *
  * <p><b>Drawing</b> ({@link org.openworld.engine.vegetation.TreeDraw}): per kind a full shape within
- * {@code vegetation.lod-distance} (92 to 268 triangles) and a simplified one beyond (16 to 42), cross-faded by a
- * 4 × 4 ordered dither over ±10 % of the distance; the shadow cascades switch hard at the same distance and leave
- * the far bushes out; the reflection draws the simplified shapes only. One instanced call per kind, shape and run of
- * neighbouring visible tiles ({@code Mesh.drawInstances}); the tiles' boxes go to the culling system as a
- * {@code Cullable}. The leaves and bark are patterns of the shape's coordinates (clumps that tilt the normal, streaks),
- * lit as the terrain is (wrapped Lambert sun times {@code sunVisibility}, the sky's light, the aerial perspective, the
- * display transform) plus the light through the leaves against the sun; crowns lean and swing in the
+ * {@code vegetation.lod-distance} (92 to 268 triangles), a simplified one to {@code vegetation.impostor-distance} (16
+ * to 42), and beyond it an impostor, one card ({@link org.openworld.engine.vegetation.ImpostorDraw}); each switch
+ * cross-faded by a 4 × 4 ordered dither over ±10 % of its distance; the shadow cascades switch hard at the same
+ * distances (the far cascades draw cards facing the sun) and leave the far bushes out; the reflection draws the cards
+ * only. One instanced call per kind, representation and run of neighbouring visible tiles
+ * ({@code Mesh.drawInstances}); the tiles' boxes go to the culling system as a {@code Cullable}. The leaves and bark
+ * are patterns of the shape's coordinates (clumps that tilt the normal, streaks), lit as the terrain is (wrapped
+ * Lambert sun times {@code sunVisibility}, the sky's light, the aerial perspective, the display transform) plus the
+ * light through the leaves against the sun; crowns lean and swing in the
  * {@link org.openworld.engine.environment.Wind}. Plants shrink into the ground over the last fifth of
- * {@code vegetation.view-distance}; the fade and the switch are measured from the viewer's eye ({@code viewerPos()}) in
- * every pass, so the picture, the reflection and the shadows agree.
+ * {@code vegetation.view-distance}; the fades and the switches are measured from the viewer's eye
+ * ({@code viewerPos()}) in every pass, so the picture, the reflection and the shadows agree.
+ *
+ * <p><b>Impostors</b> ({@link org.openworld.engine.vegetation.ImpostorAtlas}): at start each kind's full shape is
+ * drawn orthographically from 9 × 9 directions over the upper hemisphere, laid out hemi-octahedrally (the hemisphere
+ * folded onto the octahedron |x| + |y| + |z| = 1, that onto a square: {@code d = (p.x, 1 − |p.x| − |p.z|, p.z)}
+ * normalised for the square's point p turned 45°), into 64-pixel frames of albedo and coverage, and of normal and
+ * depth. A plant's card stands square to the frame nearest the direction from the plant to the eye (turned and
+ * narrowed back into the plant's own space) and is lit per pixel as the meshes are, at the point its depth puts back.
+ * Cost: 486 draws at start; one 1152 × 1728 RGBA8 atlas and its depth buffer (15.2 MiB); two triangles per plant.
+ *
+ * <p><b>Past the plants' reach</b> ({@link org.openworld.engine.vegetation.FarForest}): the far ground's material
+ * ({@code shaders/common/forest.glsl}, read by the terrain's far program) mixes in the canopy's colour by the share of
+ * the ground the crowns hide, {@code 1 − exp(−ρ Σ p_k a_k)} (ρ plants per m² from the field, p_k each kind's share,
+ * a_k its crown from above, measured on the impostor's top view), over a 32 km window around the viewer made on the
+ * worker; it fades in over the last fifth of the view distance as the plants shrink away, measured as they are, so
+ * a forest keeps its place and colour to the horizon.
  *
  * <p><b>Cost</b> ({@code docs/vegetation.md}, "Cost"): on {@code valley.path} at 1280 × 720 on llvmpipe, 3 461 plants
- * within reach, 786 drawn in the picture; the vegetation's spans 18 to 40 ms of a 2.3 to 3 s frame on a heavily
- * loaded machine (1 to 1.5 %), frames with and without it within that machine's noise.
+ * within reach, 786 drawn in the picture; the vegetation's spans 29 ms of a 2 s frame on a heavily loaded machine
+ * (1.5 %), frames with and without it within that machine's noise (0.89 and 0.99); 16 MiB of textures at start.
  *
- * <p><b>Limits</b>: no impostors: past the view distance the forests end (they shrink away over its last fifth); the
+ * <p><b>Limits</b>: past the view distance the forests are a colour of the ground, flat (no height of their own); an
+ * impostor shows the nearest of its views, so a plant's picture turns in 11° steps as the eye goes round it; the
  * foot follows the finest height field, while the terrain draws coarser levels far away, where a plant may stand a
  * little into or above the drawn ground (the trunk reaches 4 % of the height below its foot to hide most of it); the
  * snow line is a height, so a snowy north face below it may still hold trees; a light box reaches towards the sun

@@ -26,6 +26,7 @@ import org.openworld.engine.core.ViewCamera;
 import org.openworld.engine.culling.CullingSystem;
 import org.openworld.engine.environment.Sun;
 import org.openworld.engine.environment.WaterLevel;
+import org.openworld.engine.gl.GlContext;
 import org.openworld.engine.gl.Image;
 import org.openworld.engine.shadow.ShadowSystem;
 import org.openworld.engine.sky.SkySystem;
@@ -59,7 +60,12 @@ class TreeRenderTest {
      */
     @BeforeAll
     static void writeWorld() throws IOException {
-        shore = ImportedWorld.write(dir.resolve("shore.raw"), SAMPLES, (x, z) -> z == SAMPLES - 1 && x == 0 ? 0f
+        shore = writeShore(dir);
+    }
+
+    /** Writes the shore world's map into {@code folder}. */
+    static Path writeShore(Path folder) throws IOException {
+        return ImportedWorld.write(folder.resolve("shore.raw"), SAMPLES, (x, z) -> z == SAMPLES - 1 && x == 0 ? 0f
                 : z == SAMPLES - 1 && x == SAMPLES - 1 ? 1f : x < SAMPLES / 2 ? 0.3f : 0.1f);
     }
 
@@ -80,11 +86,17 @@ class TreeRenderTest {
     }
 
     static Engine engine(VegetationSystem trees, CameraPose pose, List<String> more, EngineSystem... others) {
+        return engine(GL.context(), trees, pose, more, others);
+    }
+
+    /** The shore world on another test class's context. */
+    static Engine engine(GlContext gl, VegetationSystem trees, CameraPose pose, List<String> more,
+                         EngineSystem... others) {
         List<EngineSystem> systems = new ArrayList<>(List.of(others));
         systems.add(new CullingSystem());
         systems.add(new TerrainSystem());
         systems.add(trees);
-        Engine engine = GlTestSupport.engine(GL.context(), W, H, settings(more), systems.toArray(EngineSystem[]::new));
+        Engine engine = GlTestSupport.engine(gl, W, H, settings(more), systems.toArray(EngineSystem[]::new));
         engine.world().resource(Camera.class).setPose(pose);
         engine.world().setResource(new WaterLevel(0));
         return engine;
@@ -241,6 +253,8 @@ class TreeRenderTest {
     static final double MEAN_BOUND = 4.6;
 
     static Image draw(Engine engine, boolean on, double lodDistance) {
+        // no impostors, the farthest they may be: the first switch alone
+        engine.settings().set("vegetation.impostor-distance", "5000");
         engine.settings().set("vegetation.lod-distance", String.valueOf(lodDistance));
         return frame(engine, "vegetation", on);
     }
