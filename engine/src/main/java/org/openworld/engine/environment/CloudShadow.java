@@ -4,7 +4,6 @@ import java.nio.ByteBuffer;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.core.SharedResource;
 import org.openworld.engine.gl.GpuBuffer;
-import org.openworld.engine.gl.Labelled;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
 import org.openworld.engine.gl.Texture2D;
@@ -22,7 +21,7 @@ import org.openworld.engine.gl.Texture2D;
  * @param map   the transmittance (R16F), one texel per field sample, wrapping as the field does
  * @param block {@link #BLOCK_SIZE} bytes, laid out as {@code CloudShadowBlock} in {@code shaders/common/shadow.glsl}
  */
-public record CloudShadow(Texture2D map, GpuBuffer block) implements Labelled, SharedResource {
+public record CloudShadow(Texture2D map, GpuBuffer block) implements MapAndBlock, SharedResource {
 
     /** Bytes of the std140 block: two vec4s ({@link SharedBlock#CLOUD_SHADOW}). */
     public static final int BLOCK_SIZE = SharedBlock.CLOUD_SHADOW.bytes();
@@ -46,18 +45,5 @@ public record CloudShadow(Texture2D map, GpuBuffer block) implements Labelled, S
         } finally {
             MemoryUtil.memFree(data);
         }
-    }
-
-    /** Names the map {@code name.map} and the block {@code name.block}. */
-    @Override
-    public void label(String name) {
-        map.label(name + ".map");
-        block.label(name + ".block");
-    }
-
-    @Override
-    public void close() {
-        map.close();
-        block.close();
     }
 }

@@ -6,7 +6,6 @@ import org.joml.Vector3fc;
 import org.lwjgl.system.MemoryUtil;
 import org.openworld.engine.core.SharedResource;
 import org.openworld.engine.gl.GpuBuffer;
-import org.openworld.engine.gl.Labelled;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
 import org.openworld.engine.gl.Texture2D;
@@ -26,7 +25,7 @@ import org.openworld.engine.gl.Texture2D;
  * @param block {@link SharedBlock#FOREST_COVER}'s bytes, laid out as {@code ForestCoverBlock}
  * @param shown whether the forests are drawn now (their system switched on)
  */
-public record ForestCover(Texture2D map, GpuBuffer block, BooleanSupplier shown) implements Labelled,
+public record ForestCover(Texture2D map, GpuBuffer block, BooleanSupplier shown) implements MapAndBlock,
         SharedResource {
 
     /**
@@ -64,18 +63,5 @@ public record ForestCover(Texture2D map, GpuBuffer block, BooleanSupplier shown)
         } finally {
             MemoryUtil.memFree(data);
         }
-    }
-
-    /** Names the map {@code name.map} and the block {@code name.block}. */
-    @Override
-    public void label(String name) {
-        map.label(name + ".map");
-        block.label(name + ".block");
-    }
-
-    @Override
-    public void close() {
-        map.close();
-        block.close();
     }
 }

@@ -3,7 +3,6 @@ package org.openworld.engine.environment;
 import org.openworld.engine.core.SharedResource;
 import org.openworld.engine.gl.DepthTextureArray;
 import org.openworld.engine.gl.GpuBuffer;
-import org.openworld.engine.gl.Labelled;
 import org.openworld.engine.gl.SharedBlock;
 import org.openworld.engine.gl.SharedTexture;
 
@@ -16,7 +15,7 @@ import org.openworld.engine.gl.SharedTexture;
  * @param map   one depth layer per cascade
  * @param block {@link #BLOCK_SIZE} bytes, laid out as {@code ShadowBlock} in {@code shaders/common/shadow.glsl}
  */
-public record SunShadow(DepthTextureArray map, GpuBuffer block) implements Labelled, SharedResource {
+public record SunShadow(DepthTextureArray map, GpuBuffer block) implements MapAndBlock, SharedResource {
 
     /** Bytes of the std140 block ({@link SharedBlock#SHADOW}). */
     public static final int BLOCK_SIZE = SharedBlock.SHADOW.bytes();
@@ -26,18 +25,5 @@ public record SunShadow(DepthTextureArray map, GpuBuffer block) implements Label
     public void bindShared() {
         map.bind(SharedTexture.SHADOW_MAP.unit());
         block.bindBase(SharedBlock.SHADOW.binding());
-    }
-
-    /** Names the map {@code name.map} and the block {@code name.block}. */
-    @Override
-    public void label(String name) {
-        map.label(name + ".map");
-        block.label(name + ".block");
-    }
-
-    @Override
-    public void close() {
-        map.close();
-        block.close();
     }
 }
