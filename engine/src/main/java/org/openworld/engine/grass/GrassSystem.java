@@ -3,7 +3,6 @@ package org.openworld.engine.grass;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import org.joml.Vector3f;
 import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.Camera;
@@ -16,6 +15,7 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.Workers;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.WaterLevel;
@@ -46,11 +46,7 @@ public final class GrassSystem implements EngineSystem {
     /** Metres above the water where grass begins: the wet rim of a lake is mud and reeds. */
     static final double SHORE = 0.3;
 
-    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "grass-field");
-        t.setDaemon(true);
-        return t;
-    });
+    private final ExecutorService worker = Workers.single("grass-field");
     private GrassDraw draw;
     private GrassField field;
     /** Everything the field depends on but the viewer's place: a change makes it again at once. */

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import org.joml.Matrix4fc;
 import org.joml.Vector3d;
 import org.joml.Vector3f;
@@ -23,6 +22,7 @@ import org.openworld.engine.core.Layer;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.Workers;
 import org.openworld.engine.core.World;
 import org.openworld.engine.environment.CloudPanorama;
 import org.openworld.engine.environment.Exposure;
@@ -89,11 +89,7 @@ public final class SkySystem implements EngineSystem {
      */
     static final int JUMP_STEPS = 4;
 
-    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "sky-tables");
-        t.setDaemon(true);
-        return t;
-    });
+    private final ExecutorService worker = Workers.single("sky-tables");
     private CompletableFuture<SunTables> building;
     private SunTables tables;
     private SunTables uploaded;

@@ -4,7 +4,6 @@ import java.nio.ByteBuffer;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.function.Supplier;
 import org.joml.Vector3f;
 import org.lwjgl.system.MemoryUtil;
@@ -20,6 +19,7 @@ import org.openworld.engine.core.HeightField;
 import org.openworld.engine.core.Pass;
 import org.openworld.engine.core.RenderContext;
 import org.openworld.engine.core.SystemSpec;
+import org.openworld.engine.core.Workers;
 import org.openworld.engine.core.World;
 import org.openworld.engine.culling.Visibility;
 import org.openworld.engine.environment.ForestCover;
@@ -59,11 +59,7 @@ public final class VegetationSystem implements EngineSystem {
      */
     static final float GROUND_WIND = 0.4f;
 
-    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "vegetation-placement");
-        t.setDaemon(true);
-        return t;
-    });
+    private final ExecutorService worker = Workers.single("vegetation-placement");
     private TreeDraw draw;
     private int entity;
     private TreePlacement.Layout layout;

@@ -6,6 +6,7 @@ import java.util.concurrent.ThreadPoolExecutor;
 import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.NodeHeights;
+import org.openworld.engine.core.Workers;
 import org.openworld.engine.settings.SettingsException;
 import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.heights.StageTimes;
@@ -87,12 +88,8 @@ public final class StreamedWorld implements Residency, AutoCloseable {
         rootRadius = (int) Math.ceil(CopyLattice.COPY_DISTANCE / tree.extent());
         int size = clipSize(s, levels, heights.spacing(levels - 1), tree.extent(), rootRadius);
         // at low priority: the frame's own thread comes first
-        workers = (ThreadPoolExecutor) Executors.newFixedThreadPool(flightWorkers, r -> {
-            Thread t = new Thread(r, "terrain-blocks");
-            t.setDaemon(true);
-            t.setPriority(Thread.MIN_PRIORITY);
-            return t;
-        });
+        workers = (ThreadPoolExecutor) Executors.newFixedThreadPool(flightWorkers,
+                Workers.named("terrain-blocks", Thread.MIN_PRIORITY));
         clipmap = new HeightClipmap(heights, levels, size, BLOCK, StreamedSnow.border(s), workers);
         this.progress = progress;
         skyReach = new double[levels][levels];
