@@ -258,7 +258,7 @@ class ImpostorTest {
      * nearest frame alone, the card holds one picture for the 11° between two views and then swaps it whole, so the
      * step across a view's boundary carries the change of 22 steps at once; blended, the three nearest frames'
      * weights move linearly with the direction and spread that change over the 22. The largest step may be twice the
-     * median (the blend's rate of change differs from one triangle of the grid to the next by up to 2 ×), a
+     * median (the blend's rate of change differs from one triangle of the grid to the next by up to 2 ×), an
      * eleventh of the whole swap. Measured over the pixels of the middle third of the picture's width, where the tree
      * stands, that are plant in the later picture.
      */
