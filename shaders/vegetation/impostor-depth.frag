@@ -1,11 +1,12 @@
 #version 330 core
-// A plant's impostor in the sun's shadow pass: depth only, where its frame is covered.
+// A plant's impostor in the sun's shadow pass: depth only, where its three blended frames cover it.
+#include "vegetation/surface.glsl"
 #include "vegetation/atlas.glsl"
-
-in vec2 frameUv;
+#include "vegetation/octahedron.glsl"
+#include "vegetation/impostor-sample.glsl"
 
 void main() {
-    if (texture(uAtlas, atlasUv(frameUv, 0)).a < COVERED) {
+    if (!impostorTexel(bayer(ivec2(gl_FragCoord.xy))).covered) {
         discard;
     }
 }

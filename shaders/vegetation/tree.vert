@@ -9,6 +9,7 @@
 // from cameraPos(), which in the shadow pass is the sun's camera hundreds of metres away, most plants would be gone
 // from the shadow maps while still standing in the picture.
 #include "common/frame.glsl"
+#include "vegetation/sway.glsl"
 
 layout(location = 0) in vec3 msPos;      // the shape, units of the plant's height: per vertex
 layout(location = 1) in vec3 msNormal;
@@ -19,9 +20,7 @@ layout(location = 4) in vec2 turnTint;   // x: turn about the vertical (radians)
 uniform vec2 uFade; // x: distance from the viewer where plants start to shrink (m); y: where they are gone (m)
 uniform vec3 uLod;  // x, y: the cross-fade from the full shape to the simplified one (m); z: 0 full shape, 1 simplified
 uniform vec2 uImpostor; // the cross-fade from the simplified shape to the impostors (m); equal ends: a hard switch
-uniform vec2 uWind; // the wind among the plants, m/s, x east and z south
 uniform vec2 uPlaced; // where the feet's x and z are measured from: the layout's centre from the render origin (m)
-uniform vec3 uSway;   // xy: the swing's phase per metre east and south (rad/m); z: its phase at uPlaced (rad)
 
 out vec3 wsPos;
 out vec3 wsNormal;
@@ -33,12 +32,6 @@ flat out float vImpostor; // the impostor's share at this plant, 0..1
 
 const float WIDTH_LOW = 0.85;   // the narrowest plant's width, times the shape's
 const float WIDTH_SPREAD = 0.3; // ... to the widest, 1.15 times
-// Sway: a crown bends downwind by this share of its height per m/s, as the square of the height up the stem (a
-// cantilever's bend), capped at MAX_LEAN; it swings by a third of that about the mean at 0.3 Hz (a grown tree's
-// first mode) with a phase from its place, so neighbours do not swing in step.
-const float LEAN_PER_MS = 0.004;
-const float MAX_LEAN = 0.06;
-const float SWING_HZ = 0.3;
 
 void main() {
     vec3 foot = footHeight.xyz + vec3(uPlaced.x, 0.0, uPlaced.y);
@@ -55,10 +48,7 @@ void main() {
     vec3 p = vec3(turn * msPos.xz * width, msPos.y).xzy;
     // widening by w across squeezes the normal's horizontal part by 1 / w (the inverse transpose)
     vec3 n = vec3(turn * msNormal.xz / width, msNormal.y).xzy;
-    float speed = length(uWind);
-    float phase = dot(footHeight.xz, uSway.xy) + uSway.z;
-    float swing = 1.0 + 0.33 * sin(6.2831853 * SWING_HZ * frame.timeInfo.x + phase);
-    vec2 lean = speed > 0.0 ? uWind / speed * min(MAX_LEAN, LEAN_PER_MS * speed) * swing : vec2(0.0);
+    vec2 lean = plantLean(footHeight.xz); // vegetation/sway.glsl
     p.xz += lean * max(msPos.y, 0.0) * max(msPos.y, 0.0);
     wsPos = foot + p * footHeight.w * shrink;
     wsNormal = normalize(n);

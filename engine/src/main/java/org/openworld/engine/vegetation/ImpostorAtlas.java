@@ -32,9 +32,9 @@ import org.openworld.engine.gl.Texture2D;
  *
  * <p>Cost: {@code 3 · 2 · 81} = 486 draws of at most 268 triangles at start, and one RGBA8 colour and
  * one depth attachment of {@code 2 · 9 · 64 × 3 · 9 · 64} = 1152 × 1728 texels, 15.2 MiB together, for as long as
- * the system lives. Limits: one frame per plant, the nearest view (no blend of the three nearest: a plant's picture
- * turns in 11° steps as the eye goes round it, unseen at the hundreds of metres impostors are drawn from); the
- * patterns are made at each kind's mean height at the default settings; no sway.
+ * the system lives. A card blends the three frames nearest the eye's direction
+ * ({@code shaders/vegetation/impostor-sample.glsl}). Limits: the patterns are made at each kind's mean height at the
+ * default settings; the normals are the still plant's, so a swaying card's shading does not bend.
  */
 final class ImpostorAtlas implements Labelled {
 

@@ -11,7 +11,8 @@ import org.openworld.engine.gl.Uniform;
 /**
  * The impostors' GL side: the {@link ImpostorAtlas}, one card (two triangles) drawn instanced over the plants'
  * records, and its two programs ({@code shaders/vegetation/impostor.vert} with the lit {@code impostor.frag}, or the
- * depth-only {@code impostor-depth.frag} in the sun's shadow pass, whose cards face the sun). The caller picks the
+ * depth-only {@code impostor-depth.frag} in the sun's shadow pass, whose cards face the sun), which blend the three
+ * frames nearest the eye's direction and sway as the meshes do. The caller picks the
  * tiles and the distances ({@link TreeDraw}); this class sets the programs up for a pass and a kind.
  */
 final class ImpostorDraw {
@@ -27,11 +28,12 @@ final class ImpostorDraw {
     /** The uniforms both programs have. */
     private record Uniforms(ShaderProgram program, Uniform.Vec2 fade, Uniform.Vec2 band, Uniform.Vec2 placed,
                             Uniform.Vec2 sphere, Uniform.Int kind, Uniform.Int towardsSun, Uniform.Float frames,
-                            Uniform.Int sampler) {
+                            Uniform.Int sampler, Uniform.Vec2 wind, Uniform.Vec3 sway) {
 
         static Uniforms of(ShaderProgram p) {
             return new Uniforms(p, p.vec2("uFade"), p.vec2("uImpostor"), p.vec2("uPlaced"), p.vec2("uSphere"),
-                    p.int1("uKind"), p.int1("uTowardsSun"), p.float1("uFrames"), p.int1(ATLAS.name()));
+                    p.int1("uKind"), p.int1("uTowardsSun"), p.float1("uFrames"), p.int1(ATLAS.name()),
+                    p.vec2("uWind"), p.vec3("uSway"));
         }
     }
 
@@ -59,8 +61,10 @@ final class ImpostorDraw {
      * @param fade   metres from the viewer where plants start to shrink and where they are gone
      * @param band   metres from the viewer over which the impostors take over (equal: a hard switch)
      * @param placed the layout's centre from the render origin, metres
+     * @param wind   m/s of the wind among the plants, x (east) and z (south)
+     * @param sway   the swing's phase per metre east and south and at the layout's centre, radians (as the meshes')
      */
-    void begin(Pass pass, float[] fade, float[] band, float[] placed) {
+    void begin(Pass pass, float[] fade, float[] band, float[] placed, float[] wind, float[] sway) {
         Uniforms u = pass == Pass.SHADOW ? depth : lit;
         u.program().use();
         u.fade().set(fade[0], fade[1]);
@@ -68,6 +72,8 @@ final class ImpostorDraw {
         u.placed().set(placed[0], placed[1]);
         u.towardsSun().set(pass == Pass.SHADOW ? 1 : 0);
         u.frames().set(ImpostorAtlas.FRAMES);
+        u.wind().set(wind[0], wind[1]);
+        u.sway().set(sway[0], sway[1], sway[2]);
         u.sampler().set(ATLAS.unit());
         atlas.texture().bind(ATLAS.unit());
     }

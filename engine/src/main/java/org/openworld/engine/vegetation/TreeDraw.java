@@ -139,6 +139,8 @@ final class TreeDraw {
         Containment root = visibility == null ? Containment.INSIDE : visibility.root(0);
         float[] boxes = layout.bounds().boxes();
         int drawn = 0;
+        float[] sway = {(float) SWAY_WAVE_X, (float) SWAY_WAVE_Z, (float) RenderOrigin.reduce(
+                SWAY_WAVE_X * layout.centreX() + SWAY_WAVE_Z * layout.centreZ(), 2 * Math.PI)};
         // 2. the meshes: depth alone for the sun's maps, lit otherwise; every distance is measured from the VIEWER
         //    (viewerPos), so a plant leaves the shadow maps and the reflection where it leaves the picture
         if (pass != Pass.REFLECTION) {
@@ -147,8 +149,7 @@ final class TreeDraw {
             u.fade().set(fade[0], fade[1]);
             u.wind().set(groundWind[0], groundWind[1]);
             u.placed().set(placed[0], placed[1]);
-            u.sway().set((float) SWAY_WAVE_X, (float) SWAY_WAVE_Z, (float) RenderOrigin.reduce(
-                    SWAY_WAVE_X * layout.centreX() + SWAY_WAVE_Z * layout.centreZ(), 2 * Math.PI));
+            u.sway().set(sway[0], sway[1], sway[2]);
             u.impostor().set(b.impostorFrom(), b.impostorTo());
             glEnable(GL_CULL_FACE);
             for (TreeKind kind : TreeKind.values()) {
@@ -167,8 +168,8 @@ final class TreeDraw {
             }
             glDisable(GL_CULL_FACE);
         }
-        // 3. the impostors: cards, seen from either side
-        impostors.begin(pass, fade, new float[] {b.impostorFrom(), b.impostorTo()}, placed);
+        // 3. the impostors: cards, seen from either side, swaying as the meshes do
+        impostors.begin(pass, fade, new float[] {b.impostorFrom(), b.impostorTo()}, placed, groundWind, sway);
         for (TreeKind kind : TreeKind.values()) {
             if (pass != Pass.SHADOW || kind != TreeKind.BUSH) {
                 drawn += drawRuns(context, layout, kind.ordinal(), impostors.card(pass, kind), visibility, root,

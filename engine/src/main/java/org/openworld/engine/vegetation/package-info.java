@@ -44,9 +44,13 @@
  * drawn orthographically from 9 × 9 directions over the upper hemisphere, laid out hemi-octahedrally (the hemisphere
  * folded onto the octahedron |x| + |y| + |z| = 1, that onto a square: {@code d = (p.x, 1 − |p.x| − |p.z|, p.z)}
  * normalised for the square's point p turned 45°), into 64-pixel frames of albedo and coverage, and of normal and
- * depth. A plant's card stands square to the frame nearest the direction from the plant to the eye (turned and
- * narrowed back into the plant's own space) and is lit per pixel as the meshes are, at the point its depth puts back.
- * Cost: 486 draws at start; one 1152 × 1728 RGBA8 atlas and its depth buffer (15.2 MiB); two triangles per plant.
+ * depth. A plant's card stands square to the direction from the plant to the eye (turned and narrowed back into the
+ * plant's own space) and blends the three frames nearest it, weighted barycentrically on the grid's triangle holding
+ * the direction; each frame is read where the eye's ray meets its plane, {@code s = q − v (q·f) / (v·f)}, and puts
+ * the surface back at {@code s + f · depth}; the card is lit per pixel as the meshes are, at the blended point, and
+ * sways as they do ({@code shaders/vegetation/sway.glsl}: the corners swayed, the sway taken back out per pixel).
+ * Cost: 486 draws at start; one 1152 × 1728 RGBA8 atlas and its depth buffer (15.2 MiB); two triangles per plant and
+ * six texture reads per pixel.
  *
  * <p><b>Past the plants' reach</b> ({@link org.openworld.engine.vegetation.FarForest}): the far ground's material
  * ({@code shaders/common/forest.glsl}, read by the terrain's far program) mixes in the canopy's colour by the share of
@@ -60,8 +64,7 @@
  * (1.5 %), frames with and without it within that machine's noise (0.89 and 0.99); 16 MiB of textures at start.
  *
  * <p><b>Limits</b>: past the view distance the forests are a colour of the ground, flat (no height of their own); an
- * impostor shows the nearest of its views, so a plant's picture turns in 11° steps as the eye goes round it; the
- * foot follows the finest height field, while the terrain draws coarser levels far away, where a plant may stand a
+ * impostor's outline is dithered where its three views disagree (a speckled rim seen close up); the foot follows the finest height field, while the terrain draws coarser levels far away, where a plant may stand a
  * little into or above the drawn ground (the trunk reaches 4 % of the height below its foot to hide most of it); the
  * snow line is a height, so a snowy north face below it may still hold trees; a light box reaches towards the sun
  * only as far as the highest caster the culling system knows of, the tree tops included.
