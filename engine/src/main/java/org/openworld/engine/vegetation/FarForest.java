@@ -104,8 +104,11 @@ final class FarForest {
         return new Window(x, z, rgba);
     }
 
-    /** Cells per side of the lattice the shapes' outlines are measured on, over ±1 plant height: 8 mm at 1 m. */
-    static final int GRID = 256;
+    /**
+     * Cells per side of the lattice the shapes' outlines are measured on, over ±1 plant height: 1.6 % of the height,
+     * under a texel of the impostors' 64-texel frames, whose top view gives the same area within 1 %.
+     */
+    static final int GRID = 128;
 
     /**
      * A kind's outline seen from the side over its outline seen from above ({@link TreeShape}'s full shape at its
