@@ -121,11 +121,14 @@ void main() {
     #endif
   #endif
   #ifdef TERRAIN_FAR // the forests past the plants' reach: their canopy's colour, matte (common/forest.glsl)
-    vec4 forest = forestCover(wsPos);
-    m.albedo = mix(m.albedo, forest.rgb, forest.a);
-    m.gloss *= 1.0 - forest.a;
+    float forestShown;
+    vec3 forestCrowns;
+    m.albedo = forestGround(m.albedo, wsPos, s.wsNormal, forestCrowns, forestShown);
   #endif
     vec3 color = lightTerrain(s, m);
+  #ifdef TERRAIN_FAR
+    color = mix(color, forestCrowns, forestShown);
+  #endif
   #ifdef TERRAIN_LEVELS
     float lightness = dot(color, vec3(0.2126, 0.7152, 0.0722));
     color = levelColour(lodLevel) * (0.25 + 1.5 * lightness);

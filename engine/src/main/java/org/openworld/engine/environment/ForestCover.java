@@ -50,14 +50,16 @@ public record ForestCover(Texture2D map, GpuBuffer block, BooleanSupplier shown)
      * @param fade    metres from the viewer where the cover starts to show and where it is full: where the plants
      *                shrink away
      * @param colours each kind's canopy albedo, linear RGB, in the order of the map's channels
+     * @param sideOverTop each kind's outline seen from the side over its outline seen from above, in that order
      */
-    public void write(double extent, double reach, float[] fade, Vector3fc[] colours) {
+    public void write(double extent, double reach, float[] fade, Vector3fc[] colours, float[] sideOverTop) {
         ByteBuffer data = MemoryUtil.memCalloc(SharedBlock.FOREST_COVER.bytes());
         try {
             data.asFloatBuffer().put(new float[] {(float) (1 / extent), (float) extent, (float) reach, 1,
                 fade[0], fade[1], 0, 0});
             for (int k = 0; k < colours.length; k++) {
                 colours[k].get(32 + 16 * k, data);
+                data.putFloat(32 + 16 * k + 12, sideOverTop[k]);
             }
             block.update(data);
         } finally {

@@ -11,10 +11,10 @@ import org.openworld.engine.core.HeightField;
  * would stand, and nowhere the rules leave bare (water, snow, cliffs). No GL: made on the vegetation's worker.
  *
  * <p>With ρ plants per square metre ({@code vegetation.density · field}), a share {@code p_k} of them of kind k, each
- * hiding {@code a_k} square metres from above (its impostor's top view, {@link ImpostorAtlas#topArea}, times the
- * mean square of its height), the plants standing at random, the ground left in view is the chance that no crown
- * covers a point: {@code exp(−ρ Σ p_k a_k)} (a Poisson count of crowns over the point). The canopy's colour mixes
- * the kinds by {@code p_k a_k}.
+ * hiding {@code a_k} square metres from above (its impostor's top view, {@link ImpostorAtlas#topArea}, times the mean
+ * square of its height, shrunk by the tree line's {@link PlacementField#stature} squared), the plants standing at
+ * random, the ground left in view is the chance that no crown covers a point: {@code exp(−ρ Σ p_k a_k)} (a Poisson
+ * count of crowns over the point). The canopy's colour mixes the kinds by {@code p_k a_k}.
  *
  * <p>Cost: {@link #SIZE}² texels of {@link #SUB}² points, each about 16 height lookups (the rules' slope and the
  * moisture's probes), on a worker thread, once per {@link #RECENTRE} metres of travel. Limits: 128 m texels, so
@@ -84,8 +84,9 @@ final class FarForest {
                         }
                         double perSquareMetre = s.density() / 10_000 * field.density(sx, sz, h) / (SUB * SUB);
                         double[] shares = field.kindShares(sx, sz, h);
+                        double stature = field.stature(sx, sz, h);
                         for (int k = 0; k < TreePlacement.KINDS; k++) {
-                            kinds[k] += perSquareMetre * shares[k] * area[k];
+                            kinds[k] += perSquareMetre * shares[k] * area[k] * stature * stature;
                         }
                     }
                 }
@@ -101,6 +102,71 @@ final class FarForest {
             }
         }
         return new Window(x, z, rgba);
+    }
+
+    /**
+     * Cells per side of the lattice the shapes' outlines are measured on, over ±1 plant height: 1.6 % of the height,
+     * under a texel of the impostors' 64-texel frames, whose top view gives the same area within 1 %.
+     */
+    static final int GRID = 128;
+
+    /**
+     * A kind's outline seen from the side over its outline seen from above ({@link TreeShape}'s full shape at its
+     * mean width, the side the mean of the views along x and along z). Seen at zenith angle θ a plant hides
+     * {@code top · cos θ + side · sin θ} (exact for an upright cylinder), so it covers {@code top · (1 + ratio ·
+     * tan θ)} of the ground behind it: a tall conifer hides far more of a forest's floor seen at a grazing angle than
+     * its crown from above says ({@code shaders/common/forest.glsl}).
+     */
+    static double sideOverTop(TreeKind kind) {
+        TreeShape.Geometry shape = TreeShape.of(kind, false);
+        return (outline(shape, 0) + outline(shape, 2)) / 2 / outline(shape, 1);
+    }
+
+    /**
+     * The area of a shape's outline seen along the axis (0 x, 1 y, 2 z), units of its height squared: its triangles
+     * rasterised on a {@link #GRID}² lattice over ±1 heights, a cell counted when its centre lies in one.
+     */
+    static double outline(TreeShape.Geometry shape, int axis) {
+        int u = axis == 0 ? 2 : 0;
+        int w = axis == 1 ? 2 : 1;
+        float[] v = shape.vertices();
+        int[] t = shape.triangles();
+        double cell = 2.0 / GRID;
+        boolean[] covered = new boolean[GRID * GRID];
+        for (int i = 0; i < t.length; i += 3) {
+            double[] pu = new double[3];
+            double[] pw = new double[3];
+            for (int c = 0; c < 3; c++) {
+                pu[c] = v[t[i + c] * TreeShape.FLOATS + u];
+                pw[c] = v[t[i + c] * TreeShape.FLOATS + w];
+            }
+            int u0 = Math.max(0, (int) Math.floor((Math.min(pu[0], Math.min(pu[1], pu[2])) + 1) / cell));
+            int u1 = Math.min(GRID - 1, (int) Math.floor((Math.max(pu[0], Math.max(pu[1], pu[2])) + 1) / cell));
+            int w0 = Math.max(0, (int) Math.floor((Math.min(pw[0], Math.min(pw[1], pw[2])) + 1) / cell));
+            int w1 = Math.min(GRID - 1, (int) Math.floor((Math.max(pw[0], Math.max(pw[1], pw[2])) + 1) / cell));
+            double area = (pu[1] - pu[0]) * (pw[2] - pw[0]) - (pu[2] - pu[0]) * (pw[1] - pw[0]);
+            if (area == 0) {
+                continue;
+            }
+            for (int b = w0; b <= w1; b++) {
+                for (int a = u0; a <= u1; a++) {
+                    double x = (a + 0.5) * cell - 1;
+                    double y = (b + 0.5) * cell - 1;
+                    // the three edge functions share the triangle's sign inside it, whichever way it winds
+                    double e0 = ((pu[1] - pu[0]) * (y - pw[0]) - (pw[1] - pw[0]) * (x - pu[0])) * area;
+                    double e1 = ((pu[2] - pu[1]) * (y - pw[1]) - (pw[2] - pw[1]) * (x - pu[1])) * area;
+                    double e2 = ((pu[0] - pu[2]) * (y - pw[2]) - (pw[0] - pw[2]) * (x - pu[2])) * area;
+                    if (e0 >= 0 && e1 >= 0 && e2 >= 0) {
+                        covered[b * GRID + a] = true;
+                    }
+                }
+            }
+        }
+        int count = 0;
+        for (boolean c : covered) {
+            count += c ? 1 : 0;
+        }
+        return count * cell * cell;
     }
 
     /** The point congruent to {@code at} modulo the extent nearest {@code around}. */

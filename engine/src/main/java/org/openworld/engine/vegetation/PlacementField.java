@@ -9,9 +9,10 @@ import org.openworld.engine.environment.Moisture;
  *
  * <p><b>The density</b>, 0 to 1 (a share of {@code vegetation.density}), is a product of four factors:
  * <pre>
- *   density = patches(x, z) · min(1, 0.5 + moisture) · treeline(h)
- *   patches = FLOOR + (1 − FLOOR) · smoothstep(EDGE_LOW, EDGE_HIGH, 0.65 · n(x / 600 m) + 0.35 · n(x / 150 m))
- *   treeline = 1 − smoothstep(snow − band, snow, h),  band = TREELINE_SHARE · (snow − shore), or TREELINE_BAND
+ *   density  = patches(x, z) · min(1, 0.5 + moisture) · treeline(x, z, h)
+ *   patches  = FLOOR + (1 − FLOOR) · smoothstep(EDGE_LOW, EDGE_HIGH, 0.65 · n(x / 600 m) + 0.35 · n(x / 150 m))
+ *   treeline = (1 − snow(h)) · (1 − smoothstep(line − band · (1 + ASPECT · shade), line, h))
+ *   band     = TREELINE_SHARE · (line − shore), or TREELINE_BAND without water
  * </pre>
  * {@code n} is value noise from the seed (a smooth cubic between hashed lattice values): the sum wanders over a few
  * hundred metres, and the narrow smoothstep turns it into forests with edges, clearings and groves rather than a
@@ -19,13 +20,25 @@ import org.openworld.engine.environment.Moisture;
  *
  * Neutral ground (moisture 0.5) grows the full forest; a dry ridge half of it.
  *
+ * <p><b>The tree line</b> ({@link TreePlacement.Limits#highest}) lies half-way up the snow line's fringe, where snow
+ * is as likely as not; {@code snow(h)} is that chance ({@link org.openworld.engine.environment.SnowLine#chanceAt}),
+ * so the forest already thins where snow lies in patches, and over the band below the line it thins to nothing.
+ * {@code shade}, −1 to 1, is how steeply the slope faces away from the sun (north), as a share of a 30° slope: a
+ * shaded slope's forest thins over a band half again as deep, a sun-facing slope's keeps its trees up to half the
+ * band below the line, as real tree lines stand higher on the sunny side of a valley. Towards the line the trees
+ * also shrink ({@link #stature}, down to {@link #MIN_STATURE} of their height) and give way to bushes
+ * ({@link #KRUMMHOLZ}).
+ *
  * <p><b>Moisture</b> is the world's {@link Moisture} where one is published (the seam a flow field feeds). Without
  * one, the stand-in is the land's shape: wet near the water (falling off over {@link #SHORE_RANGE} of height), wet in
  * hollows (the ground {@link #PROBE} m around is higher: the Laplacian, water's way of gathering), dry on slopes that
  * face the sun (south, +z, here in the northern hemisphere) by their steepness.
  *
- * <p><b>The kind</b>: bushes where the forest thins (its edges and the open), broadleaf trees low and wet, conifers
- * high and dry, each chosen with those odds from a uniform number the caller draws.
+ * <p><b>The kind</b>: bushes where the forest thins (its edges, the open and the tree line); of the trees, broadleaf
+ * below {@link #ZONE_LOW} of the way from the shore to the tree line, conifers above {@link #ZONE_HIGH}, mixed
+ * between, the zones moved down on dry ground and up on wet ({@link #ZONE_MOISTURE}): beech and oak in the valleys,
+ * spruce and fir on the upper slopes, as in the Alps. Each kind is chosen with those odds from a uniform number the
+ * caller draws.
  *
  * <p>The vegetation publishes its field as a world resource, so what grows under the trees (the grass) thickens and
  * thins with the same land: {@link #ground} is the field without the forest's patches and the tree line.
@@ -41,12 +54,27 @@ public final class PlacementField {
     /** The open's share of the forest's density: a lone tree or bush here and there. */
     static final double FLOOR = 0.06;
     /**
-     * The tree line: forests thin to nothing over the top quarter of the heights between the shore and the snow
-     * line's start (a world's relief sets where its trees stop, as the climate does on Earth), or over 250 m below
-     * the snow where there is no water to measure from.
+     * The tree line's band: forests thin to nothing over the top quarter of the heights between the shore and the
+     * tree line (a world's relief sets where its trees stop, as the climate does on Earth), or over 250 m below the
+     * line where there is no water to measure from.
      */
     static final double TREELINE_SHARE = 0.25;
     static final double TREELINE_BAND = 250;
+    /** How much the slope's aspect deepens (shade) or narrows (sun) the tree line's band: half of it either way. */
+    static final double ASPECT = 0.5;
+    /** Gradient (rise over run) of a slope that counts as fully sun-facing or shaded: tan 30°, the default limit. */
+    static final double ASPECT_FULL = 0.577;
+    /** The height of a tree at the tree line, as a share of its height lower down: stunted, wind-bent trees. */
+    static final double MIN_STATURE = 0.5;
+    /** The share of the trees that bushes take at the tree line (krummholz, dwarf pine), growing into it. */
+    static final double KRUMMHOLZ = 0.6;
+    /**
+     * The zones, as shares of the way from the shore to the tree line: broadleaf trees alone below ZONE_LOW,
+     * conifers alone above ZONE_HIGH; ZONE_MOISTURE moves them by the moisture's distance from neutral (0.5).
+     */
+    static final double ZONE_LOW = 0.3;
+    static final double ZONE_HIGH = 0.6;
+    static final double ZONE_MOISTURE = 0.3;
     /** Metres of height above the water over which the shore's wetness fades. */
     static final double SHORE_RANGE = 40;
     /** Metres to the four points around a foot whose mean height tells a hollow from a ridge. */
@@ -67,7 +95,12 @@ public final class PlacementField {
 
     /** The density at (x, z) on ground of height {@code h}, 0 to 1. */
     double density(double x, double z, double h) {
-        return patches(x, z) * ground(x, z, h) * treeline(h);
+        return patches(x, z) * ground(x, z, h) * treeline(x, z, h);
+    }
+
+    /** A plant's height at (x, z) as a share of its height below the tree line: {@link #MIN_STATURE} to 1. */
+    double stature(double x, double z, double h) {
+        return MIN_STATURE + (1 - MIN_STATURE) * treeline(x, z, h);
     }
 
     /**
@@ -85,13 +118,25 @@ public final class PlacementField {
         return FLOOR + (1 - FLOOR) * smoothstep(EDGE_LOW, EDGE_HIGH, n);
     }
 
-    double treeline(double h) {
-        if (Double.isInfinite(limits.highest())) {
+    /** The tree line's factor: 1 well below it, 0 at it and above; see the class's formula. */
+    double treeline(double x, double z, double h) {
+        double line = limits.highest();
+        if (Double.isInfinite(line)) {
             return 1;
         }
         double band = Double.isInfinite(limits.lowest()) ? TREELINE_BAND
-                : TREELINE_SHARE * Math.max(0, limits.highest() - limits.lowest());
-        return 1 - smoothstep(limits.highest() - band, limits.highest(), h);
+                : TREELINE_SHARE * Math.max(0, line - limits.lowest());
+        double snowless = 1 - limits.snowChance(h);
+        if (h <= line - (1 + ASPECT) * band) {
+            return snowless; // below the deepest band: no need for the slope's aspect
+        }
+        double shade = Math.max(-1, Math.min(1, -sunward(x, z) / ASPECT_FULL));
+        return snowless * (1 - smoothstep(line - band * (1 + ASPECT * shade), line, h));
+    }
+
+    /** The slope's fall towards the sun (south, +z) over {@link #PROBE} either side: positive facing the sun. */
+    private double sunward(double x, double z) {
+        return (heights.heightAt(x, z - PROBE) - heights.heightAt(x, z + PROBE)) / (2 * PROBE);
     }
 
     /** The world's moisture, or the stand-in: shore, hollows, sunward slopes. */
@@ -103,7 +148,8 @@ public final class PlacementField {
         double n = heights.heightAt(x, z - PROBE);
         double s = heights.heightAt(x, z + PROBE);
         double hollow = (n + s + heights.heightAt(x - PROBE, z) + heights.heightAt(x + PROBE, z)) / 4 - h;
-        // the slope's fall towards the south (+z) over the run: positive on a sun-facing slope
+        // the slope's fall towards the south (+z) over the run: positive on a sun-facing slope (sunward's, from the
+        // two probes already read)
         double sunward = Math.max(0, (n - s) / (2 * PROBE));
         return Math.min(1, Math.max(0, 0.5 + 0.5 * shore + 4 * hollow / PROBE - 1.5 * sunward));
     }
@@ -120,14 +166,18 @@ public final class PlacementField {
 
     /**
      * Each kind's share of the plants at a place, in {@link TreeKind} order, summing to 1: bushes {@code 0.15 + 0.7 ·
-     * open}, and of the rest broadleaf trees the moisture times how low the place lies between the shore and the snow.
+     * open}, growing by {@link #KRUMMHOLZ} of the rest towards the tree line; of the trees, broadleaf by the zones
+     * {@code 1 − smoothstep(ZONE_LOW, ZONE_HIGH, up + ZONE_MOISTURE · (0.5 − moisture))}, {@code up} the share of the
+     * way from the shore to the tree line (a half where either is missing).
      */
     double[] kindShares(double x, double z, double h) {
         double open = 1 - (patches(x, z) - FLOOR) / (1 - FLOOR);
         double bush = 0.15 + 0.7 * open;
-        double range = Double.isInfinite(limits.highest()) || Double.isInfinite(limits.lowest()) ? 0.5
+        bush += (1 - bush) * KRUMMHOLZ * (1 - treeline(x, z, h));
+        double up = Double.isInfinite(limits.highest()) || Double.isInfinite(limits.lowest()) ? 0.5
                 : (h - limits.lowest()) / Math.max(1, limits.highest() - limits.lowest());
-        double broadleaf = (1 - bush) * moisture(x, z, h) * (1 - Math.min(1, Math.max(0, range)));
+        double broadleaf = (1 - bush)
+                * (1 - smoothstep(ZONE_LOW, ZONE_HIGH, up + ZONE_MOISTURE * (0.5 - moisture(x, z, h))));
         return new double[] {1 - bush - broadleaf, broadleaf, bush};
     }
 

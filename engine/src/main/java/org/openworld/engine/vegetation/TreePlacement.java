@@ -6,6 +6,7 @@ import java.util.List;
 import org.openworld.engine.core.BoundsTree;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.environment.Moisture;
+import org.openworld.engine.environment.SnowLine;
 
 /**
  * Where the plants stand, on the CPU and without GL: a jittered grid over the whole plane, each cell's plant decided
@@ -20,8 +21,9 @@ import org.openworld.engine.environment.Moisture;
  * cheap stand-in for Poisson-disc sampling; the field's forests and clearings are its clustering).
  *
  * <p><b>The rules</b> ({@link Limits}), each read from the height field at the foot: the ground lies above the water
- * plus a shore margin, below the snow line's start, and no steeper than the largest gradient (central differences
- * {@link #PROBE} metres either side).
+ * plus a shore margin, below the tree line (half-way up the snow line's fringe), and no steeper than the largest
+ * gradient (central differences {@link #PROBE} metres either side). Towards the tree line a plant is also shorter:
+ * its height is the settings' times the field's {@link PlacementField#stature}.
  *
  * <p><b>The records</b>, {@link #FLOATS} floats per plant, grouped by kind (all conifers, then broadleaf trees, then
  * bushes), each kind tile by tile: the foot (x, y, z, metres), the height (metres), a turn about the vertical
@@ -50,13 +52,30 @@ final class TreePlacement {
      * Where plants may stand.
      *
      * @param lowest      metres: the lowest foot (the water plus the shore margin; −∞ without water)
-     * @param highest     metres: the highest foot (the snow line's start; +∞ without snow)
+     * @param snow        where snow lies (the terrain's {@link SnowLine}); null without snow
      * @param maxGradient the steepest ground, rise over run
      */
-    record Limits(double lowest, double highest, double maxGradient) {
+    record Limits(double lowest, SnowLine snow, double maxGradient) {
+
+        /**
+         * The tree line's share of the way up the snow line's fringe: trees stop where snow is as likely as not
+         * ({@link SnowLine#chanceAt} = ½), below the closed snow fields, which the snow map keeps only where snow is
+         * near certain; on the default tile 0.475 of the relief, with snow from 0.35 and certain at 0.60.
+         */
+        static final double TREELINE_CHANCE = 0.5;
+
+        /** Metres: the highest foot, the tree line ({@link #TREELINE_CHANCE} up the snow's fringe; +∞ without snow). */
+        double highest() {
+            return snow == null ? Double.POSITIVE_INFINITY : snow.start() + TREELINE_CHANCE * (snow.full() - snow.start());
+        }
+
+        /** How likely snow lies at {@code height} metres, 0 to 1: the snow line's chance, 0 without snow. */
+        double snowChance(double height) {
+            return snow == null ? 0 : snow.chanceAt(height);
+        }
 
         boolean allow(double height, double gradient) {
-            return height >= lowest && height <= highest && gradient <= maxGradient;
+            return height >= lowest && height <= highest() && gradient <= maxGradient;
         }
     }
 
@@ -161,7 +180,8 @@ final class TreePlacement {
                     continue;
                 }
                 TreeKind kind = field.kind(px, pz, ground, unit(h, 6));
-                double height = kind.scale * (s.minHeight() + (s.maxHeight() - s.minHeight()) * unit(h, 3));
+                double height = kind.scale * field.stature(px, pz, ground)
+                        * (s.minHeight() + (s.maxHeight() - s.minHeight()) * unit(h, 3));
                 int k = kind.ordinal();
                 if ((counts[k] + 1) * FLOATS > records[k].length) {
                     records[k] = Arrays.copyOf(records[k], 2 * records[k].length);

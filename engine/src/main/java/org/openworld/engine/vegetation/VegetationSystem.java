@@ -76,6 +76,8 @@ public final class VegetationSystem implements EngineSystem {
     private double coveredZ;
     /** Each kind's crown from above, units of its height squared, from the impostors' bake. */
     private final double[] topArea = new double[TreePlacement.KINDS];
+    /** Each kind's outline from the side over that from above ({@link FarForest#sideOverTop}). */
+    private final float[] sideOverTop = new float[TreePlacement.KINDS];
 
     @Override
     public SystemSpec spec() {
@@ -102,6 +104,7 @@ public final class VegetationSystem implements EngineSystem {
         context.world().setResource(cover);
         for (TreeKind kind : TreeKind.values()) {
             topArea[kind.ordinal()] = draw.atlas().topArea(kind);
+            sideOverTop[kind.ordinal()] = (float) FarForest.sideOverTop(kind);
         }
     }
 
@@ -163,7 +166,7 @@ public final class VegetationSystem implements EngineSystem {
             colours[kind.ordinal()] = draw.atlas().meanAlbedo(kind);
         }
         cover.write(FarForest.EXTENT, FarForest.REACH, new float[] {(float) (TreeDraw.FADE_START * s.viewDistance()),
-            (float) s.viewDistance()}, colours);
+            (float) s.viewDistance()}, colours, sideOverTop);
     }
 
     /** A placement and the milliseconds of CPU it took (on whichever thread made it). */
@@ -201,12 +204,11 @@ public final class VegetationSystem implements EngineSystem {
         }
     }
 
-    /** The rules from the world: above the water (if any) by the shore margin, below the snow (if any). */
+    /** The rules from the world: above the water (if any) by the shore margin, below the tree line the snow sets. */
     static TreePlacement.Limits limits(World world, VegetationSettings s) {
         double lowest = world.findResource(WaterLevel.class).map(w -> w.height() + s.shoreMargin())
                 .orElse(Double.NEGATIVE_INFINITY);
-        double highest = world.findResource(SnowLine.class).map(SnowLine::start).orElse(Double.POSITIVE_INFINITY);
-        return new TreePlacement.Limits(lowest, highest, s.maxGradient());
+        return new TreePlacement.Limits(lowest, world.findResource(SnowLine.class).orElse(null), s.maxGradient());
     }
 
     @Override

@@ -5,17 +5,19 @@
  * that draws in more than one pass: {@code docs/adding-a-system.md}, "A second system: trees in every pass"; the
  * techniques with pictures: {@code docs/vegetation.md}.
  *
- * <p><b>Placement</b> ({@link org.openworld.engine.vegetation.TreePlacement},
- * {@link org.openworld.engine.vegetation.PlacementField}): a jittered grid over the plane in 200 m tiles, each cell's
- * plant (kept with probability {@code density · cell² · field(x, z)}, at a random point of the cell) drawn from a hash
- * of {@code engine.seed} and the cell, so the same ground always grows the same plants whichever tile is placed first.
- * The field is value noise made into forests with edges and clearings, times the moisture (the world's
- * {@link org.openworld.engine.environment.Moisture} where one is published; a stand-in from the shore, hollows and
- * sun-facing slopes otherwise), times a tree line 250 m below the snow. A plant stands where the world's
- * {@link org.openworld.engine.core.HeightField} is above the {@link org.openworld.engine.environment.WaterLevel} plus
- * {@code vegetation.shore-margin}, below the {@link org.openworld.engine.environment.SnowLine}'s start, and no steeper
- * than {@code vegetation.max-slope}. The kind (conifer, broadleaf, bush) follows the forest's edge, the height and
- * the moisture. The tiles within 1.25 view distances of the viewer are placed again, on a worker thread, when the
+ * <p><b>Placement</b> ({@link org.openworld.engine.vegetation.TreePlacement}, {@link
+ * org.openworld.engine.vegetation.PlacementField}): a jittered grid over the plane in 200 m tiles, each cell's plant
+ * (kept with probability {@code density · cell² · field(x, z)}, at a random point of the cell) drawn from a hash of
+ * {@code engine.seed} and the cell, so the same ground always grows the same plants whichever tile is placed first. The
+ * field is value noise made into forests with edges and clearings, times the moisture (the world's {@link
+ * org.openworld.engine.environment.Moisture} where one is published; a stand-in from the shore, hollows and sun-facing
+ * slopes otherwise), times the chance of no snow, times a tree line that thins the forest over a band below it, deeper
+ * on slopes turned from the sun. A plant stands where the world's {@link org.openworld.engine.core.HeightField} is
+ * above the {@link org.openworld.engine.environment.WaterLevel} plus {@code vegetation.shore-margin}, below the tree
+ * line (half-way up the {@link org.openworld.engine.environment.SnowLine}'s fringe, where snow is as likely as not),
+ * and no steeper than {@code vegetation.max-slope}; towards the line trees shrink to half their height. The kind
+ * follows the forest's edge, the height and the moisture: bushes at the edges and the tree line, broadleaf trees low,
+ * conifers high. The tiles within 1.25 view distances of the viewer are placed again, on a worker thread, when the
  * viewer has moved a quarter of the view distance; only the tiles the move brings in are new work.
  *
  * <p><b>Far from the origin</b>: no foot is kept as a float of the world's x and z (1 m apart 10 000 km out). A tile
@@ -57,16 +59,22 @@
  * the ground the crowns hide, {@code 1 − exp(−ρ Σ p_k a_k)} (ρ plants per m² from the field, p_k each kind's share,
  * a_k its crown from above, measured on the impostor's top view), over a 32 km window around the viewer made on the
  * worker; it fades in over the last fifth of the view distance as the plants shrink away, measured as they are, so
- * a forest keeps its place and colour to the horizon.
+ * a forest keeps its place and colour to the horizon. The colour is a geometric-optical canopy (after Li and
+ * Strahler 1992) lit as the plants are: crowns seen {@code 1 − exp(−τ F(θ_view))}, {@code F = 1 + side/top · tan θ}
+ * (the kinds' outlines, {@link org.openworld.engine.vegetation.FarForest#sideOverTop}), the crowns' sun by the
+ * wrapped Lambert sphere's phase law and the sun's way through their neighbours, the gaps' ground in their shadows
+ * but at the hot spot; about 60 arithmetic operations per far-ground pixel.
  *
  * <p><b>Cost</b> ({@code docs/vegetation.md}, "Cost"): on {@code valley.path} at 1280 × 720 on llvmpipe, 3 461 plants
  * within reach, 786 drawn in the picture; the vegetation's spans 29 ms of a 2 s frame on a heavily loaded machine
  * (1.5 %), frames with and without it within that machine's noise (0.89 and 0.99); 16 MiB of textures at start.
  *
- * <p><b>Limits</b>: past the view distance the forests are a colour of the ground, flat (no height of their own); an
- * impostor's outline is dithered where its three views disagree (a speckled rim seen close up); the foot follows the finest height field, while the terrain draws coarser levels far away, where a plant may stand a
- * little into or above the drawn ground (the trunk reaches 4 % of the height below its foot to hide most of it); the
- * snow line is a height, so a snowy north face below it may still hold trees; a light box reaches towards the sun
- * only as far as the highest caster the culling system knows of, the tree tops included.
+ * <p><b>Limits</b>: past the view distance the forests are a colour of the ground, flat (no height of their own), a
+ * little darker than the drawn forest seen at grazing angles; an impostor's outline is dithered where its three views
+ * disagree (a speckled rim seen close up); the foot follows the finest height field, while the terrain draws coarser
+ * levels far away, where a plant may stand a little into or above the drawn ground (the trunk reaches 4 % of the
+ * height below its foot to hide most of it); the tree line follows the snow line's height, so a snowy north face below
+ * it may still hold trees; a light box reaches towards the sun only as far as the highest caster the culling system
+ * knows of, the tree tops included.
  */
 package org.openworld.engine.vegetation;

@@ -12,7 +12,7 @@ class FarForestTest {
     /** A gentle slope, 2 m per 100 m eastwards: the water (at −5 m, plus the shore margin) west of x = −350 m. */
     static final HeightField RAMP = TreePlacementTest.RAMP;
     static final TreePlacement.Limits SHORE = new TreePlacement.Limits(-5 + VegetationSettings.DEFAULTS.shoreMargin(),
-            Double.POSITIVE_INFINITY, VegetationSettings.DEFAULTS.maxGradient());
+            null, VegetationSettings.DEFAULTS.maxGradient());
     /** Crowns from above, units of the height squared: any values do, both sides of each check use the same. */
     static final double[] TOP_AREA = {0.2, 0.4, 0.9};
     static final int SEED = 5;

@@ -12,6 +12,7 @@ import java.util.Random;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.openworld.engine.core.HeightField;
+import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.origin.RenderOrigin;
 
 /**
@@ -20,8 +21,8 @@ import org.openworld.engine.origin.RenderOrigin;
  */
 class TreePlacementTest {
 
-    static final TreePlacement.Limits ANYWHERE = new TreePlacement.Limits(Double.NEGATIVE_INFINITY,
-            Double.POSITIVE_INFINITY, VegetationSettings.DEFAULTS.maxGradient());
+    static final TreePlacement.Limits ANYWHERE = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, null,
+            VegetationSettings.DEFAULTS.maxGradient());
     /** A gentle slope rising 2 m per 100 m eastwards, 1.1°: from −20 m to 20 m across a 2 km disc. */
     static final HeightField RAMP = (x, z) -> 0.02 * x;
 
@@ -169,17 +170,116 @@ class TreePlacementTest {
     }
 
     @Test
-    void noPlantStandsBelowTheWaterPlusTheShoreMarginOrAboveTheSnowLine() {
-        // a 22° slope, from −400 m to 400 m across the disc; water at −5 m, the margin 2 m, the snow from 300 m
+    void noPlantStandsBelowTheWaterPlusTheShoreMarginOrAboveTheTreeLine() {
+        // a 22° slope, from −400 m to 400 m across the disc; water at −5 m, the margin 2 m, snow from 200 m, certain
+        // at 400 m: the tree line half-way, at 300 m, where snow is as likely as not
         HeightField hill = (x, z) -> 0.4 * x;
-        TreePlacement.Limits limits = new TreePlacement.Limits(-5 + 2, 300, VegetationSettings.DEFAULTS.maxGradient());
+        SnowLine snow = new SnowLine(200, 400);
+        TreePlacement.Limits limits = new TreePlacement.Limits(-5 + 2, snow, VegetationSettings.DEFAULTS.maxGradient());
+        assertEquals(300, limits.highest(), 1e-9);
         TreePlacement.Layout kept = place(hill, 0, 0, 1000, limits, 1);
         assertTrue(kept.count() > 100, "plants between the water and the snow: " + kept.count());
+        int inSnowFringe = 0;
         for (int i = 0; i < kept.count(); i++) {
             double y = at(kept, i, 1);
             assertEquals(hill.heightAt(at(kept, i, 0), at(kept, i, 2)), y, 1e-3, "the foot is on the ground");
             assertTrue(y >= -3 && y <= 300, "a foot at " + y + " m, outside −3 .. 300 m");
+            assertTrue(snow.chanceAt(y) <= TreePlacement.Limits.TREELINE_CHANCE, "a foot where snow is likely");
+            inSnowFringe += y > snow.start() ? 1 : 0;
         }
+        // trees climb into the snow's fringe (the old rule stopped them at its start), thinning
+        assertTrue(inSnowFringe > 0, "no plant above the snow's start");
+    }
+
+    @Test
+    void theTreeLineStandsHigherOnSlopesFacingTheSun() {
+        // two 29° slopes (gradient 0.55, within the 30° limit), one facing south (the sun, falling towards +z), one
+        // north; the same snow on both
+        TreePlacement.Limits limits = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, new SnowLine(200, 400),
+                VegetationSettings.DEFAULTS.maxGradient());
+        double g = 0.55;
+        HeightField sunny = (x, z) -> -g * z;
+        HeightField shady = (x, z) -> g * z;
+        PlacementField sun = new PlacementField(sunny, null, limits, 3);
+        PlacementField shade = new PlacementField(shady, null, limits, 3);
+        double line = limits.highest();
+        double band = PlacementField.TREELINE_BAND;
+        for (double h = line - band; h < line; h += 10) {
+            // the same height on either slope: z = ∓h / g
+            assertTrue(sun.treeline(0, -h / g, h) > shade.treeline(0, h / g, h), "at " + h + " m");
+        }
+        // half the band below the line a sunny slope keeps nearly its full forest (less the snow's patches), where a
+        // shaded one has lost most of it: the bands start (1 ∓ ASPECT · 0.95) · 250 m below the line
+        double half = line - band / 2;
+        double snowless = 1 - limits.snowChance(half);
+        assertTrue(sun.treeline(0, -half / g, half) / snowless > 0.9, "sunny: " + sun.treeline(0, -half / g, half));
+        assertTrue(shade.treeline(0, half / g, half) / snowless < 0.4, "shaded: " + shade.treeline(0, half / g, half));
+        // and the plants themselves: the top band's plants against those of a band as deep below both tree lines'
+        // bands (the sunny slope is drier, so it grows fewer everywhere: the ratio compares like with like)
+        double[] ratio = new double[2];
+        for (int side = 0; side < 2; side++) {
+            TreePlacement.Layout l = place(side == 0 ? sunny : shady, 0, 0, 1500, limits, 3);
+            int top = 0;
+            int below = 0;
+            for (int i = 0; i < l.count(); i++) {
+                double y = at(l, i, 1);
+                top += y > line - band ? 1 : 0;
+                below += y > line - 2.5 * band && y <= line - 1.5 * band ? 1 : 0;
+            }
+            assertTrue(below > 300, "plants below the tree line's band: " + below);
+            ratio[side] = top / (double) below;
+        }
+        assertTrue(ratio[0] > 1.3 * ratio[1], "the top band's plants over those below: sunny " + ratio[0]
+                + ", shaded " + ratio[1]);
+    }
+
+    @Test
+    void broadleafTreesGrowLowConifersHighBushesAndShorterTreesAtTheTreeLine() {
+        // a 6° ramp from −200 m to 200 m across the disc: the water's edge at −150 m, snow from 100 m, certain at
+        // 300 m, so the tree line at 200 m; the plants sorted by the share of the way from the shore to the line
+        HeightField ramp = (x, z) -> 0.1 * x;
+        TreePlacement.Limits limits = new TreePlacement.Limits(-150, new SnowLine(100, 300), 1);
+        TreePlacement.Layout layout = place(ramp, 0, 0, 2000, limits, 7);
+        int zones = 5;
+        int[][] counted = new int[zones][TreePlacement.KINDS];
+        double[] treeHeight = new double[zones];
+        for (int i = 0; i < layout.count(); i++) {
+            double up = (at(layout, i, 1) + 150) / (limits.highest() + 150);
+            int zone = Math.min(zones - 1, (int) (up * zones));
+            TreeKind kind = kindOf(layout, i);
+            counted[zone][kind.ordinal()]++;
+            treeHeight[zone] += at(layout, i, 3) / kind.scale;
+        }
+        int conifer = TreeKind.CONIFER.ordinal();
+        int broadleaf = TreeKind.BROADLEAF.ordinal();
+        int bush = TreeKind.BUSH.ordinal();
+        // below ZONE_LOW of the way the trees are broadleaf, above ZONE_HIGH conifers, but where the moisture moves
+        // the zones (by ZONE_MOISTURE at most): a fifth of the trees either way is allowed for that
+        double lowBroadleaf = counted[0][broadleaf] / (double) (counted[0][broadleaf] + counted[0][conifer]);
+        double highConifer = counted[3][conifer] / (double) (counted[3][broadleaf] + counted[3][conifer]);
+        assertTrue(lowBroadleaf > 0.8, "broadleaf share of the trees low down: " + lowBroadleaf);
+        assertTrue(highConifer > 0.8, "conifer share of the trees high up: " + highConifer);
+        // bushes take over at the tree line (KRUMMHOLZ), and the trees there are shorter (MIN_STATURE)
+        double midBush = counted[2][bush] / (double) sum(counted[2]);
+        double topBush = counted[4][bush] / (double) sum(counted[4]);
+        assertTrue(topBush > midBush + 0.1, "bushes' share mid-slope " + midBush + ", at the tree line " + topBush);
+        double midHeight = treeHeight[2] / sum(counted[2]);
+        double topHeight = treeHeight[4] / sum(counted[4]);
+        VegetationSettings s = VegetationSettings.DEFAULTS;
+        assertEquals((s.minHeight() + s.maxHeight()) / 2, midHeight, 1, "mid-slope plants at full stature");
+        assertTrue(topHeight < 0.85 * midHeight, "heights mid-slope " + midHeight + ", at the tree line "
+                + topHeight);
+        // and the forest thins: fewer plants in the top fifth than in the middle one
+        assertTrue(sum(counted[4]) < 0.6 * sum(counted[2]), "plants mid-slope " + sum(counted[2])
+                + ", at the tree line " + sum(counted[4]));
+    }
+
+    static int sum(int[] values) {
+        int total = 0;
+        for (int v : values) {
+            total += v;
+        }
+        return total;
     }
 
     @Test
@@ -193,7 +293,7 @@ class TreePlacementTest {
         }
         // with a 45° limit the slope grows what flat ground there would: the field does not see the tilt (no water,
         // no snow, a plane has no hollows), except within its probe of the fold at x = 0
-        TreePlacement.Limits steep = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+        TreePlacement.Limits steep = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, null,
                 Math.tan(Math.toRadians(45)));
         double clear = PlacementField.PROBE + TreePlacement.PROBE;
         Set<String> climbing = feet(place(cliff, 0, 0, 500, steep, 5), clear);
@@ -245,18 +345,23 @@ class TreePlacementTest {
     }
 
     @Test
-    void thinsOutTowardsTheSnowLine() {
-        // the field's tree line without water: nothing at the snow line's start, the full density 250 m below it
-        TreePlacement.Limits limits = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, 12, 1);
+    void thinsOutTowardsTheTreeLine() {
+        // the field's tree line without water, on a ramp facing neither the sun nor away (the aspect is 0): snow
+        // from 0 m, certain at 24 m, the line at 12 m; nothing there, the full density 250 m below it, half between
+        TreePlacement.Limits limits = new TreePlacement.Limits(Double.NEGATIVE_INFINITY, new SnowLine(0, 24), 1);
         PlacementField field = new PlacementField(RAMP, null, limits, 1);
-        assertEquals(0, field.treeline(12), 1e-9);
-        assertEquals(1, field.treeline(12 - PlacementField.TREELINE_BAND), 1e-9);
-        assertTrue(field.treeline(12 - PlacementField.TREELINE_BAND / 2) < 0.6);
-        // with water, over the top quarter of the heights from the shore (2 m) to the snow (402 m): 302 to 402 m
-        PlacementField shore = new PlacementField(RAMP, null, new TreePlacement.Limits(2, 402, 1), 1);
-        assertEquals(0, shore.treeline(402), 1e-9);
-        assertEquals(1, shore.treeline(302), 1e-9);
-        assertEquals(0.5, shore.treeline(352), 1e-9);
+        assertEquals(0, field.treeline(600, 0, 12), 1e-9);
+        assertEquals(1, field.treeline(-11900, 0, 12 - PlacementField.TREELINE_BAND), 1e-9);
+        assertEquals(0.5, field.treeline(-5650, 0, 12 - PlacementField.TREELINE_BAND / 2), 1e-9);
+        // with water, over the top quarter of the heights from the shore (2 m) to the line (402 m): 302 to 402 m,
+        // times the chance of no snow above its start (352 m; certain at 452 m)
+        PlacementField shore = new PlacementField(RAMP, null, new TreePlacement.Limits(2, new SnowLine(352, 452), 1),
+                1);
+        assertEquals(0, shore.treeline(20100, 0, 402), 1e-9);
+        assertEquals(1, shore.treeline(15100, 0, 302), 1e-9);
+        assertEquals(0.5, shore.treeline(17600, 0, 352), 1e-9);
+        assertEquals(0.75 * (1 - PlacementField.smoothstep(302, 402, 377)), shore.treeline(18850, 0, 377), 1e-9);
+        assertEquals(PlacementField.MIN_STATURE, shore.stature(20100, 0, 402), 1e-9);
     }
 
     @Test

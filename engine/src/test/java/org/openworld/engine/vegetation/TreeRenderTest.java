@@ -270,7 +270,11 @@ class TreeRenderTest {
     void theFullAndTheSimplifiedShapesLookAlikeAtTheSwitchDistance() {
         VegetationSystem plants = new VegetationSystem();
         // 12 m over the lake, looking west at the shore and the land behind it, a little down
-        List<String> more = List.of("vegetation.density=150", "vegetation.view-distance=1000");
+        // snow from 10.5 m, certain at 19.5 m: the tree line at 15 m, 5 m above the land, which stands 62 % of the
+        // way up from the shore to it, where the zones grow a mixed forest of mostly conifers (PlacementField), as
+        // on the upper slopes most forests stand; the land lies below the line's band, so every plant is full-grown
+        List<String> more = List.of("vegetation.density=150", "vegetation.view-distance=1000", "terrain.snow-base=0.305",
+                "terrain.snow-full=0.395");
         // with the sky behind them, as the switch is seen (against black, every edge pixel would count double)
         try (Engine engine = engine(plants, new CameraPose(SWITCH, 12, 0, 270, -2, 60), more, new SkySystem())) {
             Image bare = draw(engine, false, SWITCH);
