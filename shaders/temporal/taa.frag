@@ -16,7 +16,8 @@ uniform sampler2D depth;    // its depth, 0 near .. 1 far
 uniform sampler2D history;  // the last output, RGBA16F, linear filtering
 uniform mat4 reprojection;  // NDC now -> clip space of the previous frame
 uniform float weight;       // this frame's share of the output; 1 when there is no history
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor; // the history, RGBA16F
+layout(location = 1) out vec4 picture;   // the same colour into the anti-aliased target, RGBA8: no copy after
 
 // Pixels of motion from which the history is wholly clamped: a surface uncovered in one frame is at most the motion
 // wide, and from half a pixel on it is most of a pixel; below, the bilinear history blends it with its neighbours.
@@ -28,8 +29,13 @@ void main() {
     vec3 current = texelFetch(scene, p, 0).rgb;
     vec3 lo = current;
     vec3 hi = current;
+    // the eight around it: the centre is `current` already (a fetch is most of a pixel's cost on a software
+    // rasteriser, and the compiler cannot see that the clamped centre is p)
     for (int dy = -1; dy <= 1; dy++) {
         for (int dx = -1; dx <= 1; dx++) {
+            if (dx == 0 && dy == 0) {
+                continue;
+            }
             vec3 c = texelFetch(scene, clamp(p + ivec2(dx, dy), ivec2(0), size - 1), 0).rgb;
             lo = min(lo, c);
             hi = max(hi, c);
@@ -46,4 +52,5 @@ void main() {
     float motion = length((then - uv) * vec2(size)); // pixels since the last frame
     vec3 kept = mix(held, clamp(held, lo, hi), min(motion / FULL_CLAMP, 1.0));
     fragColor = vec4(seen ? mix(kept, current, weight) : current, 1.0);
+    picture = fragColor;
 }
