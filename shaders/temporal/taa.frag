@@ -29,13 +29,8 @@ void main() {
     vec3 current = texelFetch(scene, p, 0).rgb;
     vec3 lo = current;
     vec3 hi = current;
-    // the eight around it: the centre is `current` already (a fetch is most of a pixel's cost on a software
-    // rasteriser, and the compiler cannot see that the clamped centre is p)
     for (int dy = -1; dy <= 1; dy++) {
         for (int dx = -1; dx <= 1; dx++) {
-            if (dx == 0 && dy == 0) {
-                continue;
-            }
             vec3 c = texelFetch(scene, clamp(p + ivec2(dx, dy), ivec2(0), size - 1), 0).rgb;
             lo = min(lo, c);
             hi = max(hi, c);

@@ -40,9 +40,11 @@
  * with 8-bit ones a blend weight of 0.1 could not move a pixel by less than five levels, and the history would
  * stick.
  *
- * <p><b>Cost.</b> Nine colour fetches and one depth fetch for the clamp and the point, one bilinear history fetch, a
- * matrix product, the motion's length and one more mix for the clamp's share (a few arithmetic operations beside the
- * ten fetches, not measurable on the loaded machine), and two writes a pixel (RGBA16F and RGBA8). On a software
+ * <p><b>Cost.</b> Ten colour fetches (the 3×3 box and the centre once more: fetching it once, through a loop that
+ * skips it or a table of the eight offsets, measured no faster) and one depth fetch for the clamp and the point, one
+ * bilinear history fetch, a matrix product, the motion's length and one more mix for the clamp's share (a few
+ * arithmetic operations beside the twelve fetches, not measurable on the loaded machine), and two writes a pixel
+ * (RGBA16F and RGBA8). On a software
  * rasteriser the fetches are the pass: it costs about what the terrain's material does per pixel, and writing the
  * picture as a second output instead of blitting the history into it afterwards saved about a twentieth of the
  * span (docs/benchmarks.md, "The terrain's main pass"). Measured as
