@@ -45,9 +45,9 @@
  * bilinear history fetch, a matrix product, the motion's length and one more mix for the clamp's share (a few
  * arithmetic operations beside the twelve fetches, not measurable on the loaded machine), and two writes a pixel
  * (RGBA16F and RGBA8). On a software
- * rasteriser the fetches are the pass: it costs about what the terrain's material does per pixel, and writing the
- * picture as a second output instead of blitting the history into it afterwards saved about a twentieth of the
- * span (docs/benchmarks.md, "The terrain's main pass"). Measured as
+ * rasteriser the fetches are the pass: it costs about what the terrain's material does per pixel. Writing the
+ * picture as a second output spares the full-screen copy of the history that followed the pass, a saving within the
+ * loaded machine's noise (docs/benchmarks.md, "The terrain's main pass"). Measured as
  * the span {@code antialias.engine} on llvmpipe (the peer comparison's terrain view, 1280 × 720, profiled, one
  * sitting on a loaded machine): 28 % of the frame against FXAA's 23 %, 1.1 times FXAA's span (docs/benchmarks.md, "Temporal stability"). Memory: two RGBA16F
  * targets of the scene's size (14 MiB at 1280 × 720). A still picture settles in one cycle of frames.
