@@ -16,7 +16,8 @@ uniform sampler2D depth;    // its depth, 0 near .. 1 far
 uniform sampler2D history;  // the last output, RGBA16F, linear filtering
 uniform mat4 reprojection;  // NDC now -> clip space of the previous frame
 uniform float weight;       // this frame's share of the output; 1 when there is no history
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor; // the history, RGBA16F
+layout(location = 1) out vec4 picture;   // the same colour into the anti-aliased target, RGBA8: no copy after
 
 // Pixels of motion from which the history is wholly clamped: a surface uncovered in one frame is at most the motion
 // wide, and from half a pixel on it is most of a pixel; below, the bilinear history blends it with its neighbours.
@@ -46,4 +47,5 @@ void main() {
     float motion = length((then - uv) * vec2(size)); // pixels since the last frame
     vec3 kept = mix(held, clamp(held, lo, hi), min(motion / FULL_CLAMP, 1.0));
     fragColor = vec4(seen ? mix(kept, current, weight) : current, 1.0);
+    picture = fragColor;
 }

@@ -1,17 +1,12 @@
 package org.openworld.engine.temporal;
 
 import static org.lwjgl.opengl.GL11C.GL_BLEND;
-import static org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT;
 import static org.lwjgl.opengl.GL11C.GL_CULL_FACE;
 import static org.lwjgl.opengl.GL11C.GL_DEPTH_TEST;
-import static org.lwjgl.opengl.GL11C.GL_NEAREST;
 import static org.lwjgl.opengl.GL11C.GL_STENCIL_TEST;
 import static org.lwjgl.opengl.GL11C.glDisable;
-import static org.lwjgl.opengl.GL30C.GL_DRAW_FRAMEBUFFER;
 import static org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER;
-import static org.lwjgl.opengl.GL30C.GL_READ_FRAMEBUFFER;
 import static org.lwjgl.opengl.GL30C.glBindFramebuffer;
-import static org.lwjgl.opengl.GL30C.glBlitFramebuffer;
 
 import org.joml.Matrix4d;
 import org.joml.Matrix4f;
@@ -25,6 +20,7 @@ import org.openworld.engine.gl.Mesh;
 import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
+import org.openworld.engine.gl.Texture2D;
 import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
@@ -49,7 +45,11 @@ public final class TemporalAntialias implements AutoCloseable {
     private final Uniform.Mat4 reprojection;
     private final Uniform.Float weight;
     /** Two histories, read and written in turn: {@code histories[latest]} holds the last output. */
-    private final Framebuffer[] histories = new Framebuffer[2];
+    private final Texture2D[] histories = new Texture2D[2];
+    /** Per history, the target that writes it and the anti-aliased picture at once (outputs 0 and 1). */
+    private final Framebuffer[] writes = new Framebuffer[2];
+    /** The picture's texture the {@link #writes} hold: made again when the engine's target is. */
+    private Texture2D picture;
     private int latest;
     /** Frames in the current run before the next one; 0 when the next frame starts a run. */
     private long run;
@@ -87,8 +87,8 @@ public final class TemporalAntialias implements AutoCloseable {
     }
 
     /**
-     * Blends {@code scene} (drawn with {@link #jittered}) into the history and copies the result into {@code target}
-     * (the scene's size), then binds no framebuffer.
+     * Blends {@code scene} (drawn with {@link #jittered}) into the history and, in the same draw, into
+     * {@code target} (the scene's size), then binds no framebuffer.
      *
      * @param camera    the viewer's camera without jitter: its view-projection reprojects the next frame
      * @param minWeight the least share of a frame in the result once the run is long enough ({@code antialias.blend})
@@ -99,15 +99,22 @@ public final class TemporalAntialias implements AutoCloseable {
         if (histories[0] == null || histories[0].width() != scene.width()
                 || histories[0].height() != scene.height()) {
             for (int i = 0; i < histories.length; i++) {
-                histories[i] = owned.replace("history" + i, histories[i], new Framebuffer(gl, scene.width(),
-                        scene.height(), Format.RGBA16F, null, Sampling.LINEAR_CLAMP));
+                histories[i] = owned.replace("history" + i, histories[i], Texture2D.empty(gl, scene.width(),
+                        scene.height(), Format.RGBA16F, Sampling.LINEAR_CLAMP));
             }
             n = 0;
+            picture = null; // the writes hold the old histories
+        }
+        if (picture != target.color()) {
+            picture = target.color();
+            for (int i = 0; i < writes.length; i++) {
+                writes[i] = owned.replace("write" + i, writes[i],
+                        Framebuffer.onTextures(gl, histories[i], picture));
+            }
         }
         // in double from the exact view: far from the origin a float view-projection is metres off
         Matrix4d now = new Matrix4d().set(camera.projection()).mul(camera.exactView());
-        Framebuffer written = histories[1 - latest];
-        written.bind();
+        writes[1 - latest].bind();
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_BLEND);
@@ -118,12 +125,8 @@ public final class TemporalAntialias implements AutoCloseable {
         weight.set(n == 0 ? 1f : (float) Math.max(minWeight, 1.0 / (n + 1)));
         scene.color().bind(SCENE.unit());
         scene.depth().bind(DEPTH.unit());
-        histories[latest].color().bind(HISTORY.unit());
+        histories[latest].bind(HISTORY.unit());
         fullScreen.draw(stats);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, written.id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.id());
-        glBlitFramebuffer(0, 0, written.width(), written.height(), 0, 0, target.width(), target.height(),
-                GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         latest = 1 - latest;
         previous.set(now);

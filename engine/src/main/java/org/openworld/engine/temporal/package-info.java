@@ -35,13 +35,19 @@
  * <p><b>Data path.</b> The engine asks for the viewer's camera jittered before the passes; the systems draw the scene
  * target with it as usual (the shadow and reflection cameras derive from it). After the last pass one full-screen
  * triangle reads the scene's colour and depth ({@code texelFetch}) and the other of two RGBA16F histories (bilinear:
- * a reprojected point falls between texels), writes the blend into one history, which is then blitted into the
- * anti-aliased target of the scene's size. Float histories: with 8-bit ones a blend weight of 0.1 could not move a
- * pixel by less than five levels, and the history would stick.
+ * a reprojected point falls between texels), and writes the blend through two outputs at once: into one history and
+ * into the anti-aliased RGBA8 target of the scene's size (no copy of the history after the pass). Float histories:
+ * with 8-bit ones a blend weight of 0.1 could not move a pixel by less than five levels, and the history would
+ * stick.
  *
- * <p><b>Cost.</b> Nine colour fetches and one depth fetch for the clamp and the point, one bilinear history fetch, a
- * matrix product, the motion's length and one more mix for the clamp's share (a few arithmetic operations beside the
- * ten fetches, not measurable on the loaded machine), and the blit of one RGBA16F target into RGBA8. Measured as
+ * <p><b>Cost.</b> Ten colour fetches (the 3×3 box and the centre once more: fetching it once, through a loop that
+ * skips it or a table of the eight offsets, measured no faster) and one depth fetch for the clamp and the point, one
+ * bilinear history fetch, a matrix product, the motion's length and one more mix for the clamp's share (a few
+ * arithmetic operations beside the twelve fetches, not measurable on the loaded machine), and two writes a pixel
+ * (RGBA16F and RGBA8). On a software
+ * rasteriser the fetches are the pass: it costs about what the terrain's material does per pixel. Writing the
+ * picture as a second output spares the full-screen copy of the history that followed the pass, a saving within the
+ * loaded machine's noise (docs/benchmarks.md, "The terrain's main pass"). Measured as
  * the span {@code antialias.engine} on llvmpipe (the peer comparison's terrain view, 1280 × 720, profiled, one
  * sitting on a loaded machine): 28 % of the frame against FXAA's 23 %, 1.1 times FXAA's span (docs/benchmarks.md, "Temporal stability"). Memory: two RGBA16F
  * targets of the scene's size (14 MiB at 1280 × 720). A still picture settles in one cycle of frames.

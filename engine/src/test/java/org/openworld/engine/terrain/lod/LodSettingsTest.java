@@ -62,6 +62,7 @@ class LodSettingsTest {
 
     @Test
     void onlyThePatchSizesWithPatternsAreAccepted() {
+        assertEquals(16, new LodSettings(17, LodRule.PAPER, 2, 100, LodMode.FLAT_GRID, 1, 1, true).cells());
         assertEquals(32, new LodSettings(33, LodRule.PAPER, 2, 100, LodMode.FLAT_GRID, 1, 1, true).cells());
         assertThrows(IllegalArgumentException.class,
                 () -> new LodSettings(48, LodRule.PAPER, 2, 100, LodMode.QUADTREE, 1, 1, true));
