@@ -41,8 +41,8 @@ uniform sampler2DArrayShadow shadowMap;
 // wraps, so the map does). Without volumetric clouds the engine binds a block of zeros: strength 0, all light through.
 layout(std140) uniform CloudShadowBlock {
     vec4 cloudShadowPlace;    // x: the cloud base, metres above sea level; y: 1 / the field's tile (1/m);
-                              // zw: the wind's offset of the field, metres (world x, z)
-    vec4 cloudShadowStrength; // x: 1 with clouds, 0 without; yzw: 0
+                              // zw: the wind's offset of the field, metres (world x, z, from the world's origin)
+    vec4 cloudShadowStrength; // x: 1 with clouds, 0 without; y: the field's tile (m); zw: 0
 } cloudShadowBlock;
 
 uniform sampler2D cloudShadowMap;
@@ -53,10 +53,17 @@ const float CLOUD_SHADOW_MIN_SINE = 0.05;
 
 // The share of the sun's light the clouds let through to wsPos: 1 in the open, near 0 under a thick cloud.
 float cloudShadow(vec3 wsPos) {
+    if (cloudShadowBlock.cloudShadowStrength.x == 0.0) {
+        return 1.0; // no clouds (the stand-in block of zeros, or the layer)
+    }
     vec4 place = cloudShadowBlock.cloudShadowPlace;
     vec3 toSun = sunDir();
     vec2 atBase = wsPos.xz + toSun.xz * (max(place.x - wsPos.y, 0.0) / max(toSun.y, CLOUD_SHADOW_MIN_SINE));
-    float through = texture(cloudShadowMap, (atBase - place.zw) * place.y).r;
+    // the render origin modulo the tile, from this pass's frame block (not the block's writer's frame, which may
+    // precede a step of the origin): its steps (whole numbers) times the step modulo the tile
+    float tile = cloudShadowBlock.cloudShadowStrength.y;
+    vec2 origin = mod(frame.origin.xz * mod(frame.origin.w, tile), tile);
+    float through = texture(cloudShadowMap, (atBase + origin - place.zw) * place.y).r;
     return mix(1.0, through, cloudShadowBlock.cloudShadowStrength.x);
 }
 

@@ -161,7 +161,8 @@ public final class CloudVolumeSystem implements EngineSystem {
         simTime += step;
         CloudSettings c = world.resource(Settings.class).get(CloudSettings.class);
         RenderOrigin origin = world.resource(RenderOrigin.class);
-        Vector2d wind = c.windOffset(simTime, new Vector2d()).sub(originInTile(origin, c));
+        // from the world's origin: the render origin may step before this frame's passes, which add their own
+        Vector2d wind = c.windOffset(simTime, new Vector2d());
         boolean volumetric = c.mode() == CloudSettings.Mode.VOLUMETRIC;
         shadow.write((float) c.base(), (float) c.tileSize(), (float) wind.x, (float) wind.y, volumetric ? 1 : 0);
         if (!volumetric) {

@@ -49,7 +49,9 @@
  * the cloud base (128², 12 steps, the base shape) into the {@link org.openworld.engine.environment.CloudShadow} map,
  * twice a simulated second and when the sun moves 0.2°. Every lit shader reads it through
  * {@code sunVisibility} ({@code common/shadow.glsl}, a shared texture and block the engine binds), so the ground,
- * the water, the trees and the snow are shadowed with one lookup, whoever draws them.
+ * the water, the trees and the snow are shadowed with one lookup, whoever draws them. The block holds the wind's
+ * offset from the world's origin and each pass adds its own render origin (the frame block's), so the shadow stays
+ * on the ground on the frame the origin steps, after the update wrote the block.
  *
  * <h2>Reflection and environment map</h2>
  * {@link org.openworld.engine.sky.clouds.CloudPanoramaMarch} marches the same rays from the viewer's eye in every
