@@ -18,7 +18,8 @@ import org.openworld.engine.gl.Texture2D;
  * them the engine binds the stand-ins ({@link SharedTexture#standIn}): a block of zeros, whose strength 0 lets all
  * the sunlight through.
  *
- * @param map   the transmittance (R16F), one texel per field sample, wrapping as the field does
+ * @param map   the transmittance (RG16F) along the sun's ray (r) and straight up (g, where the snow falls:
+ *              {@code snowfallShare}), one texel per field sample, wrapping as the field does
  * @param block {@link #BLOCK_SIZE} bytes, laid out as {@code CloudShadowBlock} in {@code shaders/common/shadow.glsl}
  */
 public record CloudShadow(Texture2D map, GpuBuffer block) implements MapAndBlock, SharedResource {

@@ -154,7 +154,7 @@ public final class CloudVolumeSystem implements EngineSystem {
                 Sampling.LINEAR_CLAMP));
         programs = new CloudPrograms(context);
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
-        Texture2D map = context.own("shadowMap", Texture2D.empty(gl, SHADOW_SIZE, SHADOW_SIZE, Format.R16F,
+        Texture2D map = context.own("shadowMap", Texture2D.empty(gl, SHADOW_SIZE, SHADOW_SIZE, Format.RG16F,
                 Sampling.LINEAR_REPEAT));
         shadowTarget = context.own("shadowTarget", Framebuffer.onTextures(gl, map));
         shadow = new CloudShadow(map, context.own("shadowBlock", SharedBlock.CLOUD_SHADOW.standIn(gl)));
