@@ -7,8 +7,8 @@
 // harmonics of frame.sky) from above and from the ground below.
 #include "common/frame.glsl"
 
-uniform sampler3D cloudField;  // the base shape's field (power 1/f^3): mean 0, standard deviation 1; s, t: one tile;
-                               // r: one period. Repeat
+uniform sampler2D cloudField;  // the base shape's field (power 1/f^3) at this moment (clouds/bake.frag): mean 0,
+                               // standard deviation 1; s, t: one tile. Repeat
 uniform sampler3D cloudDetail; // the sky's own field (clouds.beta), the same phases, for the erosion
 uniform sampler2D cloudOptics; // 256 x 1 (CloudOptics.table): r the height profile over the layer's height 0..1;
                                // gba the phase of octaves 0, 1, 2 over cos(angle to the sun), -1..1
@@ -54,7 +54,7 @@ float layerHeight(vec3 wsPos) {
 // The base shape at a point of height fraction h: the cover's strength where the profile allows it, 0..1.
 float cloudShape(vec3 wsPos, float h) {
     vec2 st = (wsPos.xz - uMotion.xy) / uLayer.z;
-    float field = texture(cloudField, vec3(st, uMotion.z + uMotion.w)).r;
+    float field = texture(cloudField, st).r;
     float cover = clamp((field - uLayer.w) / COVER_SPREAD, 0.0, 1.0);
     if (cover <= 0.0) {
         return 0.0; // the profile is at most 1, so no cover is no cloud: the profile's read is spared

@@ -41,8 +41,8 @@ uniform sampler2DArrayShadow shadowMap;
 // wraps, so the map does). Without volumetric clouds the engine binds a block of zeros: strength 0, all light through.
 layout(std140) uniform CloudShadowBlock {
     vec4 cloudShadowPlace;    // x: the cloud base, metres above sea level; y: 1 / the field's tile (1/m);
-                              // zw: the wind's offset of the field, metres (world x, z)
-    vec4 cloudShadowStrength; // x: 1 with clouds, 0 without; yzw: 0
+                              // zw: the wind's offset of the field, metres (world x, z, from the world's origin)
+    vec4 cloudShadowStrength; // x: 1 with clouds, 0 without; y: the field's tile (m); zw: 0
 } cloudShadowBlock;
 
 uniform sampler2D cloudShadowMap;
@@ -51,13 +51,41 @@ uniform sampler2D cloudShadowMap;
 // away and spread thin anyway (the light crosses the volume over tens of kilometres).
 const float CLOUD_SHADOW_MIN_SINE = 0.05;
 
+// The cloud shadow map at a point of the cloud base (world x, z, from the render origin): r what the clouds let
+// through along the sun's ray, g straight up.
+vec2 cloudShadowAt(vec2 wsXz) {
+    vec4 place = cloudShadowBlock.cloudShadowPlace;
+    // the render origin modulo the tile, from this pass's frame block (not the block's writer's frame, which may
+    // precede a step of the origin): its steps (whole numbers) times the step modulo the tile
+    float tile = cloudShadowBlock.cloudShadowStrength.y;
+    vec2 origin = mod(frame.origin.xz * mod(frame.origin.w, tile), tile);
+    return texture(cloudShadowMap, (wsXz + origin - place.zw) * place.y).rg;
+}
+
 // The share of the sun's light the clouds let through to wsPos: 1 in the open, near 0 under a thick cloud.
 float cloudShadow(vec3 wsPos) {
-    vec4 place = cloudShadowBlock.cloudShadowPlace;
+    if (cloudShadowBlock.cloudShadowStrength.x == 0.0) {
+        return 1.0; // no clouds (the stand-in block of zeros, or the layer)
+    }
     vec3 toSun = sunDir();
-    vec2 atBase = wsPos.xz + toSun.xz * (max(place.x - wsPos.y, 0.0) / max(toSun.y, CLOUD_SHADOW_MIN_SINE));
-    float through = texture(cloudShadowMap, (atBase - place.zw) * place.y).r;
+    float rise = max(cloudShadowBlock.cloudShadowPlace.x - wsPos.y, 0.0) / max(toSun.y, CLOUD_SHADOW_MIN_SINE);
+    float through = cloudShadowAt(wsPos.xz + toSun.xz * rise).r;
     return mix(1.0, through, cloudShadowBlock.cloudShadowStrength.x);
+}
+
+// Optical depth of the cloud overhead at which the snow falls in full: 3, where the sun's disc is gone (5 % of its
+// light through), an overcast sky.
+const float SNOWFALL_DEPTH = 3.0;
+
+// The share of the snowfall that falls at wsPos: snow falls from the cloud above, so none under a clear sky, in
+// full under an overcast (the column's optical depth from 0 to SNOWFALL_DEPTH); the drift of a flake's half-hour
+// fall from the cloud base is not followed. 1 without volumetric clouds (the layer has no depth to tell).
+float snowfallShare(vec3 wsPos) {
+    if (cloudShadowBlock.cloudShadowStrength.x == 0.0) {
+        return 1.0;
+    }
+    float column = -log(max(cloudShadowAt(wsPos.xz).g, 1e-6));
+    return clamp(column / SNOWFALL_DEPTH, 0.0, 1.0);
 }
 
 // The point in cascade i's map: xy texture coordinates, z its depth less the biases.

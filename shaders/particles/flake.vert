@@ -31,7 +31,8 @@ void main() {
     float drawn = max(pixels, uFlake.y);
     float opacity = (pixels / drawn) * (pixels / drawn)
             * (1.0 - smoothstep(0.6 * halfSide, halfSide, distance)) // the cube's inscribed sphere, faded at its rim
-            * smoothstep(near, 2.0 * near, depth);                   // not cut by the near plane
+            * smoothstep(near, 2.0 * near, depth)                    // not cut by the near plane
+            * snowfallShare(position);                               // only under the cloud it falls from
     // Most flakes are behind the eye or beside the view: skip them before the light, the costly part (the shadow
     // maps' filter and the air's table), keeping those whose disc reaches into the picture.
     vec4 clipCentre = frame.projection * vec4(vsCentre, 1.0);

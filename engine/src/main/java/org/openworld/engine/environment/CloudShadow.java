@@ -18,7 +18,8 @@ import org.openworld.engine.gl.Texture2D;
  * them the engine binds the stand-ins ({@link SharedTexture#standIn}): a block of zeros, whose strength 0 lets all
  * the sunlight through.
  *
- * @param map   the transmittance (R16F), one texel per field sample, wrapping as the field does
+ * @param map   the transmittance (RG16F) along the sun's ray (r) and straight up (g, where the snow falls:
+ *              {@code snowfallShare}), one texel per field sample, wrapping as the field does
  * @param block {@link #BLOCK_SIZE} bytes, laid out as {@code CloudShadowBlock} in {@code shaders/common/shadow.glsl}
  */
 public record CloudShadow(Texture2D map, GpuBuffer block) implements MapAndBlock, SharedResource {
@@ -35,12 +36,14 @@ public record CloudShadow(Texture2D map, GpuBuffer block) implements MapAndBlock
 
     /**
      * Writes the block: the base of the clouds (m above sea level), the field's tile (m), the wind's offset of the
-     * field (m, world x and z) and the strength (1: the map darkens, 0: it is ignored).
+     * field (m, world x and z, from the world's origin: the shader adds the render origin of its own pass, so the
+     * shadow stays put on a frame the origin steps after the block was written) and the strength (1: the map
+     * darkens, 0: it is ignored).
      */
     public void write(float baseM, float tileM, float windX, float windZ, float strength) {
         ByteBuffer data = MemoryUtil.memAlloc(BLOCK_SIZE);
         try {
-            data.asFloatBuffer().put(new float[] {baseM, 1 / tileM, windX, windZ, strength, 0, 0, 0});
+            data.asFloatBuffer().put(new float[] {baseM, 1 / tileM, windX, windZ, strength, tileM, 0, 0});
             block.update(data);
         } finally {
             MemoryUtil.memFree(data);

@@ -27,7 +27,9 @@
  * {@code Mesh} (four corners, two triangles) facing the camera, one {@code Mesh.drawInstances} call for them all. The fragment shader keeps the disc within the square, its
  * opacity falling off over the outer 60% of the radius. A flake narrower than a pixel is drawn a pixel wide with its
  * opacity times (true radius / drawn radius)², the light it would cover; flakes fade out towards the cube's
- * inscribed sphere, so none pops in as it wraps. Lit as a thin translucent plate at a random angle: albedo ·
+ * inscribed sphere, so none pops in as it wraps; and where the volumetric clouds are, with the share of the snowfall
+ * that falls under the cloud overhead ({@code snowfallShare}, {@code common/shadow.glsl}: the column's optical depth
+ * over 3, at most 1; none under a clear sky). Lit as a thin translucent plate at a random angle: albedo ·
  * (½ · sun · visibility + sky), the sun's visibility from the shadow maps, then the air's fog. Premultiplied alpha,
  * blended over the picture after every opaque system ({@code SystemSpec.layer(Layer.TRANSPARENT)}), without sorting: all
  * flakes are one colour, so the order barely shows.

@@ -9,14 +9,17 @@ import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 
 /**
- * The clouds' four shader programs ({@code shaders/clouds/}) with their uniforms and texture units: the shadow map,
- * the march, the resolve and the composite, each a full-screen triangle ({@code clouds/fullscreen.vert}).
+ * The clouds' five shader programs ({@code shaders/clouds/}) with their uniforms and texture units: the field's bake,
+ * the shadow map, the march, the resolve and the composite, each a full-screen triangle
+ * ({@code clouds/fullscreen.vert}).
  */
 final class CloudPrograms {
 
     /** The samplers and their texture units: the field and the optics table (shadow, march), then each pass's own. */
     private static final TextureUnits UNITS = new TextureUnits();
     static final TextureUnits.Sampler FIELD = UNITS.add("cloudField");
+    /** The base shape's 3D field, read by the bake only: the others read its 2D picture at this moment, FIELD. */
+    static final TextureUnits.Sampler FIELD_VOLUME = UNITS.add("cloudFieldVolume");
     static final TextureUnits.Sampler OPTICS = UNITS.add("cloudOptics");
     static final TextureUnits.Sampler SCENE_DEPTH = UNITS.add("sceneDepth");
     static final TextureUnits.Sampler FRESH_LIGHT = UNITS.add("freshLight");
@@ -28,10 +31,13 @@ final class CloudPrograms {
     /** The panorama's clouds, read by the water's reflection ({@link CloudPanoramaMarch}). */
     static final TextureUnits.Sampler PANORAMA = UNITS.add("cloudPanorama");
 
+    final ShaderProgram bake;
     final ShaderProgram shadow;
     final ShaderProgram march;
     final ShaderProgram resolve;
     final ShaderProgram composite;
+    private final Uniform.Vec2 bakeSize;
+    private final Uniform.Float bakeTime;
     private final Uniform.Vec4 shadowLayer;
     private final Uniform.Vec4 shadowMotion;
     private final Uniform.Vec2 shadowSize;
@@ -48,6 +54,11 @@ final class CloudPrograms {
     private final Uniform.Float compositeSky;
 
     CloudPrograms(EngineContext context) {
+        bake = program(context, "bakeProgram", "clouds/bake.frag");
+        bake.sampler(FIELD_VOLUME);
+        bakeSize = bake.vec2("uSize");
+        bakeTime = bake.float1("uTime");
+
         shadow = program(context, "shadowProgram", "clouds/shadow.frag");
         shadow.sampler(FIELD);
         shadow.sampler(OPTICS);
@@ -85,6 +96,13 @@ final class CloudPrograms {
 
     private static ShaderProgram program(EngineContext context, String role, String fragment) {
         return context.own(role, context.shaders().program("clouds/fullscreen.vert", fragment));
+    }
+
+    /** The bake's program in use, for a field of {@code size}² texels a tile at the time coordinate {@code time}. */
+    void useBake(int size, float time) {
+        bake.use();
+        bakeSize.set(size, size);
+        bakeTime.set(time);
     }
 
     /** The shadow map's program in use, for a layer ({@code uLayer}), a motion ({@code uMotion}), a map size, the eye

@@ -45,7 +45,8 @@ import org.openworld.engine.sky.SkySystem;
  * Volumetric clouds ({@code clouds.mode=volumetric}; the package's front page has the method): the sky's cloud field
  * ray-marched as a volume over the picture, with its shadow on everything the sun lights. In the MAIN pass, after
  * every other system but the transparent ones (it reads the finished depth). In the update, before the passes, the
- * cloud shadow map is redrawn when the clouds evolved for {@link #SHADOW_REFRESH} s or the sun moved. Per frame:
+ * base field is drawn at this moment in 2D (clouds/bake.frag, read by every march), and the cloud shadow map is
+ * redrawn when the clouds evolved for {@link #SHADOW_REFRESH} s or the sun moved. Per frame:
  * <ol>
  *   <li>the march ({@code clouds/march.frag}) on a quarter grid, one texel of every 2 × 2 per frame, every texel when
  *       there is no usable history ({@link #jumped});</li>
@@ -92,6 +93,9 @@ public final class CloudVolumeSystem implements EngineSystem {
     private CloudPrograms programs;
     private Mesh fullScreen;
     private Texture3D field;
+    /** The base field at this moment, one tile in 2D (clouds/bake.frag), drawn in each update; what every pass reads. */
+    private Texture2D fieldNow;
+    private Framebuffer fieldNowTarget;
     private Texture3D detail;
     private CloudField cloudField;
     private Texture2D optics;
@@ -141,13 +145,16 @@ public final class CloudVolumeSystem implements EngineSystem {
         int seed = settings.get(EngineSettings.class).seed();
         cloudField = CloudField.generate(c.resolution(), c.frames(), BASE_BETA, seed);
         field = context.own("field", SkySystem.upload(gl, cloudField));
+        fieldNow = context.own("fieldNow", Texture2D.empty(gl, c.resolution(), c.resolution(), Format.R32F,
+                Sampling.LINEAR_REPEAT));
+        fieldNowTarget = context.own("fieldNowTarget", Framebuffer.onTextures(gl, fieldNow));
         detail = context.own("detail", SkySystem.upload(gl, CloudField.generate(c.resolution(), c.frames(), c.beta(),
                 seed)));
         optics = context.own("optics", Texture2D.empty(gl, CloudOptics.SIZE, 1, Format.RGBA16F,
                 Sampling.LINEAR_CLAMP));
         programs = new CloudPrograms(context);
         fullScreen = context.own("fullScreen", Mesh.fullScreenTriangle(gl));
-        Texture2D map = context.own("shadowMap", Texture2D.empty(gl, SHADOW_SIZE, SHADOW_SIZE, Format.R16F,
+        Texture2D map = context.own("shadowMap", Texture2D.empty(gl, SHADOW_SIZE, SHADOW_SIZE, Format.RG16F,
                 Sampling.LINEAR_REPEAT));
         shadowTarget = context.own("shadowTarget", Framebuffer.onTextures(gl, map));
         shadow = new CloudShadow(map, context.own("shadowBlock", SharedBlock.CLOUD_SHADOW.standIn(gl)));
@@ -161,33 +168,40 @@ public final class CloudVolumeSystem implements EngineSystem {
         simTime += step;
         CloudSettings c = world.resource(Settings.class).get(CloudSettings.class);
         RenderOrigin origin = world.resource(RenderOrigin.class);
-        Vector2d wind = c.windOffset(simTime, new Vector2d()).sub(originInTile(origin, c));
+        // from the world's origin: the render origin may step before this frame's passes, which add their own
+        Vector2d wind = c.windOffset(simTime, new Vector2d());
         boolean volumetric = c.mode() == CloudSettings.Mode.VOLUMETRIC;
         shadow.write((float) c.base(), (float) c.tileSize(), (float) wind.x, (float) wind.y, volumetric ? 1 : 0);
         if (!volumetric) {
             return;
         }
         prepareTables(c);
+        int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+        int[] viewport = new int[4];
+        glGetIntegerv(GL_VIEWPORT, viewport);
+        // the base field at this moment, for every pass of the frame and the shadow map
+        Vector4f motion = motion(c, origin);
+        field.bind(CloudPrograms.FIELD_VOLUME.unit());
+        fieldNowTarget.bind();
+        programs.useBake(c.resolution(), motion.z + motion.w);
+        fullScreen.draw(updateDraws);
         // the shadow map, before the passes that read it, when the clouds evolved or the sun moved
         Sun sun = world.resource(Sun.class);
         if (simTime - shadowTime >= SHADOW_REFRESH || sun.direction().angle(shadowSun) >= SHADOW_SUN_STEP
                 || !c.equals(shadowSettings)) {
-            int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
-            int[] viewport = new int[4];
-            glGetIntegerv(GL_VIEWPORT, viewport);
-            field.bind(CloudPrograms.FIELD.unit());
+            fieldNow.bind(CloudPrograms.FIELD.unit());
             optics.bind(CloudPrograms.OPTICS.unit());
             shadowTarget.bind();
             CameraPose pose = world.resource(Camera.class).pose();
-            programs.useShadow(layer(c), motion(c, origin), SHADOW_SIZE, origin.relative(pose.x(), pose.y(), pose.z()),
+            programs.useShadow(layer(c), motion, SHADOW_SIZE, origin.relative(pose.x(), pose.y(), pose.z()),
                     sun.direction());
             fullScreen.draw(updateDraws);
-            glBindFramebuffer(GL_FRAMEBUFFER, previous);
-            glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
             shadowTime = simTime;
             shadowSun.set(sun.direction());
             shadowSettings = c;
         }
+        glBindFramebuffer(GL_FRAMEBUFFER, previous);
+        glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     }
 
     /** The {@code uLayer} uniform: the base's and the top's radii, the tile, the cover's density threshold. */
@@ -231,7 +245,7 @@ public final class CloudVolumeSystem implements EngineSystem {
             haveHistory = false;
         }
         // bound after the targets are made: making a texture binds it to the active unit
-        field.bind(CloudPrograms.FIELD.unit());
+        fieldNow.bind(CloudPrograms.FIELD.unit());
         detail.bind(CloudPrograms.DETAIL.unit());
         optics.bind(CloudPrograms.OPTICS.unit());
         // 0. the panorama's band, in the frame's first pass: the reflection draws it, the environment map reads it

@@ -16,13 +16,16 @@
  *   e       = 0.45 · clamp(0.5 + 0.25 D, 0, 1)
  *   density = clamp((shape − e) / (1 − e), 0, 1)      σ = 0.04/m · density (a mean free path of 25 m at the core)
  * </pre>
- * The wind carries both fields ({@code clouds.wind-*}, the {@code Wind} the sky publishes), and the time axis
+ * The base field is read in 2D: each update draws it at the clouds' time into a texture of the same texels
+ * ({@code clouds/bake.frag}), which read bilinearly gives the 3D field's trilinear value at half the texels. The wind
+ * carries both fields ({@code clouds.wind-*}, the {@code Wind} the sky publishes), and the time axis
  * evolves them ({@code clouds.period}).
  *
  * <h2>Light</h2>
  * Along the view ray, 24 steps between where it enters and leaves the layer (cut at the scene's depth and at 60 km,
- * the first step jittered per pixel): at each, the optical depth τ towards the sun from three samples 50, 180 and
- * 450 m away, and the light scattered towards the eye with the albedo 1, integrated over the step as
+ * the first step jittered per pixel); empty space is crossed two steps at a time, back one at the first cloud, so
+ * every sample is one of the 24. At each sample in a cloud, the optical depth τ towards the sun from three samples
+ * 50, 180 and 450 m away, and the light scattered towards the eye with the albedo 1, integrated over the step as
  * S (1 − e^(−σ Δt)) (Hillaire 2016), where
  * <pre>
  *   S = π E_sun Σ_{i=0..2} 0.5^i p_i(μ) e^(−0.5^i τ) + mix(E_sky(down), E_sky(up), h)
@@ -49,7 +52,9 @@
  * the cloud base (128², 12 steps, the base shape) into the {@link org.openworld.engine.environment.CloudShadow} map,
  * twice a simulated second and when the sun moves 0.2°. Every lit shader reads it through
  * {@code sunVisibility} ({@code common/shadow.glsl}, a shared texture and block the engine binds), so the ground,
- * the water, the trees and the snow are shadowed with one lookup, whoever draws them.
+ * the water, the trees and the snow are shadowed with one lookup, whoever draws them. The block holds the wind's
+ * offset from the world's origin and each pass adds its own render origin (the frame block's), so the shadow stays
+ * on the ground on the frame the origin steps, after the update wrote the block.
  *
  * <h2>Reflection and environment map</h2>
  * {@link org.openworld.engine.sky.clouds.CloudPanoramaMarch} marches the same rays from the viewer's eye in every

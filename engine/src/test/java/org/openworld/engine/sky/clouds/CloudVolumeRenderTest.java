@@ -259,6 +259,35 @@ class CloudVolumeRenderTest {
         assertTrue(difference < 0.1, "the clouds moved with the render origin: mean ΔE00 " + difference);
     }
 
+    /**
+     * The cloud shadow is where the clouds are on the frame the render origin steps: looking down on the ground under
+     * a thin cloud layer at noon, the camera moves 40 m across the middle between two of the origin's positions (its
+     * step 1 000 m, the field's tile 3 000 m, so a step moves the field's offset by a third of a tile), and that
+     * frame is compared with the next one at the same pose, whose shadow no step can have displaced. Between the two
+     * only 1/60 s of the sky's time passes with no wind, so the bound is a tenth of a just noticeable difference;
+     * a shadow placed from the last frame's origin lies 1 000 m off on the stepping frame and changes most of the
+     * ground under and beside the clouds.
+     */
+    @Test
+    void theCloudShadowStaysOnTheGroundOnTheFrameTheRenderOriginSteps() {
+        int size = 96;
+        double step = 1000;
+        Image stepped;
+        Image settled;
+        try (Engine engine = engine(size, size, List.of("clouds.tile-size=3000", "clouds.thickness=300",
+                "clouds.cover=0.5", "clouds.type=1"))) {
+            engine.world().setResource(new TimeOfDay(12, 0));
+            engine.world().setResource(new RenderOrigin(step));
+            render(engine, new CameraPose(step / 2 - 20, 1500, 0, 0, -89.9, 90));
+            CameraPose across = new CameraPose(step / 2 + 20, 1500, 0, 0, -89.9, 90);
+            stepped = render(engine, across);
+            assertTrue(engine.world().resource(RenderOrigin.class).x() == step, "the origin stepped to " + step);
+            settled = render(engine, across);
+        }
+        double difference = ImageComparison.of(stepped, settled).meanDeltaE();
+        assertTrue(difference < 0.1, "the cloud shadow moved on the frame the origin stepped: mean ΔE00 " + difference);
+    }
+
     /** Where the view ray through pixel (x, y) (y from the bottom) meets the ground plane y = 0, or null. */
     private static Vector3f groundPoint(Matrix4f inverse, CameraPose pose, int x, int y, int size) {
         Vector4f far = inverse.transform(new Vector4f((x + 0.5f) / size * 2 - 1, (y + 0.5f) / size * 2 - 1, 1, 1));
