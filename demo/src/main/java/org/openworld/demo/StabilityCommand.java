@@ -3,10 +3,12 @@ package org.openworld.demo;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.openworld.engine.EngineSettings;
 import org.openworld.engine.camera.CameraDirection;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.colour.Shimmer;
 import org.openworld.engine.gl.Image;
+import org.openworld.engine.settings.Settings;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -38,11 +40,14 @@ final class StabilityCommand implements Callable<Integer> {
     static final int REFERENCE_SCALE = 4;
 
     /**
-     * The references are supersampled, not post-filtered: the measure's zero is 16 plain samples a pixel. The
-     * terrain's level of detail, chosen by its error in pixels, is scaled with them, so that a reference draws the
-     * same triangles as the frame and differs only in its samples (the setting's largest value caps it).
+     * The references are supersampled, not post-filtered: the measure's zero is 16 plain samples a pixel, drawn at
+     * render scale 1 whatever the frame's (a frame drawn at 0.65 or 2 is measured against the same 16 samples). The
+     * terrain's level of detail, chosen by its error in the scene target's pixels, is scaled with them (by the
+     * reference's pixels per scene pixel of the frame), so that a reference draws the same triangles as the frame
+     * and differs only in its samples (the setting's largest value caps it).
      */
     private static final String REFERENCE_AA = "antialias.method=off";
+    private static final String REFERENCE_SCALE_ONE = "engine.render-scale=1";
     private static final String LOD_ERROR = "lod.pixel-error";
     private static final double LOD_ERROR_MAX = 100;
 
@@ -84,14 +89,16 @@ final class StabilityCommand implements Callable<Integer> {
     }
 
     /**
-     * The options of the references: {@value #REFERENCE_SCALE} times the size, without anti-aliasing, the terrain's
-     * pixel error {@value #REFERENCE_SCALE} times as many pixels.
+     * The options of the references: {@value #REFERENCE_SCALE} times the size, without anti-aliasing, at render
+     * scale 1, the terrain's pixel error {@value #REFERENCE_SCALE} / the frame's render scale times as many pixels.
      */
     static RenderOptions reference(RenderOptions render) {
-        double error = Double.parseDouble(Launch.settings(render).text(LOD_ERROR));
+        Settings settings = Launch.settings(render);
+        double error = Double.parseDouble(settings.text(LOD_ERROR));
+        double scale = settings.get(EngineSettings.class).renderScale();
         return render.resized(new Size(render.size.width() * REFERENCE_SCALE,
-                render.size.height() * REFERENCE_SCALE), List.of(REFERENCE_AA,
-                LOD_ERROR + "=" + Math.min(LOD_ERROR_MAX, error * REFERENCE_SCALE)));
+                render.size.height() * REFERENCE_SCALE), List.of(REFERENCE_AA, REFERENCE_SCALE_ONE,
+                LOD_ERROR + "=" + Math.min(LOD_ERROR_MAX, error * REFERENCE_SCALE / scale)));
     }
 
     /** The picture {@code shot --camera pose} makes with these render options. */

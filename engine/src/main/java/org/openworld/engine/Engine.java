@@ -46,7 +46,7 @@ import org.openworld.engine.settings.SettingsGroup;
  *       ({@link EngineSystem#beginPass}), and the systems draw in resolved order;</li>
  *   <li>with {@code antialias.method} on, the scene target anti-aliased ({@link Antialiasing});</li>
  *   <li>below {@code engine.render-scale} 1, the scene target, drawn smaller, is stretched over the full-size
- *       picture ({@link ScaledScene});</li>
+ *       picture; at 2, drawn larger, it is halved, each pixel the mean of four ({@link ScaledScene});</li>
  *   <li>the picture is read back (headless) or shown (window).</li>
  * </ol>
  * Each system's CPU time and each pass's GPU time (timer queries) are measured every frame and come out as

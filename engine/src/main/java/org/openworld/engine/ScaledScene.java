@@ -22,7 +22,10 @@ import org.openworld.engine.gl.Sampling;
  * frame one blit with linear filtering stretches it over the picture. The picture is what the window shows, what is
  * read back and what the panel and HUD draw over, so the picture keeps its size and the text stays sharp; the price
  * is a softer picture (an edge blurs over about 1 / scale pixels) and the blit itself, one read and one write per
- * picture pixel. At scale 1 the two are one target: nothing is copied and the picture is what it was without a scale.
+ * picture pixel. At scale 2 (supersampling, the one scale above 1: {@link EngineSettings}) the passes draw four times
+ * the pixels and the same blit halves each side: every picture pixel's centre falls between four samples, so the
+ * linear filter returns their mean, a box filter over the pixel.
+ * At scale 1 the two are one target: nothing is copied and the picture is what it was without a scale.
  * With anti-aliasing on, its pass writes the scene into a colour target of the scene's size, which is the picture at
  * scale 1 and what is stretched below it; off, that target is the scene target itself.
  */
@@ -96,12 +99,12 @@ final class ScaledScene {
         return resolved != scene;
     }
 
-    /** Whether the scene is drawn smaller than the picture, to be stretched over it at the end of the frame. */
+    /** Whether the scene is drawn at another size than the picture, to be resized to it at the end of the frame. */
     boolean scaled() {
         return picture != resolved;
     }
 
-    /** Stretches the (anti-aliased) scene over the picture, filtering linearly. */
+    /** Stretches the (anti-aliased) scene over the picture, or at scale 2 halves it, filtering linearly. */
     void upscale() {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved.id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, picture.id());

@@ -24,7 +24,8 @@ import org.openworld.engine.gl.Image;
 
 /**
  * {@code engine.render-scale} on real GL: the viewer's passes draw into a smaller target, the picture keeps the
- * requested size and is that smaller picture stretched with linear filtering; what draws over the picture draws at
+ * requested size and is that smaller picture stretched with linear filtering; at 2 they draw into a larger one and
+ * each picture pixel is the mean of its 2 × 2 samples; what draws over the picture draws at
  * its full size; a change of the scale between frames re-makes the targets.
  */
 @GlTest
@@ -78,6 +79,42 @@ class RenderScaleTest {
         int y = SIZE * 3 / 4;
         assertEquals(191, scaled.channel(SIZE / 2 - 1, y, 0), 2);
         assertEquals(64, scaled.channel(SIZE / 2, y, 0), 2);
+    }
+
+    /**
+     * At 2 the passes draw at twice the picture's sides and each picture pixel is the mean of its 2 × 2 samples. The
+     * picture is 63 pixels a side so that the red quarter's edges (at 63 of the 126 samples) cut pixel 31 in half:
+     * supersampled, it is half red; drawn at the picture's size, or halved by a nearest blit, it would be all red or
+     * all green.
+     */
+    @Test
+    void atTwoEachPixelIsTheMeanOfItsTwoByTwoSamples() {
+        int odd = SIZE - 1;
+        Image supersampled;
+        Image large;
+        try (Engine engine = engine(odd, "engine.render-scale=2")) {
+            engine.render();
+            supersampled = engine.readImage();
+            assertEquals(2 * odd, calls.get(0).target().width(), "the passes draw at twice the size");
+        }
+        try (Engine engine = engine(2 * odd)) {
+            engine.render();
+            large = engine.readImage();
+        }
+        assertEquals(odd, supersampled.width());
+        Image expected = stretched(large, odd, odd);
+        for (int y = 0; y < odd; y++) {
+            for (int x = 0; x < odd; x++) {
+                for (int c = 0; c < 3; c++) {
+                    // ± 2 of 255, as above: one rounding into the 8-bit target, fixed-point filter weights
+                    assertEquals(expected.channel(x, y, c), supersampled.channel(x, y, c), 2,
+                            "pixel " + x + "," + y + " channel " + c);
+                }
+            }
+        }
+        int y = odd * 3 / 4; // a row through the red quarter (the image counts rows from the top)
+        assertEquals(255, supersampled.channel(odd / 2 - 1, y, 0), 2, "all red left of the edge");
+        assertEquals(128, supersampled.channel(odd / 2, y, 0), 2, "the pixel the edge halves: half red");
     }
 
     @Test

@@ -21,11 +21,16 @@ class ScaledSceneTest {
     }
 
     @Test
-    void aScaleOutsideAQuarterToOneIsRefusedNamingTheRange() {
+    void aScaleOutsideAQuarterToOneOrTwoIsRefusedNamingTheRange() {
         Settings settings = Engine.settingsFor(List.of());
         settings.set("engine.render-scale", "0.25");
         assertEquals(0.25, settings.get(EngineSettings.class).renderScale());
+        settings.set("engine.render-scale", "2");
+        assertEquals(2, settings.get(EngineSettings.class).renderScale());
         SettingsException e = assertThrows(SettingsException.class, () -> settings.set("engine.render-scale", "1.5"));
-        assertTrue(e.getMessage().contains("0.25 .. 1"), e.getMessage());
+        assertTrue(e.getMessage().contains("engine.render-scale") && e.getMessage().contains("must be 2"),
+                e.getMessage());
+        e = assertThrows(SettingsException.class, () -> settings.set("engine.render-scale", "3"));
+        assertTrue(e.getMessage().contains("0.25 .. 2"), e.getMessage());
     }
 }
