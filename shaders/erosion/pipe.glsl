@@ -11,7 +11,8 @@ uniform int uPeriodic;     // 1: the grid wraps; 0: an apron, past whose edge li
 uniform float uDt;         // s
 uniform float uRain;       // m/s
 uniform float uSpacing;    // m: the pipes' length l
-uniform float uCapacity;   // K_c, s
+uniform float uCapacity;   // K_c, s/m
+uniform float uDepthCap;   // m: deeper water carries no more
 uniform float uDissolve;   // K_s
 uniform float uDeposit;    // K_d
 uniform float uEvaporate;  // K_e, 1/s

@@ -1,6 +1,6 @@
 #version 330 core
 // Virtual-pipe erosion, pass 2 (PipeErosion.waterPass): the water moved by the fluxes, its velocity, and the bed
-// eroded or built up towards the carrying capacity C = K_c sin(alpha) |v| d.
+// eroded or built up towards the carrying capacity C = K_c sin(alpha) |v| min(d, depth cap).
 #include "erosion/pipe.glsl"
 
 out vec4 outState;
@@ -31,7 +31,7 @@ void main() {
     float gz = (h[3] - h[2]) / (2.0 * l);
     float tan2 = gx * gx + gz * gz;
     float sine = max(uMinSine, sqrt(tan2 / (1.0 + tan2)));
-    float cap = uCapacity * sine * sqrt(u * u + v * v) * water;
+    float cap = uCapacity * sine * sqrt(u * u + v * v) * min(water, uDepthCap);
     float bed = here.r;
     float load = here.b;
     if (cap > load) {

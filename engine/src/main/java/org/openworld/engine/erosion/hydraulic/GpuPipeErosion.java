@@ -45,13 +45,14 @@ public final class GpuPipeErosion implements PipeState.Runner {
     public PipeState run(float[] heights, int n, PipeModel model, int steps) {
         Map<String, Float> values = Map.of("uDt", (float) model.dt(), "uRain", (float) model.rain(),
                 "uSpacing", (float) model.spacing(), "uCapacity", (float) model.capacity(),
-                "uDissolve", (float) model.dissolve(), "uDeposit", (float) model.deposit(),
+                "uDepthCap", (float) model.depthCap(), "uDissolve", (float) model.dissolve(),
+                "uDeposit", (float) model.deposit(),
                 "uEvaporate", (float) model.evaporate(), "uMinSine", (float) model.minSine(),
                 "uTalus", (float) model.talus());
         int periodic = model.border() == PipeModel.Border.PERIODIC ? 1 : 0;
         try (ShaderProgram flux = program("erosion/flux.frag", n, periodic, values, "uDt", "uRain", "uSpacing");
              ShaderProgram water = program("erosion/water.frag", n, periodic, values, "uDt", "uRain", "uSpacing",
-                     "uCapacity", "uDissolve", "uDeposit", "uMinSine");
+                     "uCapacity", "uDepthCap", "uDissolve", "uDeposit", "uMinSine");
              ShaderProgram transport = program("erosion/transport.frag", n, periodic, values, "uDt", "uSpacing",
                      "uEvaporate", "uTalus");
              Mesh triangle = Mesh.fullScreenTriangle(gl);

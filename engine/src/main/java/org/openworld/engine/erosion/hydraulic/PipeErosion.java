@@ -156,7 +156,8 @@ public final class PipeErosion {
                 float gz = (h[3] - h[2]) / (2 * l);
                 float tan2 = gx * gx + gz * gz;
                 float sine = Math.max((float) model.minSine(), (float) Math.sqrt(tan2 / (1 + tan2)));
-                float cap = (float) model.capacity() * sine * (float) Math.sqrt(u * u + v * v) * water;
+                float cap = (float) model.capacity() * sine * (float) Math.sqrt(u * u + v * v)
+                        * Math.min(water, (float) model.depthCap());
                 float bed = b[i];
                 float load = s[i];
                 if (cap > load) {

@@ -10,9 +10,11 @@ package org.openworld.engine.erosion.hydraulic;
  * @param dt         time step, s; with the outflow scaled so no cell loses more water than it holds, water moves at
  *                   most one cell a step, whatever Δt (the scheme's CFL limit is built in)
  * @param rain       water added to every cell, m/s
- * @param capacity   K_c, s/m: sediment a stream can carry, {@code C = K_c · sin α · |v| · d} metres of material: the
- *                   paper's {@code K_c sin α |v|} times the depth, so the load grows with the discharge per metre of
- *                   width {@code |v| d} and a film of rain carries no more than a film's worth
+ * @param capacity   K_c, s/m: sediment a stream can carry, {@code C = K_c · sin α · |v| · min(d, depthCap)} metres
+ *                   of material: the paper's {@code K_c sin α |v|} times the depth, so the load grows with the
+ *                   discharge per metre of width {@code |v| d} and a film of rain carries no more than a film's worth
+ * @param depthCap   m: the depth beyond which a stream carries no more (a river's bed load does not grow with the
+ *                   water piled above it, and without friction deep water would cut without end)
  * @param dissolve   K_s: share of the missing load {@code C − s} taken from the bed in one step, 0..1
  * @param deposit    K_d: share of the excess load {@code s − C} laid down in one step, 0..1
  * @param evaporate  K_e, 1/s: water lost as {@code d ← d (1 − K_e Δt)}
@@ -21,8 +23,9 @@ package org.openworld.engine.erosion.hydraulic;
  * @param border     what lies past the grid's edge
  * @param advection  how the suspended sediment moves with the water
  */
-public record PipeModel(double spacing, double dt, double rain, double capacity, double dissolve, double deposit,
-                        double evaporate, double minSine, double talus, Border border, Advection advection) {
+public record PipeModel(double spacing, double dt, double rain, double capacity, double depthCap, double dissolve,
+                        double deposit, double evaporate, double minSine, double talus, Border border,
+                        Advection advection) {
 
     /** Gravity, m/s². */
     public static final double GRAVITY = 9.81;
@@ -63,19 +66,19 @@ public record PipeModel(double spacing, double dt, double rain, double capacity,
      * sediment in that time on slopes of tens of degrees, the given talus.
      */
     public static PipeModel tile(double spacing, double talusDegrees, Border border) {
-        return new PipeModel(spacing, 0.1, 0.01, 0.1, 0.3, 0.3, 0.5, 0.05,
+        return new PipeModel(spacing, 0.1, 0.01, 0.1, 0.1, 0.3, 0.3, 0.5, 0.05,
                 Math.tan(Math.toRadians(talusDegrees)), border, Advection.FLUX);
     }
 
     /** The same model with another border. */
     public PipeModel with(Border other) {
-        return new PipeModel(spacing, dt, rain, capacity, dissolve, deposit, evaporate, minSine, talus, other,
+        return new PipeModel(spacing, dt, rain, capacity, depthCap, dissolve, deposit, evaporate, minSine, talus, other,
                 advection);
     }
 
     /** The same model with another advection. */
     public PipeModel with(Advection other) {
-        return new PipeModel(spacing, dt, rain, capacity, dissolve, deposit, evaporate, minSine, talus, border,
+        return new PipeModel(spacing, dt, rain, capacity, depthCap, dissolve, deposit, evaporate, minSine, talus, border,
                 other);
     }
 }

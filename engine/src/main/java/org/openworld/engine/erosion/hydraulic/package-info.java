@@ -15,7 +15,7 @@
  *       {@code K = min(1, d₁ l² / (Σf Δt))} so a cell never loses more water than it holds;</li>
  *   <li>{@code water.frag}: {@code d₂ = d₁ + Δt (Σf_in − Σf_out) / l²}; the velocity from the net flow through the
  *       cell's faces, {@code u = ½ (f_R(x−1) − f_L(x) + f_R(x) − f_L(x+1)) / (l d̄)}; the carrying capacity
- *       {@code C = K_c · sin α · |v| · d₂}; below it the bed gives {@code K_s (C − s)} to the load, above it the load
+ *       {@code C = K_c · sin α · |v| · min(d₂, d_cap)}; below it the bed gives {@code K_s (C − s)} to the load, above it the load
  *       lays {@code K_d (s − C)} on the bed;</li>
  *   <li>{@code transport.frag}: the load moves with the water, and the water evaporates,
  *       {@code d ← d₂ (1 − K_e Δt)};</li>
@@ -27,7 +27,8 @@
  * <p><b>Where it departs from the paper.</b> The capacity has the depth as a factor: the paper's
  * {@code K_c sin α |v|} lets a film of rain a few millimetres deep carry tens of centimetres of sediment, because the
  * pipes have no friction and the sheet runs at the scheme's limit of one cell a step; with the depth, the load grows
- * with the discharge per metre of width, as in stream-power transport laws. The paper moves the load
+ * with the discharge per metre of width, as in stream-power transport laws, up to a depth d_cap (10 cm) past which
+ * deeper water carries no more (without friction a deep river would otherwise cut without end). The paper moves the load
  * semi-Lagrangianly, {@code s(x) ← s(x − v Δt)} read bilinearly, which does not keep the mass (what is read is not
  * what left: PipeErosionTest measures it drifting past float rounding); the default
  * ({@link org.openworld.engine.erosion.hydraulic.PipeModel.Advection#FLUX}) sends each pipe the share of the cell's

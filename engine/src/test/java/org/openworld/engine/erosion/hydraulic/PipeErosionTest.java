@@ -127,7 +127,7 @@ class PipeErosionTest {
                 h[z * n + x] = (float) (steep * SPACING * Math.min(x, 10));
             }
         }
-        PipeModel dry = new PipeModel(SPACING, 0.1, 0, 0.02, 0.3, 0.3, 0.5, 0.05, Math.tan(Math.toRadians(38)),
+        PipeModel dry = new PipeModel(SPACING, 0.1, 0, 0.1, 0.1, 0.3, 0.3, 0.5, 0.05, Math.tan(Math.toRadians(38)),
                 PipeModel.Border.APRON, PipeModel.Advection.FLUX);
         float[] after = PipeErosion.simulate(h, n, dry, 2000).heights();
         double limit = dry.talus() * SPACING;
