@@ -70,7 +70,7 @@ public final class TileGround implements Ground {
         HeightMap base = data.pyramid().base();
         tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         layout = PatchLayout.tile(base, cells, data.lowest(), data.highest());
-        maps = new TerrainMaps(context, data.pyramid(), data.snow(), unitHeights, times);
+        maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sediment(), unitHeights, times);
         shading = TerrainShading.baked(context, layout, base, seed, unitHeights, times);
         bind(unitHeights, unitGradients, unitSnow);
         shading.bake(context.settings().get(MaterialSettings.class));
