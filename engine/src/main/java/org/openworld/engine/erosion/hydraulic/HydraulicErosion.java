@@ -65,8 +65,10 @@ public final class HydraulicErosion {
      * overlap this block). Water runs off the apron's outer edge; the block inside is returned, with its change.
      * Deterministic: the same samples give the same bits, whichever block is made first. Two neighbours differ
      * where they meet by what their different borders did: each pass reads a cell's neighbours, so a border's effect
-     * can reach 4 cells a step inwards, though it fades over a few cells where the water runs away from it; a wide
-     * apron (and a blend across the seam) is the caller's to choose and test.
+     * can reach 4 cells a step inwards, though it fades over a few cells where the water runs away from it: on
+     * HydraulicBlockTest's hills (150 steps at 8 m) a block's edge is 2.2 m from the same place in a run over a far
+     * larger window with an apron of 4 samples, 15 µm (float rounding) with an apron of 24. How wide an apron, and
+     * whether to blend across the seam, is the caller's to choose and test on its own relief.
      */
     public static Result block(float[] heights, int size, int apron, double spacing, double talusDegrees, int steps,
                                PipeState.Runner runner) {
