@@ -25,7 +25,8 @@ import org.openworld.engine.gl.Texture2D;
  * once and the state read back once, at the end.
  *
  * <p>Cost: 3 passes a step, each a handful of texel fetches per cell (the transport's 13 the most); GPU memory
- * 4 × 16 bytes a cell (16 MiB at 512²). On llvmpipe (two loaded cores) 512² cells take about 6 ms a pass. Binds
+ * 4 × 16 bytes a cell (16 MiB at 512²). On llvmpipe, 512² cells took 64 to 150 ms a pass of wall time with the
+ * two-core machine's load at 23 (the tile's 450 passes: 29 to 66 s); a hardware GPU has not been measured. Binds
  * texture units 0 and 1 and leaves the program in use changed; the framebuffer, viewport and tests are given back.
  */
 public final class GpuPipeErosion implements PipeState.Runner {

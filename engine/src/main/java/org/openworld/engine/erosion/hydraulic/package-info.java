@@ -50,9 +50,11 @@
  * {@link org.openworld.engine.erosion.hydraulic.PipeErosion} is the same scheme on the CPU, operation for operation,
  * the reference the GPU is tested against and the step a machine without OpenGL runs ({@code heightmap}).
  *
- * <p><b>Cost.</b> GPU: 3 passes a step over the grid, 4 RGBA32F textures (64 bytes a cell). On the tile (512² at
- * 8 m, {@value org.openworld.engine.erosion.hydraulic.HydraulicErosion#TILE_STEPS} steps) see
- * {@link org.openworld.engine.erosion.hydraulic.HydraulicErosion}. CPU: about 25 ns a cell-step on one core.
+ * <p><b>Cost.</b> GPU: 3 passes a step over the grid, 4 RGBA32F textures (64 bytes a cell: 16 MiB at 512²), at
+ * start only. The tile (512² at 8 m, {@value org.openworld.engine.erosion.hydraulic.HydraulicErosion#TILE_STEPS}
+ * steps, 450 passes): 29 to 66 s on llvmpipe with the shared two-core machine's load at 23, the {@code hydraulic}
+ * stage of the start-up times; not yet measured on a hardware GPU. CPU reference: 14 to 55 s of wall time on the
+ * same loaded machine.
  *
  * <p><b>Limits.</b> The pipes have no friction, so the sheet runs at the scheme's speed limit (l / Δt) and the
  * "velocity" is a rate of transport rather than a speed; the run is short, so the water does not reach the sea from
