@@ -32,7 +32,8 @@ out vec4 fragColor;
 
 #ifdef TERRAIN_CLIPMAP
 uniform sampler2DArray slopes; // (dh/dx, dh/dz) of each level's window around the camera, wrapping (HeightClipmap)
-uniform sampler2DArray snowMap; // r snow coverage (StreamedSnow), g the share of the sky seen (1 until it streams)
+uniform sampler2DArray snowMap; // r snow coverage (StreamedSnow), g the share of the sky seen (1 until it streams);
+                                // b, a as the tile's (two channels: b 0, a 1, no erosion)
 uniform float clipExtent;      // metres across level 0's window: clipSize · spacing
   #ifdef TERRAIN_FARFIELD
 in float farRelief;            // 1 on the streamed relief, 0 on level ground where the window may not reach
@@ -40,7 +41,8 @@ uniform float uFarSnow;        // the level ground's snow: what the snow rule le
   #endif
 #else
 uniform sampler2D gradients;   // (dh/dx, dh/dz) of the finest level, filtered (not read by the far variants)
-uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (HorizonSearch)
+uniform sampler2D snowMap;     // r snow coverage 0..1, g the share of the sky the relief leaves (HorizonSearch),
+                               // b the erosion's sediment cover, a 1 - the bed it bared (ErosionCover)
 uniform sampler2D farColour;   // baked steps 1-3 of material.glsl (FarMaterial): rgb albedo (sRGB stored), a gloss
 uniform sampler2D farSlope;    // ... and rg the detail slope, encoded s * 0.5 + 0.5, ba the ground's (dh/dx, dh/dz)
 uniform float extent;          // metres per map tile
@@ -60,7 +62,7 @@ void main() {
 #ifdef TERRAIN_CLIPMAP
     vec3 clipUv = clipmapCoordinates(wsPos.xz, lodLevel, clipExtent, textureSize(slopes, 0).x);
     vec2 slope = texture(slopes, clipUv).xy;
-    vec2 snowAndSky = texture(snowMap, clipUv).rg; // the sky seen: the far program's comes per vertex
+    vec4 snowAndSky = texture(snowMap, clipUv); // the sky seen: the far program's comes per vertex
   #ifdef TERRAIN_FARFIELD // past the window the layer wraps round to other ground: level ground there (farfield.vert)
     slope *= farRelief;
     snowAndSky.r = mix(uFarSnow, snowAndSky.r, farRelief);
@@ -98,9 +100,11 @@ void main() {
   #else
     s.height01 = clamp((wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
     #ifndef TERRAIN_CLIPMAP
-    vec2 snowAndSky = texture(snowMap, uv).rg;
+    vec4 snowAndSky = texture(snowMap, uv);
     #endif
     s.snow = snowAndSky.r;
+    s.sediment = snowAndSky.b;
+    s.bare = 1.0 - snowAndSky.a;
     #ifdef TERRAIN_FAR // the unbounded world's far ground: the coarse scale alone, its sky per vertex
     s.skyVisibility = 1.0;
     m = terrainMaterial(s, 1.0, matMacroTint(wsPos.xz));

@@ -64,7 +64,10 @@ void main() {
     s.wsBitangent = normalize(vec3(0.0, slope.y, 1.0));
     s.wsNormal = normalize(vec3(-slope.x, 1.0, -slope.y));
     s.height01 = clamp((s.wsPos.y - heightRange.x) * heightRange.y, 0.0, 1.0);
-    s.snow = texture(snowMap, uv).r;
+    vec4 maps = texture(snowMap, uv);
+    s.snow = maps.r;
+    s.sediment = maps.b;
+    s.bare = 1.0 - maps.a;
     MatTexel m = terrainMaterial(s, matCoarseWeight(MAT_COARSE_FAR), macroTint(wsXZ));
     farColour = vec4(m.albedo, m.gloss);
     // the gradient too, so the far program reads the ground's slope from this texel instead of a third texture

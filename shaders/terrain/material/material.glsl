@@ -18,7 +18,8 @@
 //      with MAT_TRIPLANAR (materials.cliffs=triplanar, near terrain only) the rock is also projected along X and Z;
 //      with MAT_COARSE_ONLY (the unbounded world's far terrain) only the coarse tile is read
 //   2. how much rock and snow: rock by altitude and slope, snow from the snow map (or plain altitude bands), both
-//      with noise-bent edges; snow slides off steep slopes
+//      with noise-bent edges; snow slides off steep slopes; what the erosion left (ErosionCover): its sediment as
+//      alluvium on gentle ground and scree on steep, its bared bed as rock, snow gathering on the sediment
 //   3. layering: rock over grass where rock's relief stands highest first, snow over both filling hollows first
 //   4. detail: the blended tangent-space normal through the TBN (wsTangent, wsBitangent, wsNormal)
 //   5. light: Lambert sun, the sky's and the sunlit ground's irradiance for the normal (frame.glsl skyIrradiance)
@@ -81,6 +82,8 @@ struct TerrainSurface {
     float height01;    // height normalised over the map's range, 0 = lowest, 1 = highest
     float snow;        // snow-map coverage here, 0..1 (already filtered)
     float skyVisibility; // share of the sky the relief leaves here, 0..1 (HorizonSearch; the far ground: per vertex)
+    float sediment;    // the erosion's sediment cover here, 0..1 (ErosionCover; 0 where none ran)
+    float bare;        // the bed the erosion bared here, 0..1
 };
 
 const float MAT_GRASS = 0.0;         // texture array layers (TerrainTextures.Material order)
@@ -102,6 +105,10 @@ const float MAT_ROCK_SLOPE = 0.82;   // normal.y (35 deg) from which soil no lon
 const float MAT_ROCK_CLIFF = 0.68;   // ... fully rock at normal.y 0.68 (47 deg)
 const float MAT_SNOW_HOLDS = 0.62;   // normal.y (52 deg) beyond which snow starts to slide off...
 const float MAT_SNOW_SLIDES = 0.48;  // ... and is gone at normal.y 0.48 (61 deg)
+const float MAT_SCREE_SLOPE = 0.9;   // normal.y (26 deg) from which sediment lies as scree rather than alluvium...
+const float MAT_SCREE_FULL = 0.8;    // ... all scree at normal.y 0.8 (37 deg, the talus the erosion leaves: 38 deg)
+const float MAT_SNOW_GULLY = 0.35;   // snow-map probability added where the erosion's sediment lies: snow slides
+                                     // off the faces above into the gullies and onto the scree below them
 const float MAT_EDGE_NOISE = 0.12;   // normalised height / slope by which the macro noise bends the blend edges
 const float MAT_LAYER_SOFTNESS = 0.15; // relief units over which a layer's cover fades (height-based blending)
 // 5. light
@@ -400,8 +407,14 @@ MatTexel terrainMaterial(TerrainSurface s, float coarseWeight, vec2 macroTint) {
     float rockByHeight = smoothstep(MAT_GRASS_LINE - 0.06, MAT_GRASS_LINE + 0.06, s.height01 + edge);
     float rockBySlope = smoothstep(MAT_ROCK_SLOPE, MAT_ROCK_CLIFF, n0y + 0.5 * edge);
     float rockAmount = max(rockByHeight, rockBySlope);
-    float sticks = smoothstep(MAT_SNOW_SLIDES, MAT_SNOW_HOLDS, n0y);
-    float snowByMap = smoothstep(0.3, 0.7, s.snow + edge * 2.0) * sticks;
+    // what the erosion left (ErosionCover): sediment is scree on steep ground (the talus's foot), alluvium on gentle
+    // ground (valley floors, over the rock that the height alone would put there); the bared bed is rock
+    float screeShare = smoothstep(MAT_SCREE_SLOPE, MAT_SCREE_FULL, n0y + 0.5 * edge);
+    float scree = s.sediment * screeShare;
+    float alluvium = s.sediment * (1.0 - screeShare);
+    rockAmount = max(max(rockAmount * (1.0 - alluvium), s.bare), scree);
+    float sticks = smoothstep(MAT_SNOW_SLIDES, MAT_SNOW_HOLDS, n0y) * (1.0 - s.bare);
+    float snowByMap = smoothstep(0.3, 0.7, s.snow + edge * 2.0 + MAT_SNOW_GULLY * s.sediment) * sticks;
     float snowByBand = smoothstep(uMatSnowBand.x, uMatSnowBand.y, s.height01);
     float snowAmount = uMatSnowMode == MAT_SNOW_MAP ? snowByMap : snowByBand;
 
@@ -423,6 +436,13 @@ MatTexel terrainMaterial(TerrainSurface s, float coarseWeight, vec2 macroTint) {
     surface.height = mix(grass.height, rock.height, rockCover);
     surface.gloss = mix(grass.gloss, rock.gloss, rockCover);
     surface.albedo *= mix(vec3(1.0), vec3(0.85 + 0.3 * tint, 0.85 + 0.25 * tint, 0.9 + 0.15 * tint), rockCover);
+    // scree: fresh broken rock, lighter than the weathered faces it fell from; alluvium: pale grey-beige gravel and
+    // sand (the rock's texels, washed), matte, under a thin meadow where the macro noise is green
+    surface.albedo *= 1.0 + 0.3 * scree;
+    float gravel = matCover(alluvium * (1.1 - 0.4 * tint), 1.0 - rock.height);
+    surface.albedo = mix(surface.albedo, rock.albedo * vec3(1.25, 1.18, 1.0), gravel);
+    surface.slope = mix(surface.slope, rock.slope * 0.5, gravel);
+    surface.gloss = mix(surface.gloss, 0.5 * rock.gloss, gravel);
     float snowCover = matCover(snowAmount, surface.height);
     surface.albedo = mix(surface.albedo, snow.albedo, snowCover);
     surface.slope = mix(surface.slope, snow.slope, snowCover);

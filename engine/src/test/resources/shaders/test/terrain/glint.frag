@@ -23,6 +23,8 @@ void main() {
     s.height01 = 0.1;
     s.snow = 0.0;
     s.skyVisibility = uSkyVisibility;
+    s.sediment = 0.0; // no erosion
+    s.bare = 0.0;
     MatTexel m = terrainMaterial(s, 0.5, matMacroTint(s.wsPos.xz)); // one ground point: one macro value
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     bool bumpy = gl_FragCoord.x > 0.5 * frame.viewport.x;

@@ -32,5 +32,7 @@ void main() {
     float patchy = matValueNoise(wsPos.xz / 180.0, vec2(0.0)) + 0.5 * matValueNoise(wsPos.xz / 60.0, vec2(0.0));
     s.snow = smoothstep(0.5, 0.62, s.height01 + 0.2 * (patchy - 0.75));
     s.skyVisibility = uSkyVisibility;
+    s.sediment = 0.0; // no erosion
+    s.bare = 0.0;
     fragColor = vec4(displayColor(applyFog(shadeTerrain(s), wsPos)), 1.0);
 }

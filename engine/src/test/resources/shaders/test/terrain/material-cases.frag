@@ -12,6 +12,8 @@ uniform float uSkyVisibility; // the share of the sky the relief leaves (set to 
 #include "common/color.glsl"
 
 uniform vec3 uCentre;          // world point at each cell's centre, on the ground (y = 0)
+uniform float uSediment;       // the erosion's sediment cover on every cell (0: none)
+uniform float uBare;           // the bed the erosion bared on every cell (0: none)
 out vec4 fragColor;
 
 const float CELL_METRES = 2.5; // width of ground one cell shows
@@ -25,6 +27,8 @@ TerrainSurface ground(vec2 wsXZ, float gradientX, float height01, float snow) {
     s.height01 = height01;
     s.snow = snow;
     s.skyVisibility = uSkyVisibility;
+    s.sediment = uSediment;
+    s.bare = uBare;
     return s;
 }
 

@@ -23,10 +23,16 @@
  * at this scale and gives no guaranteed θ. It is detachment-limited: eroded material leaves through the sea, none is
  * deposited.
  *
+ * <p><b>Then sediment.</b> {@code TerrainData} runs the hydraulic and thermal erosion of
+ * {@link org.openworld.engine.erosion.hydraulic} on the carved 8 m level (on the GPU at start, on the CPU in the
+ * {@code heightmap} command): the slopes' sheet wash laid in the valley floors, the faces above the talus slid to
+ * their feet.
+ *
  * <p><b>Cost.</b> 4.7–7.2 s for the default 2048² tile at start (eight routings of 512², each a priority-flood),
  * on the shared two-core machine; nothing per frame. Memory: a few arrays of the 512² level.
  *
  * <p><b>Limits.</b> CPU only and the tile only (the unbounded world is not eroded); Hack's exponent stays at
- * 0.45; hillslopes at the talus are planar faces between 8 m samples; no sediment, no alluvial fans.
+ * 0.45; hillslopes at the talus are planar faces between 8 m samples; this step lays no sediment (the hydraulic
+ * step does).
  */
 package org.openworld.engine.erosion;

@@ -3,6 +3,9 @@ package org.openworld.engine.terrain;
 import java.nio.file.Path;
 import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.erosion.TileErosion;
+import org.openworld.engine.erosion.hydraulic.HydraulicErosion;
+import org.openworld.engine.erosion.hydraulic.PipeErosion;
+import org.openworld.engine.erosion.hydraulic.PipeState;
 import org.openworld.engine.terrain.heights.HeightImport;
 import org.openworld.engine.terrain.heights.HeightImportException;
 import org.openworld.engine.terrain.heights.HeightMap;
@@ -23,8 +26,10 @@ import org.openworld.engine.terrain.material.SnowMap;
  *                or the file's 0 m for a map at true scale
  * @param highest the height read as normalised 1: the map's highest sample, or
  *                {@link ElevationImport#TRUE_SCALE_RELIEF} above the file's 0 m
+ * @param sediment what the hydraulic erosion changed, metres (sediment laid +, bed carried off −), on the grid it
+ *                 ran on; null where it did not run
  */
-public record TerrainData(HeightPyramid pyramid, SnowMap snow, double lowest, double highest) {
+public record TerrainData(HeightPyramid pyramid, SnowMap snow, double lowest, double highest, HeightMap sediment) {
 
     /** Stage names as {@link StageTimes} records them. */
     public static final String SYNTHESIS = "synthesis";
@@ -33,33 +38,47 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, double lowest, do
     public static final String PYRAMID = "pyramid";
     public static final String SNOW_MAP = "snow map";
     public static final String EROSION = "erosion";
+    public static final String HYDRAULIC = "hydraulic";
 
-    /** Makes a tile's data from the settings and the seed: {@link #create}, or a tile of another source. */
+    /**
+     * Makes a tile's data from the settings and the seed: {@link #create}, or a tile of another source; {@code pipes}
+     * runs the hydraulic erosion (on the GPU where there is one).
+     */
     @FunctionalInterface
     public interface Maker {
-        TerrainData make(TerrainSettings s, int seed, StageTimes times);
+        TerrainData make(TerrainSettings s, int seed, StageTimes times, PipeState.Runner pipes);
+    }
+
+    /** {@link #create(TerrainSettings, int, StageTimes, PipeState.Runner)} with the hydraulic erosion on the CPU. */
+    public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
+        return create(s, seed, times, PipeErosion::simulate);
     }
 
     /**
      * Makes the heights (synthesised from the seed, or imported when {@link TerrainSettings#importFile()} is set),
+     * eroded with {@link TerrainSettings#erosion()} (stream power, then the hydraulic erosion run by {@code pipes}),
      * their pyramid and the snow map, timing each stage into {@code times}.
      *
      * @throws HeightImportException if the import file cannot be used
      */
-    public static TerrainData create(TerrainSettings s, int seed, StageTimes times) {
+    public static TerrainData create(TerrainSettings s, int seed, StageTimes times, PipeState.Runner pipes) {
         Path file = Path.of(s.importFile());
         boolean real = s.imports() && ElevationImport.handles(file);
         HeightMap made = s.imports()
                 ? times.time(IMPORT, () -> real ? ElevationImport.read(file, s, seed) : HeightImport.read(file, s))
                 : times.time(SYNTHESIS, () -> SpectralSynthesis.generate(s, seed));
-        HeightMap base = s.erosion() ? times.time(EROSION, () -> TileErosion.erode(made, s.erosionTalus())) : made;
+        HeightMap carved = s.erosion() ? times.time(EROSION, () -> TileErosion.erode(made, s.erosionTalus())) : made;
+        HydraulicErosion.Result washed = s.erosion() ? times.time(HYDRAULIC, () -> HydraulicErosion.tile(carved,
+                TileErosion.routingLevel(carved), s.erosionTalus(), pipes)) : null;
+        HeightMap base = washed == null ? made : washed.heights();
+        HeightMap sediment = washed == null ? null : washed.change();
         if (!(real && s.importScale())) {
-            return of(base, s, seed, times);
+            return of(base, s, seed, times, base.min(), base.max(), sediment);
         }
         // a map at true scale lays its snow and rock by altitude in metres, not over its own range
         TerrainSettings metres = ElevationImport.trueScale(s);
         double lowest = -metres.seaFraction() * metres.relief();
-        return of(base, metres, seed, times, lowest, lowest + metres.relief());
+        return of(base, metres, seed, times, lowest, lowest + metres.relief(), sediment);
     }
 
     /**
@@ -72,18 +91,14 @@ public record TerrainData(HeightPyramid pyramid, SnowMap snow, double lowest, do
                                  StageTimes times) {
         HeightMap base = times.time(SAMPLING, () -> new HeightMap(size, source.spacing(0),
                 source.level(0, -size / 2, -size / 2, size), periodic));
-        return of(base, s, seed, times);
+        return of(base, s, seed, times, base.min(), base.max(), null);
     }
 
-    /** A normalised map: the snow and the materials read it over its own range. */
-    private static TerrainData of(HeightMap base, TerrainSettings s, int seed, StageTimes times) {
-        return of(base, s, seed, times, base.min(), base.max());
-    }
-
+    /** A map's pyramid and snow; a normalised map has its own range as {@code lowest .. highest}. */
     private static TerrainData of(HeightMap base, TerrainSettings s, int seed, StageTimes times, double lowest,
-                                  double highest) {
+                                  double highest, HeightMap sediment) {
         HeightPyramid pyramid = times.time(PYRAMID, () -> HeightPyramid.build(base));
         SnowMap snow = times.time(SNOW_MAP, () -> SnowMap.generate(pyramid, s, seed));
-        return new TerrainData(pyramid, snow, lowest, highest);
+        return new TerrainData(pyramid, snow, lowest, highest, sediment);
     }
 }

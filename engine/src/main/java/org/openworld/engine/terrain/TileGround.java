@@ -9,6 +9,7 @@ import org.openworld.engine.core.Pass;
 import org.openworld.engine.drainage.Wetness;
 import org.openworld.engine.elevation.ElevationImport;
 import org.openworld.engine.erosion.TileErosion;
+import org.openworld.engine.erosion.hydraulic.GpuPipeErosion;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.HeightSource;
 import org.openworld.engine.terrain.heights.StageTimes;
@@ -51,7 +52,7 @@ public final class TileGround implements Ground {
         progress.accept("terrain: " + (terrain.imports() ? "importing " + terrain.importFile()
                 + (ElevationImport.handles(file) ? ": " + ElevationImport.describe(file, terrain, seed) : "")
                 : "generating " + terrain.size() + "² samples, seed " + seed));
-        TerrainData data = tiles.make(terrain, seed, times);
+        TerrainData data = tiles.make(terrain, seed, times, new GpuPipeErosion(context.gl(), context.shaders()));
         HeightMap base = data.pyramid().base();
         if (base.periodic()) {
             // how wet each place is, from the water that drains through it (drainage.Wetness)
@@ -69,7 +70,7 @@ public final class TileGround implements Ground {
         HeightMap base = data.pyramid().base();
         tree = times.time("quadtree", () -> new TerrainQuadtree(data.pyramid(), cells));
         layout = PatchLayout.tile(base, cells, data.lowest(), data.highest());
-        maps = new TerrainMaps(context, data.pyramid(), data.snow(), unitHeights, times);
+        maps = new TerrainMaps(context, data.pyramid(), data.snow(), data.sediment(), unitHeights, times);
         shading = TerrainShading.baked(context, layout, base, seed, unitHeights, times);
         bind(unitHeights, unitGradients, unitSnow);
         shading.bake(context.settings().get(MaterialSettings.class));

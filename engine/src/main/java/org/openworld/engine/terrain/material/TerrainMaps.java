@@ -24,7 +24,8 @@ import org.openworld.engine.terrain.heights.StageTimes;
  *       of σ ≈ 1.7 texels) before upload: the 0/1 map's texel squares would otherwise show as blocks close up, and
  *       the blur turns them into soft drifts that the material's threshold shapes; g the share of the sky the
  *       relief leaves each place ({@link TileSky}, baked on the GPU from the heights), resampled to the snow map's
- *       grid. RG8 with mips: the material reads both with the one lookup it already made for the snow.</li>
+ *       grid; b and a what the erosion left, the sediment's cover and 1 − the bared bed's ({@link ErosionCover}).
+ *       RGBA8 with mips: the material reads all four with the one lookup it already made for the snow.</li>
  * </ul>
  * Periodic maps repeat; imported ones clamp. Uploads go in strips of rows, so an 8192² map needs a staging buffer
  * of a few megabytes, not of the whole map.
@@ -45,9 +46,11 @@ public final class TerrainMaps {
 
     /**
      * Makes and fills the three maps, handed to the system's owner as {@code terrain.heights}, ...; the sky's
-     * visibility is baked with the heights bound to {@code unit}, timed into {@code times}.
+     * visibility is baked with the heights bound to {@code unit}, timed into {@code times}; {@code sediment} is the
+     * erosion's change ({@link ErosionCover}), or null.
      */
-    public TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap, int unit, StageTimes times) {
+    public TerrainMaps(EngineContext context, HeightPyramid pyramid, SnowMap snowMap, HeightMap sediment, int unit,
+                       StageTimes times) {
         GlContext gl = context.gl();
         HeightMap base = pyramid.base();
         Sampling wrap = base.periodic() ? Sampling.TRILINEAR_REPEAT : Sampling.TRILINEAR_CLAMP;
@@ -60,14 +63,15 @@ public final class TerrainMaps {
         uploadGradients(gradients, base);
         gradients.generateMipmaps();
         int n = snowMap.size();
-        snow = context.own("snow", Texture2D.withMips(gl, n, n, Format.RG8, wrap));
+        snow = context.own("snow", Texture2D.withMips(gl, n, n, Format.RGBA8, wrap));
         byte[] soft = blur(snowMap.coverage(), n, snowMap.periodic());
         TileSky sky = times.time(SKY_VIEW, () -> TileSky.bake(gl, context.shaders(), heights, pyramid, unit));
         byte[] visible = sky.resampled(n);
-        ByteBuffer texels = MemoryUtil.memAlloc(2 * soft.length);
+        byte[][] cover = ErosionCover.of(sediment, n);
+        ByteBuffer texels = MemoryUtil.memAlloc(4 * soft.length);
         try {
             for (int i = 0; i < soft.length; i++) {
-                texels.put(soft[i]).put(visible[i]);
+                texels.put(soft[i]).put(visible[i]).put(cover[0][i]).put(cover[1][i]);
             }
             snow.upload(0, 0, n, texels.flip());
         } finally {

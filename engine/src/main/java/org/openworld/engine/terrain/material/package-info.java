@@ -8,7 +8,9 @@
  * <p><b>Materials (2.2).</b> Grass low, rock between and on steep slopes, snow high, blended smoothly; the snow comes
  * from {@link org.openworld.engine.terrain.material.SnowMap}: snow with probability {@code p = clamp((n − base)/(full − base))}
  * of the normalised height n, then a morphological opening and closing (figures 1b, 2). Figure 1a's plain altitude
- * bands are {@code materials.snow-mode=altitude-bands}. The slope comes from a gradient map of the finest level, so
+ * bands are {@code materials.snow-mode=altitude-bands}. On an eroded tile the erosion's sediment lies as alluvium
+ * and scree, its bared bed as rock, and snow gathers on the sediment
+ * ({@link org.openworld.engine.terrain.material.ErosionCover}). The slope comes from a gradient map of the finest level, so
  * coarse patches still shade with fine slopes; the tangent frame {@code T = (1, ∂h/∂x, 0)}, {@code B = (0, ∂h/∂z, 1)}
  * carries normal and gloss maps (figure 3) and is shown by {@code terrain-debug.colouring=tangent-space} (figure 4).
  * All textures are synthesised by {@link org.openworld.engine.terrain.material.TerrainTextures} (periodic noise, a recipe per

@@ -85,6 +85,11 @@ class MaterialRenderTest {
         TerrainMaterials materials;
         TerrainMaterials.Uniforms uniforms;
         Uniform.Vec3 centre;
+        Uniform.Float sediment;
+        Uniform.Float bare;
+        /** What the erosion left on every cell of the cases shader (ErosionCover's b and 1 - a). */
+        float sedimentCover;
+        float bareCover;
         Mesh triangle;
 
         MaterialPreview(String vertex, String fragment) {
@@ -108,6 +113,8 @@ class MaterialRenderTest {
             uniforms = TerrainMaterials.uniforms(program);
             if (fragment.endsWith("material-cases.frag")) {
                 centre = program.vec3("uCentre");
+                sediment = program.float1("uSediment");
+                bare = program.float1("uBare");
             }
             program.use();
             program.float1("uSkyVisibility").set(1f);
@@ -125,6 +132,8 @@ class MaterialRenderTest {
             materials.bind(uniforms, context.world().resource(Settings.class).get(MaterialSettings.class), 0);
             if (centre != null) {
                 centre.set(mirrorPoint(context.camera().position(), context.world().resource(Sun.class).direction()));
+                sediment.set(sedimentCover);
+                bare.set(bareCover);
             }
             triangle.draw(context.stats());
             glDepthFunc(GL_LESS);
@@ -151,8 +160,11 @@ class MaterialRenderTest {
     }
 
     static Engine engine(String vertex, String fragment) {
-        Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, new MaterialPreview(vertex, fragment),
-                new SkySystem());
+        return engine(new MaterialPreview(vertex, fragment));
+    }
+
+    static Engine engine(MaterialPreview preview) {
+        Engine engine = GlTestSupport.engine(GL.context(), WIDTH, HEIGHT, preview, new SkySystem());
         engine.world().setResource(new TimeOfDay(MORNING, 0));
         engine.world().resource(Camera.class).setPose(ABOVE);
         return engine;
@@ -233,6 +245,35 @@ class MaterialRenderTest {
 
     static String rgb(double[] m) {
         return String.format("rgb(%.0f, %.0f, %.0f) luma %.0f", m[0], m[1], m[2], m[3]);
+    }
+
+    /**
+     * What the erosion left shows: sediment on the flat low meadow is pale gravel, not grass; the bared bed is grey
+     * rock on the meadow, and snow does not hold on it (the snowfield).
+     */
+    @Test
+    void sedimentIsGravelAndTheBaredBedRock() throws IOException {
+        MaterialPreview preview = new MaterialPreview("test/fullscreen.vert", "test/terrain/material-cases.frag");
+        try (Engine engine = engine(preview)) {
+            double[] meadow = mean(render(engine, "cases"), Region.whole(MEADOW));
+            preview.sedimentCover = 1;
+            double[] gravel = mean(render(engine, "sediment"), Region.whole(MEADOW));
+            preview.sedimentCover = 0;
+            preview.bareCover = 1;
+            Image bared = render(engine, "bare");
+            double[] rock = mean(bared, Region.whole(MEADOW));
+            double[] snow = mean(bared, Region.whole(SNOWFIELD));
+            // the meadow test's green: green leads red by 10 levels; gravel's does not, and it is paler than grass
+            assertTrue(meadow[1] > meadow[0] + 10, "meadow " + rgb(meadow));
+            assertTrue(gravel[1] < gravel[0] + 10 && gravel[3] > meadow[3], "gravel " + rgb(gravel)
+                    + ", meadow " + rgb(meadow));
+            // rock's channels within 25 % of their mean, as the meadow test's; snow's luma above 185 is snow
+            double rockMean = (rock[0] + rock[1] + rock[2]) / 3;
+            double spread = Math.max(rock[0], Math.max(rock[1], rock[2]))
+                    - Math.min(rock[0], Math.min(rock[1], rock[2]));
+            assertTrue(spread < 0.25 * rockMean, "the bared meadow is grey rock: " + rgb(rock));
+            assertTrue(snow[3] < 185, "no snow holds on the bared bed: " + rgb(snow));
+        }
     }
 
     @Test
