@@ -38,4 +38,9 @@ public record GrassAlbedo(float r, float g, float b, float sheen) {
         return new GrassAlbedo((float) (sum[0] / n * MACRO_MEAN[0]), (float) (sum[1] / n * MACRO_MEAN[1]),
                 (float) (sum[2] / n * MACRO_MEAN[2]), (float) (sum[3] / n));
     }
+
+    /** The same colour without a sheen: the terrain's look while its gloss maps are off. */
+    public GrassAlbedo withoutSheen() {
+        return new GrassAlbedo(r, g, b, 0);
+    }
 }
