@@ -21,11 +21,15 @@ uniform vec3 uRunAt;      // xy: the run's first cell's corner from the render o
 uniform vec3 uBlade;      // x: the tallest blade (m); y: distance where blades start thinning (m); z: where none is left
 uniform vec2 uWind;       // the wind among the blades, m/s, x east and z south
 uniform vec3 uSway;       // xy: the swing's phase per metre east and south (rad/m); z: its phase at the run's corner
+uniform float uDensity;   // grass.density: blades per square metre where the share is 1
 
 out vec3 wsPos;
 out vec3 wsFace;          // the blade's face normal, before it is turned to the eye
 out float vAlong;         // 0 at the root, 1 at the tip
 flat out float vTint;
+flat out float vOwn;      // how much of the blade's own look is left: 1 near, 0 where the blades start thinning
+flat out vec3 vGround;    // the ground's normal at the root
+flat out float vContact;  // the share of the light the meadow's blades take from a root (the contact shadow)
 
 // One blade: the lower half a quad (two triangles), the tip one triangle; x across the blade (-1..1), y along it.
 const vec2 SHAPE[9] = vec2[](vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 0.5),
@@ -47,6 +51,12 @@ const float SWING_HZ = 1.0;
 // Metres the root reaches below the ground: the field's bilinear ground and the terrain's triangles differ by a few
 // centimetres on bends.
 const float SINK = 0.05;
+// The contact shadow: a root among rho blades per m² sees the sky past them as exp(-rho / CONTACT_DENSITY) (a
+// Poisson field of blades hides a share of the hemisphere growing with their number), at most CONTACT_MAX of it
+// taken: the default meadow (24 blades/m²) darkens its roots by 0.55 × (1 - exp(-1)) = 35 %, as dark as the 0.6 of
+// the light a tuft's root had before; the dry soil between the blades stays lit a little by the light they scatter.
+const float CONTACT_DENSITY = 24.0;
+const float CONTACT_MAX = 0.55;
 
 // A 32-bit integer hash (Chris Wellons' "lowbias32"): every input bit moves about half the output bits.
 uint hash(uint x) {
@@ -82,6 +92,9 @@ void main() {
         wsFace = vec3(0.0, 1.0, 0.0);
         vAlong = 0.0;
         vTint = 0.0;
+        vOwn = 0.0;
+        vGround = vec3(0.0, 1.0, 0.0);
+        vContact = 0.0;
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
         return;
     }
@@ -105,5 +118,14 @@ void main() {
     wsFace = normalize(cross(side, tangent));
     vAlong = t;
     vTint = unit(hash(b ^ 0x8u));
+    // the blade takes on the ground's look over a ring as wide as the thinning's, just before it: where the blades
+    // thin away they already look like the ground they leave
+    vOwn = 1.0 - smoothstep(2.0 * uBlade.y - uBlade.z, uBlade.y, d);
+    // the ground's normal from the next samples east and south (1 m apart)
+    float east = texture(uField, uv + vec2(1.0 / uFieldAt.z, 0.0)).x;
+    float south = texture(uField, uv + vec2(0.0, 1.0 / uFieldAt.z)).x;
+    vGround = normalize(vec3(ground.x - east, 1.0, ground.x - south));
+    // the blades around the root: the land's and the distance's share of the density
+    vContact = CONTACT_MAX * (1.0 - exp(-uDensity * ground.y * fade / CONTACT_DENSITY));
     gl_Position = frame.viewProjection * vec4(wsPos, 1.0);
 }

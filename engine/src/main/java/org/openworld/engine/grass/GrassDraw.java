@@ -23,6 +23,7 @@ import org.openworld.engine.gl.TextureUnits;
 import org.openworld.engine.gl.Uniform;
 import org.openworld.engine.gl.VertexArray;
 import org.openworld.engine.origin.RenderOrigin;
+import org.openworld.engine.terrain.material.GrassAlbedo;
 
 /**
  * The grass's GL side: the field as a texture, one program, an empty vertex array (the blades are made from
@@ -57,6 +58,8 @@ final class GrassDraw {
     private final Uniform.Vec3 blade;
     private final Uniform.Vec2 wind;
     private final Uniform.Vec3 sway;
+    private final Uniform.Float density;
+    private final Uniform.Vec4 groundAlbedo;
 
     GrassDraw(EngineContext context) {
         this.context = context;
@@ -72,6 +75,8 @@ final class GrassDraw {
         blade = program.vec3("uBlade");
         wind = program.vec2("uWind");
         sway = program.vec3("uSway");
+        density = program.float1("uDensity");
+        groundAlbedo = program.vec4("uGround");
     }
 
     /** The field's samples into the texture, a new texture when its size changed. */
@@ -95,9 +100,11 @@ final class GrassDraw {
      * Draws the tufts the camera sees within the distance of the viewer.
      *
      * @param groundWind m/s of the wind among the blades, x (east) and z (south)
+     * @param ground     the ground's grass from afar, which the blades take on as they thin away
      * @return the tufts drawn
      */
-    int draw(RenderContext rc, GrassField f, GrassSettings s, float[] groundWind, int worldSeed) {
+    int draw(RenderContext rc, GrassField f, GrassSettings s, float[] groundWind, GrassAlbedo ground,
+             int worldSeed) {
         // 1. the blocks in reach and in view: their boxes from the render origin against the camera's frustum
         RenderOrigin origin = rc.world().resource(RenderOrigin.class);
         Matrix4f viewProjection = new Matrix4f(rc.camera().projection()).mul(rc.camera().viewFrom(origin.x(),
@@ -113,7 +120,7 @@ final class GrassDraw {
         if (runs.isEmpty()) {
             return 0;
         }
-        // 2. what every run shares: the field from the render origin, the blades' size and fade, the wind
+        // 2. what every run shares: the field from the render origin, the blades' size and fade, the wind, the ground
         program.use();
         field.bind(FIELD.unit());
         fieldAt.set(origin.relativeX(f.firstX() * GrassField.SPACING), origin.relativeZ(f.firstZ()
@@ -121,6 +128,8 @@ final class GrassDraw {
         float end = (float) s.distance();
         blade.set((float) s.height(), (float) (1 - GrassField.FADE_SHARE) * end, end);
         wind.set(groundWind[0], groundWind[1]);
+        density.set((float) s.density());
+        groundAlbedo.set(ground.r(), ground.g(), ground.b(), ground.sheen());
         seed.set(worldSeed);
         glEnable(GL_DEPTH_TEST);
         glDepthMask(true);

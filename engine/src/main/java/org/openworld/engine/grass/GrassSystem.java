@@ -22,6 +22,8 @@ import org.openworld.engine.environment.WaterLevel;
 import org.openworld.engine.environment.Wind;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
+import org.openworld.engine.terrain.material.GrassAlbedo;
+import org.openworld.engine.terrain.material.MaterialSettings;
 import org.openworld.engine.vegetation.PlacementField;
 
 /**
@@ -45,6 +47,11 @@ public final class GrassSystem implements EngineSystem {
     static final float GROUND_WIND = 0.2f;
     /** Metres above the water where grass begins: the wet rim of a lake is mud and reeds. */
     static final double SHORE = 0.3;
+    /**
+     * The ground's grass where the world has no terrain textures to take it from: the mean of the blades' roots'
+     * albedos ({@code grass.frag}), without a sheen, so the blades thin into their own roots' colour.
+     */
+    static final GrassAlbedo ROOTS = new GrassAlbedo(0.0575f, 0.12f, 0.021f, 0);
 
     private final ExecutorService worker = Workers.single("grass-field");
     private GrassDraw draw;
@@ -61,7 +68,7 @@ public final class GrassSystem implements EngineSystem {
     public SystemSpec spec() {
         return SystemSpec.named("grass")
                 .reads(Settings.class, Camera.class, HeightField.class, WaterLevel.class, SnowLine.class,
-                        PlacementField.class, Wind.class)
+                        PlacementField.class, Wind.class, GrassAlbedo.class)
                 .draws(Pass.MAIN);
     }
 
@@ -131,8 +138,12 @@ public final class GrassSystem implements EngineSystem {
         World world = context.world();
         GrassSettings s = world.resource(Settings.class).get(GrassSettings.class);
         Vector3f wind = new Vector3f(world.findResource(Wind.class).orElse(Wind.CALM).velocity()).mul(GROUND_WIND);
-        int drawn = draw.draw(context, field, s, new float[] {wind.x, wind.z},
-                world.resource(Settings.class).get(EngineSettings.class).seed());
+        // the ground's look as the terrain draws it: with its sheen only while its gloss maps are on
+        Settings settings = world.resource(Settings.class);
+        GrassAlbedo ground = world.findResource(GrassAlbedo.class)
+                .map(g -> settings.get(MaterialSettings.class).glossMap() ? g : g.withoutSheen()).orElse(ROOTS);
+        int drawn = draw.draw(context, field, s, new float[] {wind.x, wind.z}, ground,
+                settings.get(EngineSettings.class).seed());
         world.resource(Counters.class).add(DRAWN.in(pass), drawn);
     }
 

@@ -17,6 +17,7 @@ import org.openworld.engine.terrain.lod.PatchList;
 import org.openworld.engine.terrain.material.FarMaterial;
 import org.openworld.engine.terrain.material.MaterialSettings;
 import org.openworld.engine.terrain.material.TerrainMaterials;
+import org.openworld.engine.terrain.material.GrassAlbedo;
 import org.openworld.engine.terrain.material.TerrainTextures;
 import org.openworld.engine.terrain.mesh.PatchLayout;
 import org.openworld.engine.terrain.mesh.PatchOrder;
@@ -133,6 +134,7 @@ final class TerrainShading {
         this.seed = seed;
         this.times = times;
         tiles = TerrainTextures.generate(seed);
+        context.world().setResource(GrassAlbedo.of(tiles)); // what the grass's blades thin into
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         this.layout = layout;
         this.heights = heights;

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -17,6 +18,8 @@ import org.openworld.engine.HeadlessGl;
 import org.openworld.engine.ImportedWorld;
 import org.openworld.engine.camera.Camera;
 import org.openworld.engine.camera.CameraPose;
+import org.openworld.engine.colour.DeltaE;
+import org.openworld.engine.colour.Lab;
 import org.openworld.engine.core.HeightField;
 import org.openworld.engine.environment.SnowLine;
 import org.openworld.engine.environment.WaterLevel;
@@ -68,12 +71,14 @@ class GrassRenderTest {
     }
 
     static GrassSystem GRASS;
-    static Engine engine(GrassSystem grass) {
+    static Engine engine(GrassSystem grass, String... more) {
         GRASS = grass;
-        Engine engine = GlTestSupport.engine(GL.context(), W, H, List.of("terrain.import-file=" + strips,
-                "terrain.spacing=2", "terrain.relief=100", "terrain.sea-fraction=0.2",
-                "grass.distance=" + DISTANCE, "vegetation.density=0"), new TerrainSystem(), new VegetationSystem(),
-                grass);
+        List<String> settings = new ArrayList<>(List.of("terrain.import-file=" + strips, "terrain.spacing=2",
+                "terrain.relief=100", "terrain.sea-fraction=0.2", "grass.distance=" + DISTANCE,
+                "vegetation.density=0"));
+        settings.addAll(List.of(more));
+        Engine engine = GlTestSupport.engine(GL.context(), W, H, settings, new TerrainSystem(),
+                new VegetationSystem(), grass);
         engine.world().setResource(new WaterLevel(0));
         return engine;
     }
@@ -132,5 +137,112 @@ class GrassRenderTest {
             assertEquals(0, lake, "pixels changed on the lake bed under the water");
         }
         assertEquals(0, GL.context().objects().live(), "live GL objects after close: " + GL.context().objects());
+    }
+
+    /** Metres the test's eye stands over the meadow, its pitch down and its vertical field, degrees. */
+    static final double EYE = 2;
+    static final double PITCH = 5;
+    static final double FOV = 20;
+    /**
+     * CIEDE2000's just-noticeable difference (Sharma, Wu and Dalal 2005's data put a pair "just noticeable" near 2.3):
+     * a band of the fading meadow whose mean is closer than this to the bare ground's shows no change of tone.
+     */
+    static final double JUST_NOTICEABLE = 2.3;
+
+    /**
+     * Where the blades thin away (from 0.7 to 1 of the distance), the meadow looks like the bare ground: looking north
+     * over the flat meadow from 2 m, 5° down (a 20° field, so the ring is 19 rows high), the ground from the ring's
+     * start to 30 % of the distance beyond it is cut into bands by distance, and each band's mean colour with the grass
+     * must be within a just-noticeable difference of the same band without it. (Before the blades took on the ground's
+     * look, its sheen at this grazing view included, the bands from 0.7 to 0.95 of the distance differed by ΔE00 4.0
+     * and 3.2: the end of the grass showed as a change of tone.)
+     */
+    @Test
+    void theBladesThinIntoTheGroundWithNoChangeOfTone() {
+        GrassSystem grass = new GrassSystem();
+        try (Engine engine = engine(grass)) {
+            engine.update();
+            double x = -180;
+            double ground = engine.world().resource(HeightField.class).heightAt(x, 0);
+            engine.world().resource(Camera.class).setPose(new CameraPose(x, ground + EYE, 0, 0, -PITCH, FOV));
+            Image off = frame(engine, false);
+            Image on = frame(engine, true);
+            // bands of an eighth of the distance each, from the ring's start (0.7) to 1.3 of the distance
+            double step = DISTANCE / 8.0;
+            StringBuilder seen = new StringBuilder();
+            double worst = 0;
+            for (double near = (1 - GrassField.FADE_SHARE) * DISTANCE; near < 1.3 * DISTANCE - 1e-9; near += step) {
+                int top = row(near + step);
+                int bottom = row(near);
+                double e = DeltaE.ciede2000(meanLab(on, top, bottom), meanLab(off, top, bottom));
+                seen.append(String.format(" %.1f-%.1f m: %.2f;", near, near + step, e));
+                worst = Math.max(worst, e);
+            }
+            assertTrue(worst <= JUST_NOTICEABLE, "ΔE00 of the bands' means with and without grass:" + seen);
+        }
+    }
+
+    /** The picture's row where the flat ground lies {@code d} metres ahead of the test's eye. */
+    static int row(double d) {
+        double below = Math.atan(EYE / d) - Math.toRadians(PITCH);
+        return (int) Math.round(H / 2.0 * (1 + Math.tan(below) / Math.tan(Math.toRadians(FOV / 2))));
+    }
+
+    /** The mean L*a*b* of rows [top, bottom) of the picture. */
+    static Lab meanLab(Image image, int top, int bottom) {
+        double l = 0;
+        double a = 0;
+        double b = 0;
+        int n = 0;
+        for (int y = top; y < bottom; y++) {
+            for (int px = 0; px < W; px++) {
+                Lab c = Lab.fromSrgb(image.channel(px, y, 0), image.channel(px, y, 1), image.channel(px, y, 2));
+                l += c.l();
+                a += c.a();
+                b += c.b();
+                n++;
+            }
+        }
+        return new Lab(l / n, a / n, b / n);
+    }
+
+    /**
+     * The contact shadow: a meadow's own blades darken their roots by their number. Over the meadow from 1.5 m, 40°
+     * down, the pixels the grass changes are darker on the whole at 96 blades/m² than at 1: the roots of the dense
+     * meadow get 1 − 0.55 (1 − e⁻⁴) = 46 % of the light, the sparse one's 98 %, the tips all of it, so a blade seen
+     * along its length keeps about three quarters of the light against nearly all of it, some 13 % less luma (the
+     * display's gamma of about 1 / 2.2 on 0.73). At least a third of that must show: in the dense meadow tips hide
+     * many roots. (With the roots' fixed 0.6 shade, before the shadow went by density, the dense meadow was no darker.)
+     */
+    @Test
+    void denseGrassDarkensItsRoots() {
+        double dense = bladeLuma("grass.density=96");
+        double sparse = bladeLuma("grass.density=1");
+        assertTrue(dense < (1 - 0.13 / 3) * sparse, "mean luma of the blades' pixels: " + dense + " at 96 blades/m², "
+                + sparse + " at 1");
+    }
+
+    /** The mean luma of the pixels the grass changes over the meadow, seen from 1.5 m and 40° down. */
+    static double bladeLuma(String density) {
+        GrassSystem grass = new GrassSystem();
+        try (Engine engine = engine(grass, density)) {
+            engine.update();
+            double x = -180;
+            double ground = engine.world().resource(HeightField.class).heightAt(x, 0);
+            engine.world().resource(Camera.class).setPose(new CameraPose(x, ground + 1.5, 0, 0, -40, 60));
+            Image off = frame(engine, false);
+            Image on = frame(engine, true);
+            double sum = 0;
+            int n = 0;
+            for (int y = 0; y < H; y++) {
+                for (int px = 0; px < W; px++) {
+                    if (Math.abs(on.luma(px, y) - off.luma(px, y)) > 2) { // as grassShare: a blade
+                        sum += on.luma(px, y);
+                        n++;
+                    }
+                }
+            }
+            return sum / n;
+        }
     }
 }
