@@ -10,5 +10,5 @@ package org.openworld.engine.terrain.material;
  * @param height relief height, texels (the normal's source: one texel up over one texel across is 45°)
  * @param gloss  glossiness, 0..1 (specular power and reflection strength)
  */
-record MaterialFields(float[] red, float[] green, float[] blue, float[] height, float[] gloss) {
+public record MaterialFields(float[] red, float[] green, float[] blue, float[] height, float[] gloss) {
 }
