@@ -151,11 +151,11 @@ final class TreeDraw {
         if (pass != Pass.REFLECTION) {
             Uniforms u = pass == Pass.SHADOW ? depth : lit;
             (pass == Pass.SHADOW ? depthProgram : program).use();
-            maps.bind();
             u.fade().set(fade[0], fade[1]);
             u.wind().set(groundWind[0], groundWind[1]);
             u.placed().set(placed[0], placed[1]);
             u.sway().set(sway[0], sway[1], sway[2]);
+            maps.bind(); // the bark's units, which the impostors' atlas took since the last pass
             u.impostor().set(b.impostorFrom(), b.impostorTo());
             glEnable(GL_CULL_FACE);
             for (TreeKind kind : TreeKind.values()) {
