@@ -3,9 +3,9 @@ package org.openworld.engine.vegetation;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.stream.IntStream;
-import org.openworld.engine.terrain.material.MaterialEncoding;
-import org.openworld.engine.terrain.material.MaterialFields;
-import org.openworld.engine.terrain.material.PeriodicNoise;
+import org.openworld.engine.texture.MaterialEncoding;
+import org.openworld.engine.texture.MaterialFields;
+import org.openworld.engine.texture.PeriodicNoise;
 
 /**
  * The plants' bark, synthesised at start as the ground's materials are (the terrain's {@link PeriodicNoise} shaped

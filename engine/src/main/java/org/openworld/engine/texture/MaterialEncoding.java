@@ -1,4 +1,4 @@
-package org.openworld.engine.terrain.material;
+package org.openworld.engine.texture;
 
 /**
  * Packs a {@link MaterialFields} into the two RGBA8 textures the terrain shader samples, rows from y = 0, texel

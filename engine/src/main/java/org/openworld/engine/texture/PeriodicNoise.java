@@ -1,13 +1,13 @@
-package org.openworld.engine.terrain.material;
+package org.openworld.engine.texture;
 
 import java.util.SplittableRandom;
 import org.jtransforms.fft.DoubleFFT_2D;
 import org.openworld.engine.core.FftThreads;
-import org.openworld.engine.terrain.heights.SpectralSynthesis;
 
 /**
  * Periodic Gaussian noise on a square tile, shaped in the frequency domain: the raw material of every
- * {@link MaterialRecipes recipe}. The same idea as the terrain's height map ({@link SpectralSynthesis}), at texture
+ * recipe (the terrain's {@code MaterialRecipes}, the plants' {@code BarkTextures}). The same idea as the terrain's
+ * height map ({@link org.openworld.engine.terrain.heights.SpectralSynthesis}), at texture
  * scale.
  *
  * <p><b>Method.</b> For every integer frequency (fx, fy), cycles per tile with fx, fy in (−n/2, n/2], draw a complex
