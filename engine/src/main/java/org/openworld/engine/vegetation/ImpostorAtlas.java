@@ -52,8 +52,11 @@ final class ImpostorAtlas implements Labelled {
     private final Vector3f[] meanAlbedo = new Vector3f[TreePlacement.KINDS];
     private final double[] topArea = new double[TreePlacement.KINDS];
 
-    /** Bakes the atlas; the bake's program and meshes are freed before it returns. */
-    ImpostorAtlas(EngineContext context) {
+    /**
+     * Bakes the atlas, the plants wearing the synthesised {@code maps} as the meshes do; the bake's program and
+     * meshes are freed before it returns.
+     */
+    ImpostorAtlas(EngineContext context, PlantMaps maps) {
         int side = FRAMES * FRAME_PIXELS;
         target = new Framebuffer(context.gl(), 2 * side, TreePlacement.KINDS * side, Format.RGBA8,
                 Format.DEPTH24_STENCIL8, Sampling.NEAREST_CLAMP);
@@ -64,6 +67,8 @@ final class ImpostorAtlas implements Labelled {
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             glEnable(GL_DEPTH_TEST);
             bake.use();
+            PlantMaps.samplers(bake);
+            maps.bind();
             bake.float1("uFrames").set(FRAMES);
             DrawStats stats = new DrawStats();
             for (TreeKind kind : TreeKind.values()) {

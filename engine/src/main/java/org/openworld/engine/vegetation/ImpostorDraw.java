@@ -37,9 +37,9 @@ final class ImpostorDraw {
         }
     }
 
-    /** Bakes the atlas and makes the card over the plants' {@code records} ({@link TreePlacement#FLOATS} floats each). */
-    ImpostorDraw(EngineContext context, GpuBuffer records, int footLocation, int turnLocation) {
-        atlas = context.own("impostors", new ImpostorAtlas(context));
+    /** Bakes the atlas (the plants wearing {@code maps}) and makes the card over the plants' {@code records} ({@link TreePlacement#FLOATS} floats each). */
+    ImpostorDraw(EngineContext context, GpuBuffer records, int footLocation, int turnLocation, PlantMaps maps) {
+        atlas = context.own("impostors", new ImpostorAtlas(context, maps));
         lit = Uniforms.of(context.own("impostor", context.shaders().program("vegetation/impostor.vert",
                 "vegetation/impostor.frag")));
         depth = Uniforms.of(context.own("impostorDepth", context.shaders().program("vegetation/impostor.vert",

@@ -58,6 +58,8 @@ final class TreeDraw {
     private static final int PART = 2;
     private static final int FOOT_HEIGHT = 3;
     private static final int TURN_TINT = 4;
+    /** The barks' seed: every world's trees wear the same bark. */
+    private static final long BARK_SEED = 1;
 
     private final ShaderProgram program;
     private final ShaderProgram depthProgram;
@@ -67,6 +69,7 @@ final class TreeDraw {
     private final Mesh[][] shapes = new Mesh[TreePlacement.KINDS][2];
     private final GpuBuffer records;
     private final ImpostorDraw impostors;
+    private final PlantMaps maps;
 
     /** The lit program's kind: its colours (the depth-only program has none). */
     private final Uniform.Int kind;
@@ -86,6 +89,8 @@ final class TreeDraw {
         depthProgram = context.own("depth", context.shaders().program("vegetation/tree.vert",
                 "vegetation/depth.frag"));
         lit = Uniforms.of(program);
+        maps = new PlantMaps(context, BarkTextures.generate(BARK_SEED));
+        PlantMaps.samplers(program);
         kind = program.int1("uKind");
         depth = Uniforms.of(depthProgram);
         records = context.own("records", new GpuBuffer(context.gl(), GL_ARRAY_BUFFER));
@@ -100,7 +105,7 @@ final class TreeDraw {
                 shapes[kind.ordinal()][far] = mesh;
             }
         }
-        impostors = new ImpostorDraw(context, records, FOOT_HEIGHT, TURN_TINT);
+        impostors = new ImpostorDraw(context, records, FOOT_HEIGHT, TURN_TINT, maps);
     }
 
     ImpostorAtlas atlas() {
@@ -150,6 +155,7 @@ final class TreeDraw {
             u.wind().set(groundWind[0], groundWind[1]);
             u.placed().set(placed[0], placed[1]);
             u.sway().set(sway[0], sway[1], sway[2]);
+            maps.bind(); // the bark's units, which the impostors' atlas took since the last pass
             u.impostor().set(b.impostorFrom(), b.impostorTo());
             glEnable(GL_CULL_FACE);
             for (TreeKind kind : TreeKind.values()) {

@@ -34,8 +34,11 @@
  * cross-faded by a 4 × 4 ordered dither over ±10 % of its distance; the shadow cascades switch hard at the same
  * distances (the far cascades draw cards facing the sun) and leave the far bushes out; the reflection draws the cards
  * only. One instanced call per kind, representation and run of neighbouring visible tiles
- * ({@code Mesh.drawInstances}); the tiles' boxes go to the culling system as a {@code Cullable}. The leaves and bark
- * are patterns of the shape's coordinates (clumps that tilt the normal, streaks), lit as the terrain is (wrapped
+ * ({@code Mesh.drawInstances}); the tiles' boxes go to the culling system as a {@code Cullable}. The leaves are a
+ * pattern of the shape's coordinates (clumps that tilt the normal); the bark a texture synthesised at start from the
+ * ground's periodic noise ({@link org.openworld.engine.vegetation.BarkTextures}, uploaded mipmapped by
+ * {@link org.openworld.engine.vegetation.PlantMaps}; 1.3 MiB), wrapped round the stems with its relief's normals,
+ * on the meshes and in the impostors' bake alike; all lit as the terrain is (wrapped
  * Lambert sun times {@code sunVisibility}, the sky's light, the aerial perspective, the display transform) plus the
  * light through the leaves against the sun; crowns lean and swing in the
  * {@link org.openworld.engine.environment.Wind}. Plants shrink into the ground over the last fifth of

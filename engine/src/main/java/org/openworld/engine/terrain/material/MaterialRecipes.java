@@ -1,6 +1,8 @@
 package org.openworld.engine.terrain.material;
 
 import java.util.SplittableRandom;
+import org.openworld.engine.texture.MaterialFields;
+import org.openworld.engine.texture.PeriodicNoise;
 
 /**
  * What each terrain material is made of: the recipes that turn {@link PeriodicNoise periodic noise},

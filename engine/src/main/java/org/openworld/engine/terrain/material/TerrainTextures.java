@@ -5,6 +5,9 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
+import org.openworld.engine.texture.MaterialEncoding;
+import org.openworld.engine.texture.MaterialFields;
+import org.openworld.engine.texture.PeriodicNoise;
 
 /**
  * Synthesised surface textures of the terrain's three materials, grass, rock and snow (paper 2.2): for each an

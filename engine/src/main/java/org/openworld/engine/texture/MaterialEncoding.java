@@ -1,4 +1,4 @@
-package org.openworld.engine.terrain.material;
+package org.openworld.engine.texture;
 
 /**
  * Packs a {@link MaterialFields} into the two RGBA8 textures the terrain shader samples, rows from y = 0, texel
@@ -22,7 +22,7 @@ package org.openworld.engine.terrain.material;
  * <p><b>Limits.</b> 8 bits per channel: the normal's steps are 1/127.5 in each component (about 0.45° near flat),
  * fine for detail seen at a few texels per pixel, visible as banding only on very smooth, very close surfaces.
  */
-final class MaterialEncoding {
+public final class MaterialEncoding {
 
     /** Entries of the linear-to-sRGB table: 4096 steps keep dark values (where sRGB is steep) exact to 1/255. */
     private static final int SRGB_TABLE = 4096;
@@ -32,7 +32,7 @@ final class MaterialEncoding {
     private final byte[] srgb = new byte[SRGB_TABLE + 1];
 
     /** Encodes tiles of {@code n}² texels, {@code n} a power of two. */
-    MaterialEncoding(int n) {
+    public MaterialEncoding(int n) {
         this.n = n;
         this.mask = n - 1;
         for (int i = 0; i <= SRGB_TABLE; i++) {
@@ -43,7 +43,7 @@ final class MaterialEncoding {
     }
 
     /** RGBA8 albedo: the fields' colour sRGB-encoded, alpha 255. */
-    byte[] albedo(MaterialFields f) {
+    public byte[] albedo(MaterialFields f) {
         byte[] out = new byte[n * n * 4];
         for (int i = 0; i < n * n; i++) {
             out[4 * i] = toSrgb(f.red()[i]);
@@ -58,7 +58,7 @@ final class MaterialEncoding {
      * RGBA8 detail: the normal from the wrapped central differences of the relief; the relief itself stored as
      * mean ± 2.5 standard deviations over 0..1; gloss (see the class comment).
      */
-    byte[] detail(MaterialFields f) {
+    public byte[] detail(MaterialFields f) {
         float[] h = f.height();
         double[] relief = new double[h.length];
         for (int i = 0; i < h.length; i++) {

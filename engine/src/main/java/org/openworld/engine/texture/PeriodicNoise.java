@@ -1,13 +1,13 @@
-package org.openworld.engine.terrain.material;
+package org.openworld.engine.texture;
 
 import java.util.SplittableRandom;
 import org.jtransforms.fft.DoubleFFT_2D;
 import org.openworld.engine.core.FftThreads;
-import org.openworld.engine.terrain.heights.SpectralSynthesis;
 
 /**
  * Periodic Gaussian noise on a square tile, shaped in the frequency domain: the raw material of every
- * {@link MaterialRecipes recipe}. The same idea as the terrain's height map ({@link SpectralSynthesis}), at texture
+ * recipe (the terrain's {@code MaterialRecipes}, the plants' {@code BarkTextures}). The same idea as the terrain's
+ * height map ({@link org.openworld.engine.terrain.heights.SpectralSynthesis}), at texture
  * scale.
  *
  * <p><b>Method.</b> For every integer frequency (fx, fy), cycles per tile with fx, fy in (−n/2, n/2], draw a complex
@@ -34,21 +34,21 @@ import org.openworld.engine.terrain.heights.SpectralSynthesis;
  * <p><b>Limits.</b> Gaussian: no ridges, no sharp edges; the recipes add those by thresholds, cells and stamping.
  * Isotropic: the spectrum is radial, every direction alike.
  */
-final class PeriodicNoise {
+public final class PeriodicNoise {
 
     /**
      * A radial amplitude spectrum over integer frequencies (cycles per tile), given the squared frequency
      * fx² + fy²; zero outside the band it was made for, so those coefficients cost no random numbers.
      */
     @FunctionalInterface
-    interface Spectrum {
+    public interface Spectrum {
         double amplitude(double f2);
     }
 
     private final int n;
 
     /** Noise on tiles of {@code n}² texels, {@code n} a power of two. */
-    PeriodicNoise(int n) {
+    public PeriodicNoise(int n) {
         this.n = n;
     }
 
@@ -56,7 +56,7 @@ final class PeriodicNoise {
      * Two independent periodic Gaussian fields with the given amplitude spectrum, each of zero mean and unit
      * variance, texel (x, y) at {@code y n + x}. The coefficients are drawn from {@code rng} rows then columns.
      */
-    double[][] pair(SplittableRandom rng, Spectrum spectrum) {
+    public double[][] pair(SplittableRandom rng, Spectrum spectrum) {
         double[] a = new double[2 * n * n];
         for (int ky = 0; ky < n; ky++) {
             int fy = ky <= n / 2 ? ky : ky - n;
@@ -84,7 +84,7 @@ final class PeriodicNoise {
      * 1/f^β power (amplitude f^(−β/2)) between soft edges at {@code low} and {@code high} cycles per tile (see the
      * class comment).
      */
-    static Spectrum band(double low, double high, double beta) {
+    public static Spectrum band(double low, double high, double beta) {
         double low2 = low * low;
         double high2 = high * high;
         return f2 -> {

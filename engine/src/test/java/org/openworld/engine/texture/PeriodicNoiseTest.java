@@ -1,4 +1,4 @@
-package org.openworld.engine.terrain.material;
+package org.openworld.engine.texture;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
