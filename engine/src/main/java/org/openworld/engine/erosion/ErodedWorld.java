@@ -159,7 +159,7 @@ public final class ErodedWorld implements UniformHeights {
             xs[i] = (random.nextDouble() - 0.5) * ERROR_SPAN_M;
             zs[i] = (random.nextDouble() - 0.5) * ERROR_SPAN_M;
         }
-        IntStream.range(1, count).parallel().forEach(level -> {
+        IntStream.range(1, count).forEach(level -> { // on this thread: see RegionErosion#bands
             double worst = 0;
             for (int i = 0; i < ERROR_SAMPLES; i++) {
                 double eroded = height(0, xs[i], zs[i]) - surface(level, xs[i], zs[i]);
@@ -191,11 +191,7 @@ public final class ErodedWorld implements UniformHeights {
         long rz0 = Math.floorDiv(j0, CORE) - 1;
         int rw = (int) (Math.floorDiv(i0 + w - 1, CORE) - rx0) + 2;
         int rh = (int) (Math.floorDiv(j0 + h - 1, CORE) - rz0) + 2;
-        Region[] held = new Region[rw * rh];
-        if (w * h > SUPPORT * SUPPORT) { // a large window: its regions made on every core first
-            IntStream.range(0, held.length).parallel().forEach(r -> held[r] = region(level, rx0 + r % rw,
-                    rz0 + r / rw));
-        }
+        Region[] held = new Region[rw * rh]; // made on this thread: see RegionErosion#bands
         long[] rx = new long[2];
         long[] rz = new long[2];
         double[] wx = new double[2];

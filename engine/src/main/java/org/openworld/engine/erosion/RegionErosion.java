@@ -57,7 +57,7 @@ final class RegionErosion {
         long ox = rx * ErodedWorld.CORE - ErodedWorld.OVERLAP - APRON;
         long oz = rz * ErodedWorld.CORE - ErodedWorld.OVERLAP - APRON;
         double d = plain.spacing(level);
-        float[] bands = plain.level(level, ox, oz, g);
+        float[] bands = bands(level, ox, oz);
         float[] start = bands.clone();
         float[] base = new float[g * g]; // the heights the outlets keep
         float[] coarseArea = new float[g * g];
@@ -97,6 +97,27 @@ final class RegionErosion {
             }
         }
         return new Region(delta, area);
+    }
+
+    /**
+     * The plain bands over a region's routed samples, made on this thread in windows too small for
+     * {@link BandedHeights#level} to share out: a thread of a parallel stream that waits for its rows may run
+     * another task meanwhile, and one that asks for a region this thread is making would wait for itself.
+     */
+    private float[] bands(int level, long ox, long oz) {
+        int g = ROUTED;
+        int half = (g + 1) / 2;
+        float[] out = new float[g * g];
+        for (int b = 0; b < 2; b++) {
+            for (int a = 0; a < 2; a++) {
+                float[] part = plain.level(level, ox + a * half, oz + b * half, half);
+                for (int j = 0; j < half && b * half + j < g; j++) {
+                    int w = Math.min(half, g - a * half);
+                    System.arraycopy(part, j * half, out, (b * half + j) * g + a * half, w);
+                }
+            }
+        }
+        return out;
     }
 
     /**
