@@ -58,7 +58,7 @@
  * priority-flood), on the shared two-core machine; nothing per frame. Memory: a few arrays of the 512² level.
  * The unbounded world: a region is two routings of 225² (docs/terrain.md has the figures per block and at
  * start), made on the streaming's worker threads as the blocks that need them are made; 49 regions a level are
- * kept (218 KiB each: displacement and area over 161² samples), 11 MiB a level, 75 MiB for the 7 levels eroded.
+ * kept (203 KiB each: displacement and area over 161² samples), 9.7 MiB a level, 68 MiB for the 7 levels eroded.
  *
  * <p><b>Limits.</b> CPU only. The tile's Hack exponent stays at 0.45 (a single level routed; the unbounded world's
  * cascade gives 0.61); hillslopes at the talus are planar faces between 8 m samples; no sediment, no alluvial
