@@ -35,7 +35,8 @@ import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.PowerSpectrum;
 import org.openworld.engine.terrain.material.SnowMap;
 import org.openworld.engine.terrain.heights.StageTimes;
-import org.openworld.engine.terrain.heights.BandedHeights;
+import org.openworld.engine.terrain.heights.UniformHeights;
+import org.openworld.engine.erosion.ErodedWorld;
 import org.openworld.engine.terrain.TerrainData;
 import org.openworld.engine.terrain.heights.TerrainSettings;
 import picocli.CommandLine.Command;
@@ -228,7 +229,7 @@ final class HeightmapCommand implements Callable<Integer> {
         Outputs.folder(out);
         Outputs.png(out.resolve(DrainageReport.DRAINAGE_PNG), false);
         if (terrain.world() == TerrainSettings.World.UNBOUNDED) {
-            BandedHeights world = new BandedHeights(terrain, worldSeed);
+            UniformHeights world = ErodedWorld.unbounded(terrain, worldSeed);
             if (statsLevel >= world.levels()) {
                 throw new UserError("--stats-level " + statsLevel + ": the unbounded world has levels 0 to "
                         + (world.levels() - 1));

@@ -8,7 +8,9 @@ import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import org.openworld.engine.files.AtomicFiles;
+import org.openworld.engine.erosion.ErodedWorld;
 import org.openworld.engine.terrain.heights.BandedHeights;
+import org.openworld.engine.terrain.heights.UniformHeights;
 import org.openworld.engine.terrain.heights.HeightMap;
 import org.openworld.engine.terrain.heights.PowerSpectrum;
 import org.openworld.engine.terrain.heights.TerrainSettings;
@@ -53,7 +55,7 @@ final class WorldOverview {
         }
         List<MemoryPoolMXBean> heapPools = HeightmapCommand.resetHeapPeaks();
         long start = System.nanoTime();
-        BandedHeights world = new BandedHeights(terrain, seed);
+        UniformHeights world = ErodedWorld.unbounded(terrain, seed);
         if (level >= world.levels()) {
             throw new UserError("--overview: terrain.max-wavelength (" + terrain.maxWavelength() + " m) leaves no "
                     + "wavelength longer than two samples of " + (int) SPACING_M + " m; the overview would be flat");

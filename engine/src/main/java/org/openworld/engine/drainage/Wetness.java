@@ -1,9 +1,11 @@
 package org.openworld.engine.drainage;
 
+import java.util.function.DoubleBinaryOperator;
+
 /**
- * Where water gathers on the ground: a world resource, published by the terrain on the tile (read it with
- * {@code world.findResource(Wetness.class)}; absent on the unbounded world, which streams its ground per level and
- * routes no rivers). For each place, the drainage area A that reaches it and the topographic wetness index
+ * Where water gathers on the ground: a world resource, published by the terrain on the tile and on the eroded
+ * unbounded world (read it with {@code world.findResource(Wetness.class)}; absent on the plain unbounded world,
+ * which routes no rivers). For each place, the drainage area A that reaches it and the topographic wetness index
  * (Beven and Kirkby 1979)
  * <pre>
  *   TWI = ln(a / tan β),    a = A / w  (the catchment per metre of contour, w the cell's width)
@@ -23,16 +25,29 @@ public final class Wetness {
     /** Gentlest slope counted, m/m: a filled lake's ε is no slope, and the index would be infinite. */
     static final double MIN_SLOPE = 1e-3;
 
-    private final int size;
-    private final double spacing;
-    private final float[] area;
-    private final float[] wetness;
+    private final DoubleBinaryOperator area;
+    private final DoubleBinaryOperator wetness;
 
-    private Wetness(int size, double spacing, float[] area, float[] wetness) {
-        this.size = size;
-        this.spacing = spacing;
+    private Wetness(DoubleBinaryOperator area, DoubleBinaryOperator wetness) {
         this.area = area;
         this.wetness = wetness;
+    }
+
+    /**
+     * The wetness of a ground whose drainage area and wetness at each place (x, z) other code knows (the eroded
+     * unbounded world's, read from the regions its blocks are made of).
+     */
+    public static Wetness of(DoubleBinaryOperator area, DoubleBinaryOperator wetness) {
+        return new Wetness(area, wetness);
+    }
+
+    /**
+     * The wetness of a cell {@code width} metres wide that drains {@code area} m² and falls {@code slope} m/m to
+     * its receiver: the wetness index mapped from {@link #TWI_DRY} (0) to {@link #TWI_WET} (1).
+     */
+    public static double index(double area, double width, double slope) {
+        double twi = Math.log(area / width / Math.max(MIN_SLOPE, slope));
+        return Math.max(0, Math.min(1, (twi - TWI_DRY) / (TWI_WET - TWI_DRY)));
     }
 
     /**
@@ -49,23 +64,23 @@ public final class Wetness {
         float[] wet = new float[heights.length];
         for (int c = 0; c < heights.length; c++) {
             area[c] = (float) net.area(c);
-            double twi = Math.log(net.area(c) / spacing / Math.max(MIN_SLOPE, net.slope(c)));
-            wet[c] = net.outlet(c) ? 1 : (float) Math.max(0, Math.min(1, (twi - TWI_DRY) / (TWI_WET - TWI_DRY)));
+            wet[c] = net.outlet(c) ? 1 : (float) index(net.area(c), spacing, net.slope(c));
         }
-        return new Wetness(size, spacing, area, wet);
+        return new Wetness((x, z) -> area[cell(x, z, size, spacing)], (x, z) -> wet[cell(x, z, size, spacing)]);
     }
 
     /** Drainage area reaching world position (x, z), m². */
     public double drainageArea(double x, double z) {
-        return area[cell(x, z)];
+        return area.applyAsDouble(x, z);
     }
 
     /** Wetness at world position (x, z): 0 on dry divides, 1 in valley floors, rivers and the sea. */
     public double wetness(double x, double z) {
-        return wetness[cell(x, z)];
+        return wetness.applyAsDouble(x, z);
     }
 
-    private int cell(double x, double z) {
+    /** The tile's cell under (x, z), wrapping. */
+    private static int cell(double x, double z, int size, double spacing) {
         int gx = Math.floorMod((int) Math.floor(x / spacing + size / 2.0), size);
         int gz = Math.floorMod((int) Math.floor(z / spacing + size / 2.0), size);
         return gz * size + gx;

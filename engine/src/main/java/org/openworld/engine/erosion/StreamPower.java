@@ -26,6 +26,17 @@ public final class StreamPower {
      */
     public static float[] equilibrium(FlowNetwork net, float[] heights, float[] steepness, double theta,
             double maxSlope) {
+        return equilibrium(net, heights, steepness, new float[heights.length], theta, maxSlope);
+    }
+
+    /**
+     * As {@link #equilibrium(FlowNetwork, float[], float[], double, double)}, each cell's drainage area at least
+     * {@code inflow}: the area of a river routed on a coarser grid that the network's own cells do not reach.
+     *
+     * @param inflow drainage area of each cell from beyond the network, m² (0 where none)
+     */
+    public static float[] equilibrium(FlowNetwork net, float[] heights, float[] steepness, float[] inflow,
+            double theta, double maxSlope) {
         int[] order = net.order();
         float[] z = new float[heights.length];
         for (int k = order.length - 1; k >= 0; k--) { // receivers first
@@ -35,7 +46,7 @@ public final class StreamPower {
                 z[c] = heights[c];
                 continue;
             }
-            double slope = Math.min(steepness[c] * Math.pow(net.area(c), -theta), maxSlope);
+            double slope = Math.min(steepness[c] * Math.pow(Math.max(net.area(c), inflow[c]), -theta), maxSlope);
             z[c] = (float) (z[r] + slope * net.distance(c, r));
         }
         return z;

@@ -11,7 +11,9 @@
  * and a is smooth at 16 km, so it adds no frequency a level's samples cannot hold. Pure function of position and
  * seed (a hashed lattice, {@code StrictMath}): blocks agree whatever order they are made in. Cost: two value-noise
  * look-ups (eight hashes) per height, next to 16 B-spline taps per band for nine bands. Limits: the ranges are
- * blobs, not the long belts that plate boundaries raise (no domain warping or ridged bands yet), and the rivers
- * do not cross from ranges to plains: the unbounded world is not eroded.
+ * blobs, not the long belts that plate boundaries raise (no domain warping or ridged bands yet). With
+ * {@code terrain.erosion} the world is eroded after this field shapes it ({@link org.openworld.engine.erosion}): the
+ * uplift follows the shaped heights, so ranges erode steep and plains gentle, and the coarsest levels' rivers run
+ * from the ranges across the plains.
  */
 package org.openworld.engine.tectonics;

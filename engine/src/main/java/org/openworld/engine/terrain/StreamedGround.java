@@ -5,6 +5,7 @@ import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.EngineContext;
 import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.core.Pass;
+import org.openworld.engine.erosion.ErodedWorld;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.terrain.heights.HeightSource;
 import org.openworld.engine.terrain.heights.StageTimes;
@@ -31,8 +32,12 @@ public final class StreamedGround implements Ground {
     static StreamedGround make(EngineContext context, TerrainSettings terrain, int seed, int cells, int unitHeights,
                                StageTimes times, Consumer<String> progress) {
         progress.accept("terrain: the unbounded world, seed " + seed);
-        return new StreamedGround(context.own(new UnboundedWorld(context, terrain, seed, cells, unitHeights, times,
-                progress)), context, seed, unitHeights, times);
+        UnboundedWorld world = context.own(new UnboundedWorld(context, terrain, seed, cells, unitHeights, times,
+                progress));
+        if (world.stream().heights() instanceof ErodedWorld eroded) { // how wet each place is (drainage.Wetness)
+            context.world().setResource(eroded.wetness());
+        }
+        return new StreamedGround(world, context, seed, unitHeights, times);
     }
 
     StreamedGround(UnboundedWorld world, EngineContext context, int seed, int unitHeights,

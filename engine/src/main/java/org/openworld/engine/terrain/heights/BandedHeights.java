@@ -41,7 +41,7 @@ import org.openworld.engine.tectonics.RangeField;
  * Making the world: one 512² inverse FFT per band, 9 MiB of tiles for the defaults (1 MiB a band). A height of
  * level L: one 16-sample B-spline per band k ≥ L.
  */
-public final class BandedHeights implements HeightSource {
+public final class BandedHeights implements UniformHeights {
 
     /** The relief spans this many standard deviations of the summed bands (±3σ). */
     static final double RELIEF_SIGMAS = 6;
@@ -55,7 +55,7 @@ public final class BandedHeights implements HeightSource {
     /** Random places at which {@link #levelErrors} measures each level's error. */
     static final int ERROR_SAMPLES = 20_000;
     /** The measured largest error is raised by this margin: the world's largest lies beyond any finite sample. */
-    static final double ERROR_MARGIN = 1.25;
+    public static final double ERROR_MARGIN = 1.25;
 
     private final OctaveBand[] bands;
     private final double spacing;
@@ -110,6 +110,7 @@ public final class BandedHeights implements HeightSource {
      *
      * @param count 1 .. {@link #levels()}
      */
+    @Override
     public float[] levelErrors(int count) {
         checkLevel(count - 1);
         float[] errors = new float[count];
@@ -152,26 +153,6 @@ public final class BandedHeights implements HeightSource {
             h += band(k, x, z);
         }
         return ranges == null ? h : base + ranges.shape(x, z, h);
-    }
-
-    /**
-     * The surface a patch of this level draws at (x, z), metres: its samples joined by triangles, each cell cut along
-     * its (−,−) to (+,+) diagonal as {@link org.openworld.engine.terrain.mesh.PatchPatterns} cuts them.
-     */
-    public double surface(int level, double x, double z) {
-        double d = spacing(level);
-        double fx = Math.floor(x / d);
-        double fz = Math.floor(z / d);
-        double tx = x / d - fx;
-        double tz = z / d - fz;
-        double h00 = height(level, fx * d, fz * d);
-        double h11 = height(level, (fx + 1) * d, (fz + 1) * d);
-        if (tx >= tz) { // the triangle (0,0) (1,0) (1,1)
-            double h10 = height(level, (fx + 1) * d, fz * d);
-            return h00 + tx * (h10 - h00) + tz * (h11 - h10);
-        }
-        double h01 = height(level, fx * d, (fz + 1) * d); // the triangle (0,0) (0,1) (1,1)
-        return h00 + tz * (h01 - h00) + tx * (h11 - h01);
     }
 
     /** Band k's share of the height at (x, z), metres (0 for a band the cut-offs leave empty). */

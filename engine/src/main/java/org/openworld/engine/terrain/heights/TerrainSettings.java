@@ -40,8 +40,8 @@ import org.openworld.engine.settings.SettingsGroup;
  * @param importDetail   true-scale import: synthesise the detail below the data's resolution, the octaves the map
  *                       is too coarse to hold, down to {@code spacing} or to a tile of {@code size} samples, whichever
  *                       is coarser
- * @param erosion        the tile's heights carved by rivers (stream power with uplift) and settled to the talus
- *                       ({@link org.openworld.engine.erosion}); off keeps the plain spectral heights
+ * @param erosion        the heights of either world carved by rivers (stream power with uplift) and settled to the
+ *                       talus ({@link org.openworld.engine.erosion}); off keeps the plain spectral heights
  * @param erosionTalus   the steepest a hillslope stands after erosion, degrees (the angle of repose)
  * @param ranges         the unbounded world's large-scale structure: ranges and plains tens of kilometres across
  *                       ({@link org.openworld.engine.tectonics}); off keeps the bands' even relief
@@ -82,7 +82,8 @@ public record TerrainSettings(
                 max = 9000, atStart = true) double seaLevel,
         @Setting(doc = "true-scale import: synthesise the detail below the data's resolution", atStart = true)
         boolean importDetail,
-        @Setting(doc = "tile: heights carved by rivers (stream power with uplift) and thermal erosion", atStart = true)
+        @Setting(doc = "heights carved by rivers (stream power with uplift) and thermal erosion, on both worlds",
+                atStart = true)
         boolean erosion,
         @Setting(doc = "steepest hillslope after erosion (angle of repose)", unit = "deg", min = 20, max = 60,
                 atStart = true) double erosionTalus,

@@ -6,11 +6,11 @@ import java.util.List;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
-import org.openworld.engine.terrain.heights.BandedHeights;
+import org.openworld.engine.terrain.heights.HeightSource;
 import org.openworld.engine.terrain.stream.ClipmapLevel.Slot;
 
 /**
- * The unbounded world's heights around the camera: for each level L of {@link BandedHeights}, a window of {@code size
+ * The unbounded world's heights around the camera: for each level L of {@link org.openworld.engine.terrain.heights.BandedHeights}, a window of {@code size
  * × size} samples d_L apart, kept in a texture-shaped array that never moves; the window moves over it, and only the
  * blocks it uncovers are made, on worker threads, and handed to the GL thread in small pieces.
  *
@@ -106,7 +106,7 @@ public final class HeightClipmap implements AutoCloseable {
         void upload(int level, long ix0, long iz0, int texelX, int texelZ, int block, float[] heights);
     }
 
-    private final BandedHeights heights;
+    private final HeightSource heights;
     private final int size;
     private final int block;
     private final int border;
@@ -129,7 +129,7 @@ public final class HeightClipmap implements AutoCloseable {
      * A clipmap of {@code levels} levels of {@code heights}, windows {@code size} samples a side made of
      * {@code block}-sample blocks, computed on {@code workers} (not owned: {@link #close} does not shut it down).
      */
-    public HeightClipmap(BandedHeights heights, int levels, int size, int block, int border,
+    public HeightClipmap(HeightSource heights, int levels, int size, int block, int border,
                          ExecutorService workers) {
         if (levels < 1 || levels > heights.levels()) {
             throw new IllegalArgumentException("a height clipmap needs 1 .. " + heights.levels()

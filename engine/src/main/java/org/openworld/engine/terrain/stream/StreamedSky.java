@@ -20,7 +20,7 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.TextureArray;
 import org.openworld.engine.gl.Uniform;
-import org.openworld.engine.terrain.heights.BandedHeights;
+import org.openworld.engine.terrain.heights.HeightSource;
 import org.openworld.engine.terrain.lod.PatchList;
 import org.openworld.engine.terrain.material.HorizonSearch;
 
@@ -79,7 +79,7 @@ final class StreamedSky {
      */
     static final int BUDGET_BLOCKS = 1;
 
-    private final BandedHeights heights;
+    private final HeightSource heights;
     private final int size;
     private final int block;
     private final ShaderProgram program;

@@ -7,10 +7,12 @@ import java.util.function.Consumer;
 import org.openworld.engine.camera.CameraPose;
 import org.openworld.engine.core.NodeHeights;
 import org.openworld.engine.core.Workers;
+import org.openworld.engine.erosion.ErodedWorld;
 import org.openworld.engine.settings.SettingsException;
 import org.openworld.engine.terrain.heights.BandedHeights;
 import org.openworld.engine.terrain.heights.StageTimes;
 import org.openworld.engine.terrain.heights.TerrainSettings;
+import org.openworld.engine.terrain.heights.UniformHeights;
 import org.openworld.engine.terrain.lod.CopyLattice;
 import org.openworld.engine.terrain.lod.QuadtreeLod;
 import org.openworld.engine.terrain.lod.Residency;
@@ -51,7 +53,7 @@ public final class StreamedWorld implements Residency, AutoCloseable {
     /** GPU bytes per sample of a level: height R32F, slopes RG16F, snow and sky RG8. */
     static final int TEXEL_BYTES = 4 + 4 + 2;
 
-    private final BandedHeights heights;
+    private final UniformHeights heights;
     private final HeightClipmap clipmap;
     private final TerrainQuadtree tree;
     private final ThreadPoolExecutor workers;
@@ -73,7 +75,7 @@ public final class StreamedWorld implements Residency, AutoCloseable {
      * @param cells N, the cells per patch side
      */
     public StreamedWorld(TerrainSettings s, int seed, int cells, StageTimes times, Consumer<String> progress) {
-        heights = times.time("bands", () -> new BandedHeights(s, seed));
+        heights = times.time("bands", () -> ErodedWorld.unbounded(s, seed));
         int cellsLog2 = Integer.numberOfTrailingZeros(cells);
         int root = (int) Math.max(1, Math.round(Math.log(ROOT_METRES / (cells * s.spacing())) / Math.log(2)));
         levels = Math.max(root, cellsLog2) + 1;
@@ -328,7 +330,7 @@ public final class StreamedWorld implements Residency, AutoCloseable {
         return tree;
     }
 
-    public BandedHeights heights() {
+    public UniformHeights heights() {
         return heights;
     }
 
