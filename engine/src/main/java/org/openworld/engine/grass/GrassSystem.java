@@ -23,7 +23,6 @@ import org.openworld.engine.environment.Wind;
 import org.openworld.engine.settings.Settings;
 import org.openworld.engine.settings.SettingsGroup;
 import org.openworld.engine.terrain.material.GrassAlbedo;
-import org.openworld.engine.terrain.material.MaterialSettings;
 import org.openworld.engine.vegetation.PlacementField;
 
 /**
@@ -138,12 +137,10 @@ public final class GrassSystem implements EngineSystem {
         World world = context.world();
         GrassSettings s = world.resource(Settings.class).get(GrassSettings.class);
         Vector3f wind = new Vector3f(world.findResource(Wind.class).orElse(Wind.CALM).velocity()).mul(GROUND_WIND);
-        // the ground's look as the terrain draws it: with its sheen only while its gloss maps are on
-        Settings settings = world.resource(Settings.class);
-        GrassAlbedo ground = world.findResource(GrassAlbedo.class)
-                .map(g -> settings.get(MaterialSettings.class).glossMap() ? g : g.withoutSheen()).orElse(ROOTS);
+        // the ground's look as the terrain draws it (its sheen only while its gloss maps are on)
+        GrassAlbedo ground = world.findResource(GrassAlbedo.class).orElse(ROOTS);
         int drawn = draw.draw(context, field, s, new float[] {wind.x, wind.z}, ground,
-                settings.get(EngineSettings.class).seed());
+                world.resource(Settings.class).get(EngineSettings.class).seed());
         world.resource(Counters.class).add(DRAWN.in(pass), drawn);
     }
 

@@ -82,6 +82,7 @@ final class TerrainShading {
     private final StageTimes times;
     /** The synthesised tiles, kept to quilt from when {@code materials.tiling} turns to quilted. */
     private final TerrainTextures tiles;
+    private final GrassAlbedo grass;
     private TerrainMaterials materials;
     private boolean quilted;
     private final PatchLayout layout;
@@ -134,7 +135,7 @@ final class TerrainShading {
         this.seed = seed;
         this.times = times;
         tiles = TerrainTextures.generate(seed);
-        context.world().setResource(GrassAlbedo.of(tiles)); // what the grass's blades thin into
+        grass = GrassAlbedo.of(tiles);
         materials = context.own("materials", upload(context.settings().get(MaterialSettings.class).tiling()));
         this.layout = layout;
         this.heights = heights;
@@ -146,6 +147,11 @@ final class TerrainShading {
         levelsUniforms = this.far.reads(levels, unitHeights); // the far look, tinted
         tangentSpace = variant(context, TerrainVariant.of(Kind.TANGENT_SPACE, heights), unitHeights);
         tangentSpace.sampler(layout.slopeSampler(), unitGradients);
+    }
+
+    /** What the grass's blades thin into: the ground's grass, with its sheen only while the gloss maps are on. */
+    GrassAlbedo grass(MaterialSettings settings) {
+        return settings.glossMap() ? grass : grass.withoutSheen();
     }
 
     /**

@@ -170,6 +170,7 @@ public final class TerrainSystem implements EngineSystem {
     @Override
     public void update(World world, double step) {
         publishSnowLine(world, world.resource(Settings.class));
+        world.setResource(shading.grass(world.resource(Settings.class).get(MaterialSettings.class)));
         CameraPose pose = world.resource(Camera.class).pose();
         if (!ground.follow(pose, step)) {
             return;

@@ -15,6 +15,7 @@ import org.openworld.engine.gl.Sampling;
 import org.openworld.engine.gl.ShaderLibrary;
 import org.openworld.engine.gl.ShaderProgram;
 import org.openworld.engine.gl.Texture2D;
+import org.openworld.engine.gl.TextureUnits;
 
 /**
  * The virtual-pipe erosion as fragment-shader ping-pong passes (OpenGL 3.3, no compute shaders): the state (b, d, s,
@@ -27,12 +28,13 @@ import org.openworld.engine.gl.Texture2D;
  * <p>Cost: 3 passes a step, each a handful of texel fetches per cell (the transport's 13 the most); GPU memory
  * 4 × 16 bytes a cell (16 MiB at 512²). On llvmpipe, 512² cells took 64 to 150 ms a pass of wall time with the
  * two-core machine's load at 23 (the tile's 450 passes: 29 to 66 s); a hardware GPU has not been measured. Binds
- * texture units 0 and 1 and leaves the program in use changed; the framebuffer, viewport and tests are given back.
+ * its two texture units and leaves the program in use changed; the framebuffer, viewport and tests are given back.
  */
 public final class GpuPipeErosion implements PipeState.Runner {
 
-    private static final int UNIT_STATE = 0;
-    private static final int UNIT_FLUX = 1;
+    private static final TextureUnits UNITS = new TextureUnits();
+    private static final TextureUnits.Sampler STATE = UNITS.add("uState");
+    private static final TextureUnits.Sampler FLUX = UNITS.add("uFlux");
 
     private final GlContext gl;
     private final ShaderLibrary shaders;
@@ -97,8 +99,8 @@ public final class GpuPipeErosion implements PipeState.Runner {
     private ShaderProgram program(String fragment, int n, int periodic, Map<String, Float> values, String... used) {
         ShaderProgram p = shaders.program("terrain/material/bake.vert", fragment);
         p.use();
-        p.sampler("uState", UNIT_STATE);
-        p.sampler("uFlux", UNIT_FLUX);
+        p.sampler(STATE);
+        p.sampler(FLUX);
         p.int1("uSize").set(n);
         p.int1("uPeriodic").set(periodic);
         for (String name : used) {
@@ -111,8 +113,8 @@ public final class GpuPipeErosion implements PipeState.Runner {
                       DrawStats stats) {
         pass.use();
         target.bind();
-        state.bind(UNIT_STATE);
-        flux.bind(UNIT_FLUX);
+        state.bind(STATE.unit());
+        flux.bind(FLUX.unit());
         triangle.draw(stats);
     }
 
