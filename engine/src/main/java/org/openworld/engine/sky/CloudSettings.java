@@ -84,7 +84,7 @@ public record CloudSettings(
     }
 
     public static final CloudSettings DEFAULTS = new CloudSettings(
-            Mode.VOLUMETRIC, // 1.16-1.24 times the layer's frame on the peer's terrain view (docs/sky.md); low keeps the layer
+            Mode.LAYER, // the volume costs more than the budget allows on the 2-core llvmpipe (docs/sky.md)
             Mapping.PERSPECTIVE_FOG, // the paper's final choice, figure 5d
             0.45,    // a bit under half the sky: broken cumulus with blue between
             2500,    // m: a low cumulus base over the eye
